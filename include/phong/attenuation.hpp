@@ -1,0 +1,113 @@
+// phong: f_i(Q), the attenuation of light i at point Q: distance falloff and spot cones.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "vector.hpp"
+
+#include <limits>
+
+namespace phong {
+
+/// Smallest denominator an attenuation divides by: sqrt(smallest normal T), about 1.1e-19 in
+/// float and 1.5e-154 in double. It caps f at 1 / attenuation_denominator_min<T> (9.2e18 in float)
+/// when c0 = 0 and d -> 0, so a light at the surface point gives a large finite value, never inf.
+template <class T>
+inline constexpr T attenuation_denominator_min = T(1.0842021724855044e-19L); // 2^-63, float's sqrt(min)
+template <>
+inline constexpr double attenuation_denominator_min<double> = 1.4916681462400413e-154; // 2^-511
+template <>
+inline constexpr long double attenuation_denominator_min<long double> = 1.4916681462400413e-154L;
+
+/// Distance falloff coefficients of one light (OpenGL's constant, linear and quadratic
+/// attenuation, and a range for the windowed model). Defaults: f = 1 at every distance.
+template <class T>
+struct falloff {
+    T constant = T(1);  ///< c0 >= 0
+    T linear = T(0);    ///< c1 >= 0
+    T quadratic = T(0); ///< c2 >= 0; c0 + c1 + c2 > 0
+    T range = std::numeric_limits<T>::infinity(); ///< windowed model: f = 0 from here on; > 0
+};
+
+/// Polynomial attenuation (seed 000's f_i(Q), OpenGL):
+///   f = 1 / max(c0 + c1 d + c2 d^2, attenuation_denominator_min<T>)
+/// evaluated as c0 + d (c1 + c2 d), so c2 = 0 with a huge d gives no 0 * inf.
+/// Pre: c0, c1, c2 >= 0 and finite, d >= 0. Edge: d = 0 with c0 = 0 gives the cap
+/// 1 / attenuation_denominator_min<T>; d = inf gives 0 (if c1 + c2 > 0); NaN d gives NaN.
+template <class T>
+PHONG_HD constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
+{
+    d = phong::min(d, std::numeric_limits<T>::max()); // inf -> max: keeps c2 * d finite
+    const T denominator = c0 + d * (c1 + c2 * d);
+    return T(1) / phong::max(denominator, attenuation_denominator_min<T>);
+}
+
+/// Windowed inverse square (Filament, three.js "physically based" falloff):
+///   f = clamp(1 - (d / range)^4, 0, 1)^2 / max(d^2, attenuation_denominator_min<T>)
+/// Reaches exactly 0 at d >= range and stays finite at d = 0 (cap 1/attenuation_denominator_min).
+/// Pre: range > 0 (inf allowed: pure inverse square), d >= 0. Edge: d = inf gives 0.
+template <class T>
+PHONG_HD constexpr T attenuation_windowed(T d, T range)
+{
+    d = phong::min(d, std::numeric_limits<T>::max());
+    const T ratio = phong::min(d / range, T(65536)); // ratio^4 stays finite; window is 0 anyway
+    const T window = phong::clamp(T(1) - pow<4>(ratio), T(0), T(1));
+    return window * window / phong::max(d * d, attenuation_denominator_min<T>);
+}
+
+/// A spot cone: the axis the light points along and its two parametrizations, OpenGL's
+/// (exponent and cutoff) and the smooth inner/outer cone. The default is no spot.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct spot_cone {
+    glm::vec<3, T, Q> direction{T(0), T(0), T(-1)}; ///< unit axis s, from the light outward
+    T exponent = T(0);     ///< OpenGL spot exponent e >= 0
+    T cos_cutoff = T(-1);  ///< cos of OpenGL's cutoff angle: in [0, 1] (0..90 degrees), or -1 (180: no spot)
+    T cos_inner = T(-1);   ///< smooth model: full strength where cos(angle) >= cos_inner
+    T cos_outer = T(-1);   ///< smooth model: zero where cos(angle) <= cos_outer; cos_outer <= cos_inner
+
+    /// OpenGL spot: axis (normalized here), exponent, cutoff in degrees (0..90, or 180 = no spot).
+    static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
+    {
+        spot_cone s;
+        s.direction = phong::normalize(axis);
+        s.exponent = exponent;
+        s.cos_cutoff = phong::cos_degrees(cutoff_degrees);
+        return s;
+    }
+    /// Smooth spot: full strength inside inner_degrees, none outside outer_degrees (inner <= outer).
+    static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
+    {
+        spot_cone s;
+        s.direction = phong::normalize(axis);
+        s.cos_inner = phong::cos_degrees(inner_degrees);
+        s.cos_outer = phong::cos_degrees(outer_degrees);
+        return s;
+    }
+};
+
+/// OpenGL spot factor for the unit light direction l (from Q toward the light) and unit axis s:
+///   c = dot(-l, s);  spot = c >= cos_cutoff ? max(c, 0)^e : 0;  cos_cutoff = -1 (180 deg) gives 1.
+/// Pre: l, s unit; e >= 0. Edge: l = 0 (light at Q) gives c = 0: inside only for a 90 degree
+/// cutoff, then 0^e (1 for e = 0). e = 0 gives a hard-edged cone of strength 1.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
+{
+    const T c = -phong::dot(l, s);
+    const T inside = phong::select(c >= cos_cutoff, phong::pow(phong::max(c, T(0)), exponent), T(0));
+    return phong::select(cos_cutoff <= T(-1), T(1), inside);
+}
+
+/// Smooth spot factor: t = clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1),
+/// spot = t^2 (3 - 2 t) (smoothstep), c = dot(-l, s).
+/// Pre: l, s unit; cos_outer <= cos_inner. Edge: cos_inner == cos_outer gives a hard edge
+/// (1 where c >= cos_outer, else 0), no division by zero; cos_outer = -1 and cos_inner = -1 give 1.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T cos_inner, T cos_outer)
+{
+    const T c = -phong::dot(l, s);
+    const T width = cos_inner - cos_outer;
+    const T hard = phong::select(c >= cos_outer, T(1), T(0));
+    const T t = phong::clamp((c - cos_outer) / phong::select(width > T(0), width, T(1)), T(0), T(1));
+    return phong::select(width > T(0), t * t * (T(3) - T(2) * t), hard);
+}
+
+} // namespace phong

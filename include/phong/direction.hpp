@@ -1,0 +1,43 @@
+// phong: the one homogeneous direction rule, shared by light directions and view vectors.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "vector.hpp"
+
+#include <limits>
+
+namespace phong {
+
+/// A unit direction and the distance along it.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct direction_and_distance {
+    glm::vec<3, T, Q> direction; ///< unit vector, or 0 when undefined
+    T distance;                  ///< distance to the point; +inf for a point at infinity (w = 0)
+};
+
+/// The unit vector from Q toward the homogeneous point P:
+///   direction = normalize(P.xyz - P.w Q)      (TeX: \hat l = (P_{xyz} - P_w Q) / |P_{xyz} - P_w Q|)
+///   distance  = |P.xyz - P.w Q| / P.w for P.w > 0, +inf for P.w = 0.
+/// w = 1 is seed 000's positional light normalize(L.xyz - Q), w = 0 its directional light
+/// normalize(L.xyz); the same rule gives seed 001's e = normalize(eye - P) and the orthographic
+/// view vector. One rule, no branch on w for the direction.
+/// Pre: P.w >= 0 (a negative w flips the direction), finite. Edge: P at Q, or P.xyz = 0 with
+/// w = 0, gives direction 0 and distance 0; huge and tiny differences are rescaled (see normalize).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& P, const glm::vec<3, T, Q>& point)
+{
+    const glm::vec<3, T, Q> d = glm::vec<3, T, Q>(P.x, P.y, P.z) - point * P.w;
+    const T len = phong::length(d);
+    const T inf = std::numeric_limits<T>::infinity();
+    return {phong::normalize(d), phong::select(P.w > T(0), len / phong::select(P.w > T(0), P.w, T(1)), inf)};
+}
+
+/// Seed 000's light direction \hat l_i from a homogeneous light position L (w = 1 or 0), eye coords.
+/// The same as toward(L, Q).direction; see there for domain and edges.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> light_direction(const glm::vec<4, T, Q>& L, const glm::vec<3, T, Q>& point)
+{
+    return phong::toward(L, point).direction;
+}
+
+} // namespace phong

@@ -1,0 +1,304 @@
+// phong: scalar kernels (sqrt, exp, log, log1p, pow, fma, min/max/clamp, select).
+// SPDX-License-Identifier: MIT
+//
+// Every formula in phong calls these, never std:: directly, for two reasons:
+//  * constant evaluation: GLM 0.9.9.8 and the C++20 library have no constexpr sqrt/exp/log, so
+//    under std::is_constant_evaluated() a capped iterative path in long double runs instead
+//    (special values first, then range reduction, then a series; gcem's recipe). Its results
+//    agree with the run-time std:: path within `constexpr_tolerance_ulp` ulp (tested).
+//  * SIMD: the same templates run on SIMD batches; `math_traits<V>` is the customization point
+//    that phong/batch.hpp specializes for xsimd batches.
+#pragma once
+
+#include "detail/config.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+namespace phong {
+
+/// Largest distance, in ulp of T, between the constant-evaluation path and std:: for sqrt, exp,
+/// log, log1p and pow on finite arguments whose result is a normal number.
+inline constexpr int constexpr_tolerance_ulp = 2;
+
+namespace detail::ce {
+
+// Constant-evaluation kernels. All work in long double and round once at the end, so for float
+// and double they are nearly correctly rounded. Loop counts are capped.
+using wide = long double;
+
+inline constexpr wide ln2 = 0.693147180559945309417232121458176568L;
+
+template <class T> PHONG_HD constexpr bool is_nan(T x) { return x != x; }
+template <class T> PHONG_HD constexpr T inf() { return std::numeric_limits<T>::infinity(); }
+template <class T> PHONG_HD constexpr T qnan() { return std::numeric_limits<T>::quiet_NaN(); }
+
+// x = m * 2^k with m in [sqrt(1/2), sqrt(2)); x finite and > 0.
+PHONG_HD constexpr wide reduce_pow2(wide x, int& k)
+{
+    k = 0;
+    constexpr wide two32 = 4294967296.0L;
+    for (int i = 0; i < 600 && x >= two32; ++i) { x /= two32; k += 32; }
+    for (int i = 0; i < 600 && x < 1 / two32; ++i) { x *= two32; k -= 32; }
+    for (int i = 0; i < 64 && x >= 1.41421356237309504880L; ++i) { x /= 2; ++k; }
+    for (int i = 0; i < 64 && x < 0.70710678118654752440L; ++i) { x *= 2; --k; }
+    return x;
+}
+
+// 2^k as a long double, by repeated squaring.
+PHONG_HD constexpr wide pow2(int k)
+{
+    wide base = k < 0 ? 0.5L : 2.0L;
+    unsigned n = static_cast<unsigned>(k < 0 ? -k : k);
+    wide r = 1;
+    for (int i = 0; i < 32 && n != 0; ++i, n >>= 1) {
+        if (n & 1u) r *= base;
+        base *= base;
+    }
+    return r;
+}
+
+PHONG_HD constexpr wide sqrt(wide x)
+{
+    if (is_nan(x) || x == 0 || x == inf<wide>()) return x;
+    if (x < 0) return qnan<wide>();
+    int k = 0;
+    wide m = reduce_pow2(x, k);
+    if (k % 2 != 0) { m *= 2; --k; } // m in [0.7, 2.9), k even
+    wide y = (1 + m) / 2;
+    for (int i = 0; i < 16; ++i) {
+        const wide next = (y + m / y) / 2;
+        if (next == y) break;
+        y = next;
+    }
+    return y * pow2(k / 2);
+}
+
+PHONG_HD constexpr wide exp(wide x)
+{
+    if (is_nan(x)) return x;
+    if (x > 11357.3L) return inf<wide>();
+    if (x < -11400.0L) return 0;
+    const wide kf = x / ln2;
+    const int k = static_cast<int>(kf < 0 ? kf - 0.5L : kf + 0.5L);
+    const wide r = x - static_cast<wide>(k) * ln2; // |r| <= ln2 / 2
+    wide term = 1, sum = 1;
+    for (int i = 1; i < 40; ++i) {
+        term *= r / static_cast<wide>(i);
+        const wide next = sum + term;
+        if (next == sum) break;
+        sum = next;
+    }
+    // Split the scaling so intermediate powers of two stay finite near the ends of the range.
+    return sum * pow2(k / 2) * pow2(k - k / 2);
+}
+
+// 2 atanh(t) = log((1 + t) / (1 - t)), |t| < 1/2.
+PHONG_HD constexpr wide two_atanh(wide t)
+{
+    const wide t2 = t * t;
+    wide power = t, sum = t;
+    for (int i = 1; i < 200; ++i) {
+        power *= t2;
+        const wide next = sum + power / static_cast<wide>(2 * i + 1);
+        if (next == sum) break;
+        sum = next;
+    }
+    return 2 * sum;
+}
+
+PHONG_HD constexpr wide log(wide x)
+{
+    if (is_nan(x) || x == inf<wide>()) return x;
+    if (x < 0) return qnan<wide>();
+    if (x == 0) return -inf<wide>();
+    int k = 0;
+    const wide m = reduce_pow2(x, k);
+    return two_atanh((m - 1) / (m + 1)) + static_cast<wide>(k) * ln2;
+}
+
+PHONG_HD constexpr wide log1p(wide x)
+{
+    if (is_nan(x) || x == inf<wide>()) return x;
+    if (x < -1) return qnan<wide>();
+    if (x == -1) return -inf<wide>();
+    // log1p(x) = 2 atanh(x / (2 + x)) has no cancellation for small |x|.
+    if (x > -0.25L && x < 0.5L) return two_atanh(x / (2 + x));
+    return log(1 + x);
+}
+
+PHONG_HD constexpr wide pow(wide x, wide y)
+{
+    if (y == 0 || x == 1) return 1; // IEEE: pow(x, 0) = 1 even for NaN x; pow(1, y) = 1
+    if (is_nan(x) || is_nan(y)) return qnan<wide>();
+    if (x == 0) return y > 0 ? wide(0) : inf<wide>();
+    if (x < 0) {
+        // Integer exponents only (the lighting model never needs this; kept for completeness).
+        const auto n = static_cast<long long>(y);
+        if (static_cast<wide>(n) != y) return qnan<wide>();
+        const wide r = exp(y * log(-x));
+        return (n % 2 != 0) ? -r : r;
+    }
+    return exp(y * log(x));
+}
+
+} // namespace detail::ce
+
+/// Customization point: how phong evaluates its scalar kernels on the number type V.
+/// The primary template serves float, double and long double (constexpr path + std:: path).
+/// phong/batch.hpp specializes it for SIMD batches.
+template <class V, class Enable = void>
+struct math_traits {
+    static_assert(std::is_floating_point_v<V>, "phong: no math_traits for this number type");
+    using scalar = V;
+    using mask = bool;
+
+    PHONG_HD static constexpr V sqrt(V x)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::sqrt(x));
+        return std::sqrt(x);
+    }
+    PHONG_HD static constexpr V exp(V x)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::exp(x));
+        return std::exp(x);
+    }
+    PHONG_HD static constexpr V log(V x)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log(x));
+        return std::log(x);
+    }
+    PHONG_HD static constexpr V log1p(V x)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log1p(x));
+        return std::log1p(x);
+    }
+    PHONG_HD static constexpr V pow(V x, V y)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::pow(x, y));
+        return std::pow(x, y);
+    }
+    /// a * b + c with one rounding. Constant evaluation: exact through Dekker's product.
+    PHONG_HD static constexpr V fma(V a, V b, V c)
+    {
+        if (std::is_constant_evaluated()) {
+            if constexpr (std::numeric_limits<V>::digits * 2 <= std::numeric_limits<detail::ce::wide>::digits) {
+                return static_cast<V>(static_cast<detail::ce::wide>(a) * b + c); // exact product
+            } else {
+                return dekker_fma(a, b, c);
+            }
+        }
+        return std::fma(a, b, c);
+    }
+    PHONG_HD static constexpr V select(bool m, V a, V b) { return m ? a : b; }
+    PHONG_HD static constexpr bool any(bool m) { return m; }
+    PHONG_HD static constexpr bool both(bool a, bool b) { return a && b; }
+    PHONG_HD static constexpr bool all(bool m) { return m; }
+    PHONG_HD static constexpr V abs(V x) { return x < 0 ? -x : (x == 0 ? V(0) : x); }
+    PHONG_HD static constexpr V min(V a, V b) { return b < a ? b : a; }
+    PHONG_HD static constexpr V max(V a, V b) { return a < b ? b : a; }
+
+    /// A power of two 2^-e such that |x| * 2^-e lies in [1, 2) for normal x, clamped to stay a
+    /// normal number. Multiplying by it is exact, so a vector
+    /// scaled by it keeps its direction bit for bit while its squares neither overflow nor
+    /// underflow. x must be finite and >= 0. (Subnormal x lands in [2^-22, 2) for float.)
+    PHONG_HD static constexpr V inverse_pow2_scale(V x)
+    {
+        using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>;
+        if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
+            constexpr int mant = std::numeric_limits<V>::digits - 1;
+            constexpr bits_t max_biased = (bits_t(1) << (sizeof(V) * 8 - 1 - mant)) - 2; // 254 / 2046
+            const bits_t biased = (std::bit_cast<bits_t>(x) >> mant) & (max_biased + 1);
+            bits_t scale_biased = max_biased - biased; // exponent -(e): 2*bias - biased
+            if (biased == 0) scale_biased = max_biased; // subnormal: largest scale
+            if (scale_biased < 1) scale_biased = 1;
+            if (scale_biased > max_biased) scale_biased = max_biased;
+            return std::bit_cast<V>(scale_biased << mant);
+        } else {
+            // long double: by powers of two (used only by references and tests).
+            if (x == 0) return V(1);
+            int k = 0;
+            (void)detail::ce::reduce_pow2(static_cast<detail::ce::wide>(x), k);
+            return static_cast<V>(detail::ce::pow2(-k));
+        }
+    }
+
+private:
+    // a*b + c via Veltkamp splitting; exact product, one final rounding up to the sum's.
+    PHONG_HD static constexpr V dekker_fma(V a, V b, V c)
+    {
+        constexpr V split = V((1ull << ((std::numeric_limits<V>::digits + 1) / 2)) + 1);
+        const V ca = split * a, ah = ca - (ca - a), al = a - ah;
+        const V cb = split * b, bh = cb - (cb - b), bl = b - bh;
+        const V p = a * b;
+        const V e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+        return (p + c) + e;
+    }
+};
+
+/// Mask type of V: bool for scalars, a SIMD mask for batches.
+template <class V> using mask_t = typename math_traits<V>::mask;
+
+/// sqrt(x). Domain x >= 0; sqrt(-0) = -0, x < 0 gives NaN, sqrt(inf) = inf.
+template <class V> PHONG_HD constexpr V sqrt(V x) { return math_traits<V>::sqrt(x); }
+/// e^x. Overflow gives inf, underflow 0.
+template <class V> PHONG_HD constexpr V exp(V x) { return math_traits<V>::exp(x); }
+/// ln x. log(0) = -inf, x < 0 gives NaN.
+template <class V> PHONG_HD constexpr V log(V x) { return math_traits<V>::log(x); }
+/// ln(1 + x), accurate for small |x|. log1p(-1) = -inf, x < -1 gives NaN.
+template <class V> PHONG_HD constexpr V log1p(V x) { return math_traits<V>::log1p(x); }
+/// x^y (IEEE pow: pow(0, 0) = 1, pow(0, y > 0) = 0).
+template <class V> PHONG_HD constexpr V pow(V x, V y) { return math_traits<V>::pow(x, y); }
+/// a * b + c rounded once.
+template <class V> PHONG_HD constexpr V fma(V a, V b, V c) { return math_traits<V>::fma(a, b, c); }
+/// |x|.
+template <class V> PHONG_HD constexpr V abs(V x) { return math_traits<V>::abs(x); }
+/// min(a, b) = b < a ? b : a (std::min's NaN behaviour: a NaN `a` is returned).
+template <class V> PHONG_HD constexpr V min(V a, V b) { return math_traits<V>::min(a, b); }
+/// max(a, b) = a < b ? b : a (std::max's NaN behaviour: a NaN `a` is returned).
+template <class V> PHONG_HD constexpr V max(V a, V b) { return math_traits<V>::max(a, b); }
+/// clamp(x, lo, hi) = min(max(x, lo), hi); a NaN x is returned as NaN.
+template <class V> PHONG_HD constexpr V clamp(V x, V lo, V hi) { return min(max(x, lo), hi); }
+/// m ? a : b, lane-wise for SIMD (both sides are evaluated: keep them finite).
+template <class V> PHONG_HD constexpr V select(mask_t<V> m, V a, V b) { return math_traits<V>::select(m, a, b); }
+
+/// x^N for a compile-time integer N >= 0 by repeated squaring: no exp/log, exact pattern of
+/// roundings (at most 2 log2 N multiplications, so < 2 log2(N) ulp). pow<0>(x) = 1 for every x.
+template <unsigned N, class V> PHONG_HD constexpr V pow(V x)
+{
+    if constexpr (N == 0) {
+        return V(1);
+    } else if constexpr (N == 1) {
+        return x;
+    } else {
+        const V half = pow<N / 2>(x);
+        if constexpr (N % 2 == 0) return half * half;
+        else return half * half * x;
+    }
+}
+
+/// cos(deg * pi / 180) for deg in [0, 180], exact at 0, 90 and 180 (used to convert OpenGL spot
+/// cutoffs, which are given in degrees, once when a light is made).
+template <class V> PHONG_HD constexpr V cos_degrees(V degrees)
+{
+    using W = detail::ce::wide;
+    W d = static_cast<W>(degrees);
+    if (d == 0) return V(1);
+    if (d == 90) return V(0);
+    if (d == 180) return V(-1);
+    constexpr W pi = 3.14159265358979323846264338327950288L;
+    const W x = d * pi / 180; // Taylor series; |x| <= pi converges in < 30 terms
+    W term = 1, sum = 1;
+    for (int i = 1; i < 40; ++i) {
+        term *= -x * x / static_cast<W>((2 * i - 1) * (2 * i));
+        const W next = sum + term;
+        if (next == sum) break;
+        sum = next;
+    }
+    return static_cast<V>(sum);
+}
+
+} // namespace phong

@@ -1,0 +1,16 @@
+// phong: everything. Include this, or only the headers you use (each compiles on its own).
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "math.hpp"
+#include "vector.hpp"
+#include "direction.hpp"
+#include "view.hpp"
+#include "attenuation.hpp"
+#include "normal.hpp"
+#include "specular.hpp"
+#include "validate.hpp"
+#include "light.hpp"
+#include "material.hpp"
+#include "features.hpp"
+#include "shade.hpp"

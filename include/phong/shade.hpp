@@ -1,0 +1,288 @@
+// phong: the full multi-light sum, shade<features>(...), and the per-vertex pipeline of seed 003.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "attenuation.hpp"
+#include "features.hpp"
+#include "light.hpp"
+#include "material.hpp"
+#include "normal.hpp"
+#include "specular.hpp"
+#include "view.hpp"
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+namespace phong {
+
+/// What surrounds the shaded point: the scene's ambient light and the eye.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct environment {
+    glm::vec<3, T, Q> ambient{T(0)}; ///< La (seed 000) = GlobalAmbient (seed 001); read when features::scene_ambient
+    /// The eye as a homogeneous point: read for view_model::eye_point (w = 1: a point such as seed
+    /// 001's ray start; w = 0: a direction) and view_model::orthographic (xyz: toward the viewer).
+    /// eye_from_projection(ec_lds) gives it from a projection matrix.
+    glm::vec<4, T, Q> eye{T(0), T(0), T(0), T(1)};
+};
+
+/// The colour shade<F> returns: rgb, or rgba when F.alpha.
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+using color = std::conditional_t<F.alpha, glm::vec<4, T, Q>, glm::vec<3, T, Q>>;
+
+namespace detail {
+
+/// Per-point quantities, computed once and shared by every light.
+template <class T, glm::qualifier Q>
+struct surface_frame {
+    glm::vec<3, T, Q> position;      ///< Q
+    glm::vec<3, T, Q> normal;        ///< unit normal after two-sided negation (0 if undefined)
+    glm::vec<3, T, Q> normal_scaled; ///< stable: the same normal before its last rounding, rescaled exactly
+    T inv_normal_length;             ///< stable: 1 / |normal_scaled|
+    glm::vec<3, T, Q> view;          ///< unit view vector v (0 if undefined)
+    mask_t<T> defined;               ///< normal and view both nonzero
+    T poison;                        ///< 0, or NaN when the point's inputs are not finite
+};
+
+/// Per-light sums, weighted by attenuation; the material multiplies them once at the end.
+template <class T, glm::qualifier Q>
+struct light_sums {
+    glm::vec<3, T, Q> ambient{T(0)};
+    glm::vec<3, T, Q> diffuse{T(0)};
+    glm::vec<3, T, Q> specular{T(0)};
+};
+
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> unit(const glm::vec<3, T, Q>& v)
+{
+    if constexpr (F.mode == evaluation::stable) return phong::normalize(v);
+    else return phong::normalize_unscaled(v);
+}
+
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                               const environment<T, Q>& env, mask_t<T> front_facing)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    surface_frame<T, Q> s{};
+    s.position = position;
+    if constexpr (F.view == view_model::perspective) {
+        s.view = unit<F>(-position);
+    } else if constexpr (F.view == view_model::orthographic) {
+        s.view = phong::normalize(vec3(env.eye.x, env.eye.y, env.eye.z));
+    } else {
+        s.view = unit<F>(vec3(env.eye.x, env.eye.y, env.eye.z) - position * env.eye.w);
+    }
+    if constexpr (F.mode == evaluation::stable) {
+        s.normal_scaled = phong::rescaled(normal);
+        const T nn = phong::dot(s.normal_scaled, s.normal_scaled);
+        s.inv_normal_length = phong::select(nn > T(0), T(1) / phong::sqrt(nn), T(0));
+        s.normal = s.normal_scaled * s.inv_normal_length;
+    } else {
+        s.normal = phong::normalize_unscaled(normal);
+    }
+    if constexpr (F.two_sided != facing::none) {
+        T sign;
+        if constexpr (F.two_sided == facing::view) sign = phong::select(phong::dot(s.normal, s.view) < T(0), T(-1), T(1));
+        else sign = phong::select(front_facing, T(1), T(-1));
+        s.normal = s.normal * sign;
+        if constexpr (F.mode == evaluation::stable) s.normal_scaled = s.normal_scaled * sign;
+    } else {
+        (void)front_facing;
+    }
+    s.defined = math_traits<T>::both(phong::dot(s.normal, s.normal) > T(0), phong::dot(s.view, s.view) > T(0));
+    // x * 0 is 0 for finite x and NaN for NaN or inf: NaN/inf geometry gives NaN out, not garbage.
+    const vec3 zero(T(0));
+    s.poison = phong::dot(position, zero) + phong::dot(normal, zero);
+    if constexpr (F.view == view_model::eye_point) s.poison += phong::dot(glm::vec<4, T, Q>(env.eye), glm::vec<4, T, Q>(T(0)));
+    return s;
+}
+
+/// a - b = hi + lo exactly (Knuth's TwoSum on a + (-b)); returns lo.
+template <class T>
+PHONG_HD constexpr T difference_error(T a, T b, T hi)
+{
+    const T bb = hi - a;
+    return (a - (hi - bb)) - (b + bb);
+}
+
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<T, Q>& L, T m)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    constexpr bool stable = F.mode == evaluation::stable;
+    const vec3 Lxyz(L.position.x, L.position.y, L.position.z);
+
+    // d = L.xyz - L.w Q (the homogeneous rule; w is known at compile time for one kind of light).
+    // The stable mode also keeps lo, the rounding error of d, so n.l is computed on the exact d.
+    vec3 d, lo(T(0));
+    T w = T(1);
+    if constexpr (F.lights == light_kind::directional) {
+        d = Lxyz;
+        w = T(0);
+    } else if constexpr (F.lights == light_kind::positional) {
+        d = Lxyz - s.position;
+        if constexpr (stable)
+            for (int k = 0; k < 3; ++k) lo[k] = difference_error(Lxyz[k], s.position[k], d[k]);
+    } else {
+        w = L.position.w;
+        const vec3 p = s.position * w;
+        d = Lxyz - p;
+        if constexpr (stable)
+            for (int k = 0; k < 3; ++k)
+                lo[k] = difference_error(Lxyz[k], p[k], d[k]) - phong::fma(w, s.position[k], -p[k]);
+    }
+
+    vec3 l;
+    T nl, length_d, inv;
+    if constexpr (stable) {
+        const T scale = math_traits<T>::inverse_pow2_scale(phong::max_abs(d)); // exact: keeps d bit for bit
+        const vec3 hs = d * scale;
+        const T dd = phong::dot(hs, hs);
+        inv = phong::select(dd > T(0), T(1) / phong::sqrt(dd), T(0));
+        l = hs * inv;
+        nl = (phong::dot_compensated(s.normal_scaled, hs) + phong::dot(s.normal_scaled, lo * scale)) * (s.inv_normal_length * inv);
+        length_d = phong::sqrt(dd) / scale;
+    } else {
+        const T dd = phong::dot(d, d);
+        inv = phong::select(dd > T(0), T(1) / phong::sqrt(dd), T(0));
+        l = d * inv;
+        nl = phong::dot(s.normal, l);
+        length_d = phong::sqrt(dd);
+    }
+    // The light has a direction (not at Q, not a zero directional vector, no overflow) and the
+    // point has a normal and a view vector: otherwise only the light's ambient term is added.
+    const mask_t<T> lit = math_traits<T>::both(s.defined, inv > T(0));
+
+    // f_i(Q): distance attenuation (positional lights only) times the spot factor.
+    T f = T(1);
+    if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) {
+        T dist = length_d;
+        if constexpr (F.lights == light_kind::any) dist = length_d / phong::select(w > T(0), w, T(1));
+        T fa;
+        if constexpr (F.attenuation == attenuation_model::polynomial)
+            fa = phong::attenuation_polynomial(dist, L.attenuation.constant, L.attenuation.linear, L.attenuation.quadratic);
+        else
+            fa = phong::attenuation_windowed(dist, L.attenuation.range);
+        if constexpr (F.lights == light_kind::any) f = phong::select(w > T(0), fa, T(1));
+        else f = fa;
+    }
+    if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, L.spot.direction, L.spot.exponent, L.spot.cos_cutoff);
+    if constexpr (F.spot == spot_model::smooth) f = f * phong::spot_smooth(l, L.spot.direction, L.spot.cos_inner, L.spot.cos_outer);
+
+    if constexpr (F.light_ambient) {
+        if constexpr (F.attenuate_ambient) sums.ambient += L.ambient * f;
+        else sums.ambient += L.ambient;
+    }
+    if constexpr (F.diffuse) sums.diffuse += L.diffuse * (f * phong::select(lit, phong::max(nl, T(0)), T(0)));
+    if constexpr (F.specular != specular_model::none) {
+        const vec3& n = s.normal;
+        const vec3& v = s.view;
+        T spec;
+        if constexpr (F.specular == specular_model::phong) {
+            if constexpr (stable) {
+                const vec3 chord = n * (T(2) * nl) - l - v; // r - v; |r - v|^2 / 2 = 1 - r.v
+                spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
+            } else {
+                const vec3 r = n * (T(2) * nl) - l; // phong::reflect(-l, n)
+                spec = phong::pow(phong::clamp(phong::dot(r, v), T(0), T(1)), m);
+            }
+        } else {
+            const vec3 sum = l + v;
+            const T hh = phong::dot(sum, sum);
+            const vec3 h = sum * phong::select(hh > T(0), T(1) / phong::sqrt(hh), T(0)); // l = -v: h = 0
+            if constexpr (stable) {
+                const vec3 chord = n - h; // |n - h|^2 / 2 = 1 - n.h
+                spec = phong::pow_one_minus(phong::select(hh > T(0), phong::dot(chord, chord) * T(0.5), T(1)), m);
+            } else {
+                spec = phong::pow(phong::clamp(phong::dot(n, h), T(0), T(1)), m);
+            }
+        }
+        mask_t<T> on = lit;
+        if constexpr (F.specular_gate) on = math_traits<T>::both(lit, nl > T(0));
+        sums.specular += L.specular * (f * phong::select(on, spec, T(0)));
+    }
+}
+
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const surface_frame<T, Q>& s,
+                                         const material<T, Q>& mat, const environment<T, Q>& env)
+{
+    glm::vec<3, T, Q> c(s.poison);
+    if constexpr (F.emission) c += mat.emission;
+    if constexpr (F.scene_ambient && F.light_ambient) c += mat.ka * (env.ambient + sums.ambient);
+    else if constexpr (F.scene_ambient) c += mat.ka * env.ambient;
+    else if constexpr (F.light_ambient) c += mat.ka * sums.ambient;
+    if constexpr (F.diffuse) c += mat.kd * sums.diffuse;
+    if constexpr (F.specular != specular_model::none) c += mat.ks * sums.specular;
+    if constexpr (F.alpha) return glm::vec<4, T, Q>(c, mat.alpha + s.poison);
+    else return c;
+}
+
+template <class R> struct is_std_array : std::false_type {};
+template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::true_type {};
+
+} // namespace detail
+
+/// The full local lighting model at one point (seeds 000, 001 and 003 are presets of it):
+///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0)
+///                + ks sum_i f_i Ls_i s_i,
+///   s_i = max(r_i.v, 0)^m (r_i = reflect(-l_i, n)) or max(n.h_i, 0)^m (h_i = normalize(l_i + v)),
+///   f_i = attenuation(d_i) * spot_i,   l_i = normalize(L_i.xyz - L_i.w Q),
+/// with rgba = (I, alpha) when F.alpha. Each term is compiled only when F asks for it.
+///
+/// position, normal: Q and its normal (any length; normalized here) in the lights' coordinates.
+/// lights: a std::array<light, N> (unrolled at compile time), std::span, std::vector, ...
+/// front_facing: read only for facing::flag.
+///
+/// Pre: validate(mat) and validate(L) for every light (checked: a compile error in constant
+/// evaluation, an assertion in debug builds). Edges (finite input never gives NaN or inf):
+///  * a light at Q (or a directional light with xyz = 0): no direction; that light adds only its
+///    ambient term;
+///  * normal = 0 or Q at the eye (v = 0): no diffuse or specular from any light;
+///  * Blinn with l = -v: n.h taken as 0 (0 for m > 0, 1 for m = 0);
+///  * m = 0: the specular base^0 = 1 wherever the specular term is on (pow(0, 0) = 1);
+///  * c0 = 0 and d -> 0: f capped at 1 / attenuation_denominator_min<T>;
+///  * NaN or inf in position, normal or (eye_point) eye: every channel is NaN.
+/// Accuracy: per F.mode, see phong/accuracy.hpp (exact: huge or tiny coordinates lose the light,
+/// giving 0 instead of NaN; stable: accurate on the whole finite range).
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                        const material<T, Q>& mat, const Lights& lights,
+                                        const environment<T, Q>& env = {}, bool front_facing = true)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+        detail::require(static_cast<bool>(phong::validate(mat)), phong::validate(mat).message());
+        for (const light<T, Q>& L : lights) detail::require(static_cast<bool>(phong::validate(L)), phong::validate(L).message());
+    }
+    const detail::surface_frame<T, Q> s = detail::prepare<F>(position, normal, env, front_facing);
+    detail::light_sums<T, Q> sums{};
+    if constexpr (detail::is_std_array<Lights>::value) {
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (detail::add_light<F>(sums, s, lights[I], mat.shininess), ...);
+        }(std::make_index_sequence<std::tuple_size_v<Lights>>{});
+    } else {
+        for (const light<T, Q>& L : lights) detail::add_light<F>(sums, s, L, mat.shininess);
+    }
+    return detail::finish<F>(sums, s, mat, env);
+}
+
+/// Seed 003's per-vertex pipeline (phong.vert, diffuse.vert): object-space position and normal,
+///   eyeCoords = ModelView * (p, 1),  tnorm = normalize(NormalMatrix * n),
+/// then shade<F>(eyeCoords.xyz, tnorm, ...) with lights in eye coordinates.
+/// Pre: model_view affine (last row 0, 0, 0, 1), as in the seed, which drops eyeCoords.w.
+/// normal_matrix(model_view) gives NormalMatrix.
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr color<F, T, Q> shade_vertex(const glm::vec<3, T, Q>& vertex_position, const glm::vec<3, T, Q>& vertex_normal,
+                                               const glm::mat<4, 4, T, Q>& model_view, const glm::mat<3, 3, T, Q>& normal_mat,
+                                               const material<T, Q>& mat, const Lights& lights,
+                                               const environment<T, Q>& env = {})
+{
+    const glm::vec<4, T, Q> eye = model_view[0] * vertex_position.x + model_view[1] * vertex_position.y +
+                                  model_view[2] * vertex_position.z + model_view[3];
+    return shade<F>(glm::vec<3, T, Q>(eye.x, eye.y, eye.z), phong::transform_normal(normal_mat, vertex_normal), mat, lights, env);
+}
+
+} // namespace phong

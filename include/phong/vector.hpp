@@ -1,0 +1,123 @@
+// phong: constexpr vector kernels on glm::vec<L, T, Q>: dot, length, normalize, reflect.
+// SPDX-License-Identifier: MIT
+//
+// GLM 0.9.9.8's dot/length/normalize/reflect are not usable in constant evaluation, and its
+// normalize overflows for |v|^2 > max and returns NaN for v = 0. These are constexpr, work for
+// any qualifier and any number type with math_traits (float, double, long double, SIMD).
+#pragma once
+
+#include "math.hpp"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace phong {
+
+/// Dot product: dot(a, b) = sum_k a_k b_k, summed in index order (GLSL `dot`).
+/// Edge: overflows to inf when a product exceeds the range of T; NaN propagates.
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
+{
+    T sum = a[0] * b[0];
+    for (glm::length_t k = 1; k < L; ++k) sum += a[k] * b[k];
+    return sum;
+}
+
+/// Compensated dot product (Ogita, Rump and Oishi's Dot2): the result is as accurate as if
+/// computed in twice the working precision, then rounded: |error| <= eps |dot| + L^2 eps^2
+/// sum |a_k b_k|. Used where cancellation matters (n.l near grazing incidence).
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
+{
+    T p = a[0] * b[0];
+    T err = phong::fma(a[0], b[0], -p);
+    for (glm::length_t k = 1; k < L; ++k) {
+        const T h = a[k] * b[k];
+        const T r = phong::fma(a[k], b[k], -h);
+        const T s = p + h; // TwoSum(p, h) = s + q exactly
+        const T bp = s - p;
+        const T q = (p - (s - bp)) + (h - bp);
+        p = s;
+        err += q + r;
+    }
+    return p + err;
+}
+
+/// max_k |v_k|. Edge: NaN components may or may not be returned (comparison order).
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr T max_abs(const glm::vec<L, T, Q>& v)
+{
+    T m = phong::abs(v[0]);
+    for (glm::length_t k = 1; k < L; ++k) m = phong::max(m, phong::abs(v[k]));
+    return m;
+}
+
+/// v * 2^-e, an exact power-of-two rescaling that brings the largest component into [1, 2):
+/// the direction is kept bit for bit and squares of the result neither overflow nor underflow.
+/// Edge: the zero vector stays zero.
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<L, T, Q> rescaled(const glm::vec<L, T, Q>& v)
+{
+    return v * math_traits<T>::inverse_pow2_scale(phong::max_abs(v));
+}
+
+/// Euclidean length |v| = sqrt(dot(v, v)), computed on the rescaled vector so that it is
+/// accurate (< 2 ulp) over the whole finite range: huge components do not overflow, tiny and
+/// subnormal ones do not underflow. Edge: length(0) = 0; the result is inf only when the true
+/// length exceeds the largest finite T.
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr T length(const glm::vec<L, T, Q>& v)
+{
+    const T s = math_traits<T>::inverse_pow2_scale(phong::max_abs(v));
+    const glm::vec<L, T, Q> w = v * s;
+    return phong::sqrt(phong::dot(w, w)) / s;
+}
+
+/// Unit vector along v: v / |v|. Scaled first (see `rescaled`), so every finite nonzero v gives
+/// a unit vector (error < 2 ulp per component), including |v| ~ 1e-40 or 1e30 in float.
+/// Edge: normalize(0) = 0 (zero in, zero out; GLM gives NaN). NaN in gives NaN out.
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
+{
+    const glm::vec<L, T, Q> w = phong::rescaled(v);
+    const T dd = phong::dot(w, w);
+    return w * phong::select(dd > T(0), T(1) / phong::sqrt(dd), T(0));
+}
+
+/// v / |v| without rescaling: the fastest form, as GLSL writes it, guarded for zero only.
+/// Pre: |v|^2 representable (about 1e-19 < |v| < 1e19 in float). Edge: normalize_unscaled(0) = 0;
+/// when |v|^2 overflows the result is 0, when it underflows to 0 the result is 0 (never NaN).
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<L, T, Q> normalize_unscaled(const glm::vec<L, T, Q>& v)
+{
+    const T dd = phong::dot(v, v);
+    return v * phong::select(dd > T(0), T(1) / phong::sqrt(dd), T(0));
+}
+
+/// GLSL reflect: reflect(i, n) = i - 2 dot(n, i) n, the mirror image of the incident direction
+/// i about the plane with unit normal n. Pre: n unit length (else the result is not a mirror
+/// image). It keeps |i| and is an involution (up to rounding) for unit n.
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<L, T, Q> reflect(const glm::vec<L, T, Q>& i, const glm::vec<L, T, Q>& n)
+{
+    return i - n * (T(2) * phong::dot(n, i));
+}
+
+/// GLSL faceforward: faceforward(n, i, nref) = dot(nref, i) < 0 ? n : -n.
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<L, T, Q> faceforward(const glm::vec<L, T, Q>& n, const glm::vec<L, T, Q>& i,
+                                                 const glm::vec<L, T, Q>& nref)
+{
+    const T sign = phong::select(phong::dot(nref, i) < T(0), T(1), T(-1));
+    return n * sign;
+}
+
+/// Cross product a x b (GLM's is constexpr-unfriendly in some configurations).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> cross(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b)
+{
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+} // namespace phong

@@ -1,0 +1,66 @@
+// phong: the view vector v, from the eye point, and the eye point from the projection ec_lds.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "direction.hpp"
+
+#include <glm/mat4x4.hpp>
+
+namespace phong {
+
+/// Seed 000, perspective: v = normalize(O - Q), O = (0, 0, 0) the eye in eye coordinates.
+/// Edge: Q = O gives v = 0; huge and tiny Q are rescaled (never NaN for finite Q).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> view_perspective(const glm::vec<3, T, Q>& point)
+{
+    return phong::normalize(-point);
+}
+
+/// Seed 000, orthographic: v = normalize(-M02/M00, -M12/M11, 1), M = ec_lds the projection
+/// matrix; M02 is row 0, column 2 (GLM's m[2][0]).
+/// Pre: M00 != 0 and M11 != 0 (any invertible orthographic matrix). Edge: M00 or M11 = 0 gives a
+/// non-finite ratio; use eye_from_projection, which never divides.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> view_orthographic(const glm::mat<4, 4, T, Q>& ec_lds)
+{
+    return phong::normalize(glm::vec<3, T, Q>(-ec_lds[2][0] / ec_lds[0][0], -ec_lds[2][1] / ec_lds[1][1], T(1)));
+}
+
+/// The eye as a homogeneous point, derived from the projection matrix M = ec_lds: the common
+/// null vector E of rows 0, 1 and 3 of M (the points that project to the centre of every
+/// clip-space x, y and to w = 0), computed as a 4-D cross product, then oriented toward the viewer.
+///   perspective (glm::perspective, glm::frustum, off-axis):  E = (x, y, z, 1), the centre of projection;
+///   orthographic (glm::ortho, oblique):  E = (dx, dy, dz, 0), unit, the direction toward the viewer;
+///   glm::ortho gives (0, 0, 1, 0), and in general (-M02/M00, -M12/M11, 1) normalized: seed 000's formula.
+/// Orientation: w > 0 for a finite eye; for w = 0 the direction in which clip depth (row 2)
+/// decreases, i.e. toward the near plane (OpenGL's convention; reversed-Z matrices need negating).
+/// Then v = toward(E, Q).direction (the same rule as for lights).
+/// Pre: rows 0, 1, 3 of M linearly independent (any invertible projection). Edge: a singular M
+/// gives E = 0, and then every view vector is 0 (never NaN).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<4, T, Q> eye_from_projection(const glm::mat<4, 4, T, Q>& M)
+{
+    // Rows of M (GLM is column-major: M[c][r]).
+    const auto row = [&](int r) { return glm::vec<4, T, Q>(M[0][r], M[1][r], M[2][r], M[3][r]); };
+    const glm::vec<4, T, Q> a = row(0), b = row(1), c = row(3), depth = row(2);
+    // 3x3 determinant of the columns i, j, k of the rows a, b, c.
+    const auto det3 = [&](int i, int j, int k) {
+        return a[i] * (b[j] * c[k] - b[k] * c[j]) - a[j] * (b[i] * c[k] - b[k] * c[i]) + a[k] * (b[i] * c[j] - b[j] * c[i]);
+    };
+    glm::vec<4, T, Q> E(det3(1, 2, 3), -det3(0, 2, 3), det3(0, 1, 3), -det3(0, 1, 2));
+    if (E.w != T(0)) return E / E.w; // the centre of projection, w = 1
+    const glm::vec<3, T, Q> dir = phong::normalize(glm::vec<3, T, Q>(E.x, E.y, E.z));
+    const T depth_rate = depth.x * dir.x + depth.y * dir.y + depth.z * dir.z;
+    return glm::vec<4, T, Q>(depth_rate > T(0) ? -dir : dir, T(0));
+}
+
+/// The view vector v at Q for the homogeneous eye E (w = 1: an eye point, as for perspective and
+/// for seed 001's ray start; w = 0: a direction toward the viewer, orthographic):
+///   v = normalize(E.xyz - E.w Q). Edge: Q at the eye gives 0.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> view_vector(const glm::vec<4, T, Q>& eye, const glm::vec<3, T, Q>& point)
+{
+    return phong::toward(eye, point).direction;
+}
+
+} // namespace phong
