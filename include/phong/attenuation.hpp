@@ -36,7 +36,7 @@ struct falloff {
 template <class T>
 PHONG_HD constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 {
-    d = phong::min(d, std::numeric_limits<T>::max()); // inf -> max: keeps c2 * d finite
+    d = phong::min(d, largest<T>()); // inf -> max: keeps c2 * d finite
     const T denominator = c0 + d * (c1 + c2 * d);
     return T(1) / phong::max(denominator, attenuation_denominator_min<T>);
 }
@@ -48,7 +48,7 @@ PHONG_HD constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 template <class T>
 PHONG_HD constexpr T attenuation_windowed(T d, T range)
 {
-    d = phong::min(d, std::numeric_limits<T>::max());
+    d = phong::min(d, largest<T>());
     const T ratio = phong::min(d / range, T(65536)); // ratio^4 stays finite; window is 0 anyway
     const T window = phong::clamp(T(1) - pow<4>(ratio), T(0), T(1));
     return window * window / phong::max(d * d, attenuation_denominator_min<T>);

@@ -241,6 +241,10 @@ private:
 
 /// Mask type of V: bool for scalars, a SIMD mask for batches.
 template <class V> using mask_t = typename math_traits<V>::mask;
+/// The scalar type of V: V itself for scalars, the lane type for batches.
+template <class V> using scalar_t = typename math_traits<V>::scalar;
+/// The largest finite value of V's scalar type, as a V (std::numeric_limits<batch> is not specialized).
+template <class V> PHONG_HD constexpr V largest() { return V(std::numeric_limits<scalar_t<V>>::max()); }
 
 /// sqrt(x). Domain x >= 0; sqrt(-0) = -0, x < 0 gives NaN, sqrt(inf) = inf.
 template <class V> PHONG_HD constexpr V sqrt(V x) { return math_traits<V>::sqrt(x); }

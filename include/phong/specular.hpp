@@ -16,7 +16,7 @@ namespace phong {
 template <class T>
 PHONG_HD constexpr T pow_one_minus(T x, T m)
 {
-    const T lg = phong::max(phong::log1p(-phong::min(x, T(1))), -std::numeric_limits<T>::max());
+    const T lg = phong::max(phong::log1p(-phong::min(x, T(1))), -largest<T>());
     return phong::exp(m * lg);
 }
 
