@@ -27,10 +27,13 @@ PHONG_HD constexpr glm::vec<3, T, Q> face_flag(const glm::vec<3, T, Q>& n, bool 
 
 /// The cofactor matrix of the linear map M (the adjugate transposed): cof(M) = det(M) M^{-T},
 /// columns (b x c, c x a, a x b) for M's columns a, b, c.
-/// Carries normals: n' = cof(M) n is normal to the transformed surface for every M, even a
-/// singular one (det = 0: a plane squashed flat still gets its normal). Its orientation follows
-/// det(M): a mirror (det < 0) flips n', so for outward normals multiply by sign(det) or use
-/// normal_matrix_inverse_transpose. Scale is det-dependent; normalize afterwards.
+/// Carries normals: n' = cof(M) n is normal to the transformed surface M x for every M, even a
+/// singular one (det = 0: a sphere squashed to a disk still gets the disk's normal; where the
+/// surface collapses to a curve or a point, n' = 0). Orientation: det > 0 keeps outward normals
+/// outward; a mirror (det < 0) flips them inward, so use it where only the normal's line matters
+/// (two-sided shading, face_viewer) or multiply by sign(det); for outward normals under mirrors
+/// use normal_matrix_inverse_transpose. Scale is det-dependent; normalize afterwards.
+/// Pre: the products of two entries of M finite (else inf - inf gives NaN).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix_cofactor(const glm::mat<3, 3, T, Q>& M)
 {
@@ -39,16 +42,23 @@ PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix_cofactor(const glm::mat<3,
 }
 
 /// The classic normal matrix (GLSL's NormalMatrix): (M^{-1})^T = cof(M) / det(M).
-/// Right for every invertible M, mirrors included (outward normals stay outward).
-/// Edge: det(M) = 0 has no inverse; the cofactor is returned instead (the right direction up to
-/// sign, finite), so the result is never NaN.
+/// Right for every invertible M, mirrors included (outward normals stay outward): for a surface
+/// point x with outward normal n, (M^{-T} n) . (M y) = n . y for every vector y, so tangents stay
+/// orthogonal and the outward side stays positive. Seed 001's "m = M m'" is right only with this
+/// matrix for its M; the object's transform itself (M m') tilts normals under non-uniform scale.
+/// Pre: as normal_matrix_cofactor. Edge: det(M) = 0 (or a det that underflows to 0) has no
+/// inverse; the cofactor is returned instead (the right direction up to sign, finite). When
+/// 1 / det overflows (|det| below about 1 / max, e.g. diag(1e-20, 1e-20, 1) in float),
+/// cof(M) sign(det) is returned: the direction and orientation of M^{-T} n, not its scale.
+/// Never NaN for finite M within the precondition.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix_inverse_transpose(const glm::mat<3, 3, T, Q>& M)
 {
     const glm::mat<3, 3, T, Q> cof = phong::normal_matrix_cofactor(M);
     const T det = phong::dot(M[0], cof[0]); // a . (b x c)
     if (det == T(0)) return cof;
-    const T inv = T(1) / det; // GLM's matrix operators are not constexpr: scale column-wise
+    T inv = T(1) / det; // GLM's matrix operators are not constexpr: scale column-wise
+    if (inv - inv != T(0)) inv = det < T(0) ? T(-1) : T(1); // 1/det overflowed: inf * 0 would give NaN
     return glm::mat<3, 3, T, Q>(cof[0] * inv, cof[1] * inv, cof[2] * inv);
 }
 
@@ -61,8 +71,10 @@ PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T, Q>
     return phong::normal_matrix_inverse_transpose(upper);
 }
 
-/// n' = normalize(N n): a normal carried by a normal matrix N (seed 001's m = M m', seed 003's
-/// tnorm = normalize(NormalMatrix * VertexNormal)). Edge: a zero result stays 0.
+/// n' = normalize(N n): a normal carried by a normal matrix N (seed 001's m = M m' with M the
+/// transpose of the inverse transform, seed 003's tnorm = normalize(NormalMatrix * VertexNormal)).
+/// N should come from normal_matrix / normal_matrix_inverse_transpose (or the cofactor, see
+/// there), not be the model matrix itself. Edge: a zero result stays 0 (never NaN for finite input).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> transform_normal(const glm::mat<3, 3, T, Q>& N, const glm::vec<3, T, Q>& n)
 {

@@ -14,3 +14,4 @@
 #include "material.hpp"
 #include "features.hpp"
 #include "shade.hpp"
+#include "primitives.hpp"

@@ -1,0 +1,263 @@
+// phong: seed 001's generic primitives for ray tracers: their normals m' at a generic hit point
+// P', and the intersection of a ray with each of them in generic (object) coordinates.
+// SPDX-License-Identifier: MIT
+//
+// A ray tracer transforms the ray by an object's inverse transform, hits the generic primitive
+// at P' = S' + t c', takes the generic normal m' there and carries it to world space with the
+// normal matrix (phong/normal.hpp: m = (M^{-1})^T m', not M m'). The hit time t is the same for
+// the world ray and the transformed ray, so P = S + t c. The normals here are not normalized:
+// the normal matrix changes their length anyway, so normalize once, after transforming.
+//
+// Generic primitives (seed 001):
+//   sphere            |P'| = 1, centred at the origin;
+//   plane             z = 0;
+//   square            z = 0, |x| <= 1, |y| <= 1;
+//   tapered cylinder  wall x^2 + y^2 = (1 + (s - 1) z)^2, 0 <= z <= 1 (radius 1 at z = 0, s at
+//                     z = 1; s = 1 a cylinder, s = 0 a cone), base disk z = 0, x^2 + y^2 <= 1,
+//                     cap disk z = 1, x^2 + y^2 <= s^2;
+//   cube              max(|x|, |y|, |z|) = 1.
+#pragma once
+
+#include "vector.hpp"
+
+#include <limits>
+
+namespace phong {
+
+// ---- normals at a generic hit point -------------------------------------------------------
+
+/// Generic sphere: m' = P' - (0, 0, 0) = P' (seed 001, step 4.1).
+/// Pre: P' on the unit sphere (any P' gives the radial direction). Edge: P' = 0 gives 0.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> sphere_normal(const glm::vec<3, T, Q>& p)
+{
+    return p;
+}
+
+/// Generic plane z = 0: m' = (0, 0, 1) at every point (the +z side is the front).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> plane_normal(const glm::vec<3, T, Q>& /*p*/)
+{
+    return {T(0), T(0), T(1)};
+}
+
+/// Generic square z = 0, |x|, |y| <= 1: m' = (0, 0, 1), the plane's normal.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> square_normal(const glm::vec<3, T, Q>& /*p*/)
+{
+    return {T(0), T(0), T(1)};
+}
+
+/// Wall of the generic tapered cylinder F(x, y, z) = x^2 + y^2 - (1 + (s - 1) z)^2 = 0:
+///   m' = grad F / 2 = (x, y, -(s - 1)(1 + (s - 1) z))
+/// (TeX: m' = (x,\ y,\ -(s-1)(1+(s-1)z))), outward (F grows outside). s = 1 gives the cylinder's
+/// (x, y, 0). Pre: s >= 0, P' on the wall with 0 <= z <= 1. Edge: the apex of a cone (s = 0,
+/// z = 1, x = y = 0) has no normal and gives 0 (shade then adds no diffuse or specular).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_wall_normal(const glm::vec<3, T, Q>& p, T s)
+{
+    const T k = s - T(1);
+    return {p.x, p.y, -k * (T(1) + k * p.z)};
+}
+
+/// Base disk of the generic tapered cylinder (z = 0, radius 1): m' = (0, 0, -1), outward.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_base_normal(const glm::vec<3, T, Q>& /*p*/)
+{
+    return {T(0), T(0), T(-1)};
+}
+
+/// Cap disk of the generic tapered cylinder (z = 1, radius s): m' = (0, 0, 1), outward.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_cap_normal(const glm::vec<3, T, Q>& /*p*/)
+{
+    return {T(0), T(0), T(1)};
+}
+
+/// Generic cube max(|x|, |y|, |z|) = 1: m' = sign(p_k) e_k for the axis k of the largest |p_k|
+/// (outward face normal). Edge: on an edge or corner (a tie) the first axis in x, y, z order
+/// wins; p_k = 0 on that axis (only for P' = 0) gives +e_k. NaN components lose every comparison.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> cube_normal(const glm::vec<3, T, Q>& p)
+{
+    const T ax = phong::abs(p.x), ay = phong::abs(p.y), az = phong::abs(p.z);
+    const auto sign = [](T x) { return x < T(0) ? T(-1) : T(1); };
+    if (ax >= ay && ax >= az) return {sign(p.x), T(0), T(0)};
+    if (ay >= az) return {T(0), sign(p.y), T(0)};
+    return {T(0), T(0), sign(p.z)};
+}
+
+// ---- ray intersection in generic coordinates ----------------------------------------------
+
+/// Which part of a generic primitive a ray hit.
+enum class primitive_part : unsigned char { none, surface, wall, base, cap };
+
+/// The nearest hit of a ray S + t c with t > t_min: its time and the part hit.
+/// A miss has part = none and t = +inf (so the nearest of several hits is the smallest t).
+template <class T>
+struct ray_hit {
+    T t = std::numeric_limits<T>::infinity();
+    primitive_part part = primitive_part::none;
+    PHONG_HD constexpr explicit operator bool() const { return part != primitive_part::none; }
+};
+
+namespace detail {
+
+/// Keeps the nearer of two hits (the first on a tie).
+template <class T>
+PHONG_HD constexpr ray_hit<T> nearer(const ray_hit<T>& a, const ray_hit<T>& b)
+{
+    return b.t < a.t ? b : a;
+}
+
+/// The roots of A t^2 + 2 B t + C = 0 without cancellation: q = -(B + sign(B) sqrt(B^2 - A C)),
+/// t = q / A and t = C / q (Numerical Recipes 5.6). A = 0 leaves the linear root -C / (2B).
+/// Returns the number of real roots written to t0, t1 (0, 1 or 2); they are not ordered.
+template <class T>
+PHONG_HD constexpr int quadratic_roots(T A, T B, T C, T& t0, T& t1)
+{
+    const T disc = B * B - A * C;
+    if (!(disc >= T(0))) return 0; // also NaN
+    const T root = phong::sqrt(disc);
+    const T q = -(B + (B < T(0) ? -root : root));
+    if (q == T(0)) { // B = 0 and disc = 0: A t^2 + C = 0 with A C = 0
+        if (A != T(0) && C == T(0)) { t0 = T(0); return 1; }
+        return 0;
+    }
+    t0 = C / q;
+    if (A == T(0)) return 1;
+    t1 = q / A;
+    return 2;
+}
+
+/// The hit at the smaller of t0 and t1 that is > t_min (roots beyond the range are dropped).
+template <class T>
+PHONG_HD constexpr ray_hit<T> first_after(int count, T t0, T t1, T t_min, primitive_part part)
+{
+    ray_hit<T> h;
+    if (count >= 1 && t0 > t_min) h = {t0, part};
+    if (count >= 2 && t1 > t_min && t1 < h.t) h = {t1, part};
+    return h;
+}
+
+/// Ray against the disk z = z0, x^2 + y^2 <= radius^2.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr ray_hit<T> ray_disk(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T z0, T radius, T t_min,
+                                       primitive_part part)
+{
+    if (c.z == T(0)) return {};
+    const T t = (z0 - S.z) / c.z;
+    if (!(t > t_min) || t == std::numeric_limits<T>::infinity()) return {};
+    const T x = S.x + t * c.x, y = S.y + t * c.y;
+    if (!(x * x + y * y <= radius * radius)) return {};
+    return {t, part};
+}
+
+} // namespace detail
+
+/// Ray S + t c against the generic unit sphere |P| = 1: the smallest root t > t_min of
+///   (c.c) t^2 + 2 (S.c) t + (S.S - 1) = 0,
+/// solved without cancellation. Part: surface. Pre: S, c finite; c need not be unit (t is in units
+/// of c, so the same t serves the world ray and the inverse-transformed ray).
+/// Edge: c = 0, a miss, or a tangent ray that rounds to a miss gives no hit; NaN gives no hit.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
+{
+    T t0 = T(0), t1 = T(0);
+    const int n = detail::quadratic_roots(phong::dot(c, c), phong::dot(S, c), phong::dot(S, S) - T(1), t0, t1);
+    return detail::first_after(n, t0, t1, t_min, primitive_part::surface);
+}
+
+/// Ray S + t c against the generic plane z = 0: t = -S.z / c.z when t > t_min. Part: surface.
+/// Edge: a ray parallel to the plane (c.z = 0), even one lying in it, gives no hit; so does a
+/// time that overflows to inf.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr ray_hit<T> ray_plane(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
+{
+    if (c.z == T(0)) return {};
+    const T t = -S.z / c.z;
+    if (!(t > t_min) || t == std::numeric_limits<T>::infinity()) return {};
+    return {t, primitive_part::surface};
+}
+
+/// Ray S + t c against the generic square z = 0, |x| <= 1, |y| <= 1 (edges included).
+/// Part: surface. Edge: as ray_plane; a hit outside the square is no hit.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr ray_hit<T> ray_square(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
+{
+    const ray_hit<T> h = phong::ray_plane(S, c, t_min);
+    if (!h) return h;
+    const T x = S.x + h.t * c.x, y = S.y + h.t * c.y;
+    if (!(phong::abs(x) <= T(1) && phong::abs(y) <= T(1))) return {};
+    return h;
+}
+
+/// Ray S + t c against the generic tapered cylinder with small radius s (wall, base and cap):
+///   wall: A t^2 + 2 B t + C = 0 with k = s - 1, w = 1 + k S.z, e = k c.z,
+///         A = cx^2 + cy^2 - e^2, B = Sx cx + Sy cy - w e, C = Sx^2 + Sy^2 - w^2,
+///         a root counts when 0 <= z <= 1 at it;
+///   base: z = 0 with x^2 + y^2 <= 1;  cap: z = 1 with x^2 + y^2 <= s^2.
+/// Returns the nearest hit after t_min and which part it is (wall, base or cap).
+/// Pre: s >= 0 (s < 0 would add the other nappe of the cone). Edge: s = 0 has no cap (a disk of
+/// radius 0 is never hit) and the apex is a wall hit; a ray along a generator line (A = 0) uses
+/// the linear root; c = 0 and NaN give no hit.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s,
+                                                   T t_min = T(0))
+{
+    const T k = s - T(1);
+    const T w = T(1) + k * S.z, e = k * c.z;
+    const T A = c.x * c.x + c.y * c.y - e * e;
+    const T B = S.x * c.x + S.y * c.y - w * e;
+    const T C = S.x * S.x + S.y * S.y - w * w;
+    T t[2] = {T(0), T(0)};
+    const int n = detail::quadratic_roots(A, B, C, t[0], t[1]);
+    ray_hit<T> best;
+    for (int i = 0; i < n; ++i) {
+        const T z = S.z + t[i] * c.z;
+        if (t[i] > t_min && t[i] < best.t && z >= T(0) && z <= T(1)) best = {t[i], primitive_part::wall};
+    }
+    best = detail::nearer(best, detail::ray_disk(S, c, T(0), T(1), t_min, primitive_part::base));
+    if (s > T(0)) best = detail::nearer(best, detail::ray_disk(S, c, T(1), s, t_min, primitive_part::cap));
+    return best;
+}
+
+/// Ray S + t c against the generic cube [-1, 1]^3 (slab method): the entry time when it is
+/// > t_min, else the exit time (a ray starting inside). Part: surface; cube_normal gives m'.
+/// Edge: a ray parallel to a pair of faces and outside their slab misses; c = 0 and NaN miss.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr ray_hit<T> ray_cube(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
+{
+    const T inf = std::numeric_limits<T>::infinity();
+    T enter = -inf, leave = inf;
+    for (int a = 0; a < 3; ++a) {
+        if (c[a] == T(0)) {
+            if (!(phong::abs(S[a]) <= T(1))) return {};
+            continue;
+        }
+        T t0 = (T(-1) - S[a]) / c[a], t1 = (T(1) - S[a]) / c[a];
+        if (t0 != t0 || t1 != t1) return {}; // NaN input
+        if (t1 < t0) { const T tmp = t0; t0 = t1; t1 = tmp; }
+        enter = phong::max(enter, t0);
+        leave = phong::min(leave, t1);
+    }
+    if (!(enter <= leave)) return {};
+    if (enter > t_min && enter < inf) return {enter, primitive_part::surface};
+    if (leave > t_min && leave < inf) return {leave, primitive_part::surface};
+    return {};
+}
+
+/// The generic normal m' of the tapered cylinder part hit (wall, base or cap) at P'.
+/// Edge: part none or surface gives 0 (no normal).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_normal(const glm::vec<3, T, Q>& p, T s, primitive_part part)
+{
+    switch (part) {
+    case primitive_part::wall: return phong::tapered_cylinder_wall_normal(p, s);
+    case primitive_part::base: return phong::tapered_cylinder_base_normal(p);
+    case primitive_part::cap: return phong::tapered_cylinder_cap_normal(p);
+    default: return glm::vec<3, T, Q>(T(0));
+    }
+}
+
+} // namespace phong
