@@ -270,7 +270,8 @@ template <class V> PHONG_HD constexpr V clamp(V x, V lo, V hi) { return min(max(
 template <class V> PHONG_HD constexpr V select(mask_t<V> m, V a, V b) { return math_traits<V>::select(m, a, b); }
 
 /// x^N for a compile-time integer N >= 0 by repeated squaring: no exp/log, exact pattern of
-/// roundings (at most 2 log2 N multiplications, so < 2 log2(N) ulp). pow<0>(x) = 1 for every x.
+/// roundings (at most 2 log2 N multiplications; squaring doubles the relative error already present,
+/// so the error is at most (N - 1) u relative, u = eps / 2, i.e. < N ulp). pow<0>(x) = 1 for every x.
 template <unsigned N, class V> PHONG_HD constexpr V pow(V x)
 {
     if constexpr (N == 0) {
