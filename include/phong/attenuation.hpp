@@ -38,7 +38,7 @@ PHONG_HD constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 {
     d = phong::min(d, largest<T>()); // inf -> max: keeps c2 * d finite
     const T denominator = c0 + d * (c1 + c2 * d);
-    return T(1) / phong::max(denominator, attenuation_denominator_min<T>);
+    return T(1) / phong::max(denominator, T(attenuation_denominator_min<scalar_t<T>>));
 }
 
 /// Windowed inverse square (Filament, three.js "physically based" falloff):
@@ -51,7 +51,7 @@ PHONG_HD constexpr T attenuation_windowed(T d, T range)
     d = phong::min(d, largest<T>());
     const T ratio = phong::min(d / range, T(65536)); // ratio^4 stays finite; window is 0 anyway
     const T window = phong::clamp(T(1) - pow<4>(ratio), T(0), T(1));
-    return window * window / phong::max(d * d, attenuation_denominator_min<T>);
+    return window * window / phong::max(d * d, T(attenuation_denominator_min<scalar_t<T>>));
 }
 
 /// A spot cone: the axis the light points along and its two parametrizations, OpenGL's

@@ -161,6 +161,8 @@ struct math_traits {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::sqrt(x));
         return std::sqrt(x);
     }
+    /// 1/sqrt(x), correctly rounded twice (a division of a square root).
+    PHONG_HD static constexpr V rsqrt(V x) { return V(1) / sqrt(x); }
     PHONG_HD static constexpr V exp(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::exp(x));
@@ -248,6 +250,9 @@ template <class V> PHONG_HD constexpr V largest() { return V(std::numeric_limits
 
 /// sqrt(x). Domain x >= 0; sqrt(-0) = -0, x < 0 gives NaN, sqrt(inf) = inf.
 template <class V> PHONG_HD constexpr V sqrt(V x) { return math_traits<V>::sqrt(x); }
+/// 1/sqrt(x): rsqrt(0) = inf, rsqrt(inf) = 0. Scalars: 1 / sqrt(x) (< 1 ulp); SIMD float
+/// lanes: a hardware estimate refined by one Newton step (< 2 ulp), see batch.hpp.
+template <class V> PHONG_HD constexpr V rsqrt(V x) { return math_traits<V>::rsqrt(x); }
 /// e^x. Overflow gives inf, underflow 0.
 template <class V> PHONG_HD constexpr V exp(V x) { return math_traits<V>::exp(x); }
 /// ln x. log(0) = -inf, x < 0 gives NaN.

@@ -14,4 +14,5 @@
 #include "material.hpp"
 #include "features.hpp"
 #include "shade.hpp"
+#include "batch.hpp"
 #include "primitives.hpp"

@@ -78,7 +78,7 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     if constexpr (F.mode == evaluation::stable) {
         s.normal_scaled = phong::rescaled(normal);
         const T nn = phong::dot(s.normal_scaled, s.normal_scaled);
-        s.inv_normal_length = phong::select(nn > T(0), T(1) / phong::sqrt(nn), T(0));
+        s.inv_normal_length = phong::select(nn > T(0), phong::rsqrt(nn), T(0));
         s.normal = s.normal_scaled * s.inv_normal_length;
     } else {
         s.normal = phong::normalize_unscaled(normal);
@@ -141,13 +141,13 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         const T scale = math_traits<T>::inverse_pow2_scale(phong::max_abs(d)); // exact: keeps d bit for bit
         const vec3 hs = d * scale;
         const T dd = phong::dot(hs, hs);
-        inv = phong::select(dd > T(0), T(1) / phong::sqrt(dd), T(0));
+        inv = phong::select(dd > T(0), phong::rsqrt(dd), T(0));
         l = hs * inv;
         nl = (phong::dot_compensated(s.normal_scaled, hs) + phong::dot(s.normal_scaled, lo * scale)) * (s.inv_normal_length * inv);
         length_d = phong::sqrt(dd) / scale;
     } else {
         const T dd = phong::dot(d, d);
-        inv = phong::select(dd > T(0), T(1) / phong::sqrt(dd), T(0));
+        inv = phong::select(dd > T(0), phong::rsqrt(dd), T(0));
         l = d * inv;
         nl = phong::dot(s.normal, l);
         length_d = phong::sqrt(dd);
@@ -192,7 +192,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         } else {
             const vec3 sum = l + v;
             const T hh = phong::dot(sum, sum);
-            const vec3 h = sum * phong::select(hh > T(0), T(1) / phong::sqrt(hh), T(0)); // l = -v: h = 0
+            const vec3 h = sum * phong::select(hh > T(0), phong::rsqrt(hh), T(0)); // l = -v: h = 0
             if constexpr (stable) {
                 const vec3 chord = n - h; // |n - h|^2 / 2 = 1 - n.h
                 spec = phong::pow_one_minus(phong::select(hh > T(0), phong::dot(chord, chord) * T(0.5), T(1)), m);
@@ -219,6 +219,24 @@ PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const sur
     if constexpr (F.specular != specular_model::none) c += mat.ks * sums.specular;
     if constexpr (F.alpha) return glm::vec<4, T, Q>(c, mat.alpha + s.poison);
     else return c;
+}
+
+/// validate() every parameter: a compile error in constant evaluation, an assertion in debug
+/// builds, nothing at all under NDEBUG (the checks are not even evaluated).
+template <class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const Lights& lights)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+#if defined(NDEBUG)
+        if (!std::is_constant_evaluated()) return;
+#endif
+        const validation vm = phong::validate(mat);
+        require(static_cast<bool>(vm), vm.message());
+        for (const light<T, Q>& L : lights) {
+            const validation vl = phong::validate(L);
+            require(static_cast<bool>(vl), vl.message());
+        }
+    }
 }
 
 template <class R> struct is_std_array : std::false_type {};
@@ -253,10 +271,7 @@ PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const
                                         const material<T, Q>& mat, const Lights& lights,
                                         const environment<T, Q>& env = {}, bool front_facing = true)
 {
-    if constexpr (std::is_floating_point_v<T>) {
-        detail::require(static_cast<bool>(phong::validate(mat)), phong::validate(mat).message());
-        for (const light<T, Q>& L : lights) detail::require(static_cast<bool>(phong::validate(L)), phong::validate(L).message());
-    }
+    detail::check_parameters(mat, lights);
     const detail::surface_frame<T, Q> s = detail::prepare<F>(position, normal, env, front_facing);
     detail::light_sums<T, Q> sums{};
     if constexpr (detail::is_std_array<Lights>::value) {

@@ -73,7 +73,7 @@ PHONG_HD constexpr T specular_halfway_stable(const glm::vec<3, T, Q>& n, const g
     const T nl = phong::dot(n, l);
     const glm::vec<3, T, Q> sum = l + v;
     const T hh = phong::dot(sum, sum);
-    const glm::vec<3, T, Q> chord = n - sum * phong::select(hh > T(0), T(1) / phong::sqrt(hh), T(0));
+    const glm::vec<3, T, Q> chord = n - sum * phong::select(hh > T(0), phong::rsqrt(hh), T(0));
     const T x = phong::select(hh > T(0), phong::dot(chord, chord) * T(0.5), T(1));
     return phong::select(nl > T(0), phong::pow_one_minus(x, m), T(0));
 }

@@ -82,7 +82,7 @@ PHONG_HD constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
 {
     const glm::vec<L, T, Q> w = phong::rescaled(v);
     const T dd = phong::dot(w, w);
-    return w * phong::select(dd > T(0), T(1) / phong::sqrt(dd), T(0));
+    return w * phong::select(dd > T(0), phong::rsqrt(dd), T(0));
 }
 
 /// v / |v| without rescaling: the fastest form, as GLSL writes it, guarded for zero only.
@@ -92,7 +92,7 @@ template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<L, T, Q> normalize_unscaled(const glm::vec<L, T, Q>& v)
 {
     const T dd = phong::dot(v, v);
-    return v * phong::select(dd > T(0), T(1) / phong::sqrt(dd), T(0));
+    return v * phong::select(dd > T(0), phong::rsqrt(dd), T(0));
 }
 
 /// GLSL reflect: reflect(i, n) = i - 2 dot(n, i) n, the mirror image of the incident direction
