@@ -157,15 +157,28 @@ PHONG_HD constexpr ray_hit<T> ray_disk(const glm::vec<3, T, Q>& S, const glm::ve
 
 /// Ray S + t c against the generic unit sphere |P| = 1: the smallest root t > t_min of
 ///   (c.c) t^2 + 2 (S.c) t + (S.S - 1) = 0,
-/// solved without cancellation. Part: surface. Pre: S, c finite; c need not be unit (t is in units
-/// of c, so the same t serves the world ray and the inverse-transformed ray).
+/// solved without cancellation: the discriminant is taken as (c.c)(1 - |S - (S.c / c.c) c|^2)
+/// (the distance of the ray's line from the centre, Ray Tracing Gems ch. 7) rather than
+/// (S.c)^2 - (c.c)(S.S - 1), so rays far from the sphere or near tangency keep their digits, and
+/// the roots as in detail::quadratic_roots. Part: surface. Pre: S, c finite; c need not be unit
+/// (t is in units of c, so the same t serves the world ray and the inverse-transformed ray).
 /// Edge: c = 0, a miss, or a tangent ray that rounds to a miss gives no hit; NaN gives no hit.
+/// Accuracy: near tangency the hit is ill-conditioned (the roots merge); t is then as accurate
+/// as the rounding of S and c allows, about eps (t0 + t1) / |t0 - t1|.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
-    T t0 = T(0), t1 = T(0);
-    const int n = detail::quadratic_roots(phong::dot(c, c), phong::dot(S, c), phong::dot(S, S) - T(1), t0, t1);
-    return detail::first_after(n, t0, t1, t_min, primitive_part::surface);
+    const T a = phong::dot(c, c);
+    if (!(a > T(0))) return {}; // c = 0 or NaN
+    const T b = phong::dot(S, c);
+    const glm::vec<3, T, Q> closest = S - c * (b / a); // the foot of the perpendicular from the centre
+    const T one_minus = T(1) - phong::dot(closest, closest); // disc / (c.c)
+    if (!(one_minus >= T(0))) return {};
+    const T root = phong::sqrt(a) * phong::sqrt(one_minus); // sqrt(disc), no overflow of a * ...
+    const T q = -(b + (b < T(0) ? -root : root));
+    if (q == T(0)) return detail::first_after(1, T(0), T(0), t_min, primitive_part::surface); // tangent at S
+    const T C = phong::dot(S, S) - T(1);
+    return detail::first_after(2, C / q, q / a, t_min, primitive_part::surface);
 }
 
 /// Ray S + t c against the generic plane z = 0: t = -S.z / c.z when t > t_min. Part: surface.
