@@ -65,7 +65,7 @@ struct spot_cone {
     T cos_outer = T(-1);   ///< smooth model: zero where cos(angle) <= cos_outer; cos_outer <= cos_inner
 
     /// OpenGL spot: axis (normalized here), exponent, cutoff in degrees (0..90, or 180 = no spot).
-    static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
+    PHONG_HD static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
     {
         spot_cone s;
         s.direction = phong::normalize(axis);
@@ -74,7 +74,7 @@ struct spot_cone {
         return s;
     }
     /// Smooth spot: full strength inside inner_degrees, none outside outer_degrees (inner <= outer).
-    static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
+    PHONG_HD static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
     {
         spot_cone s;
         s.direction = phong::normalize(axis);

@@ -8,6 +8,8 @@
 // presets all read it.
 #pragma once
 
+#include "detail/config.hpp"
+
 namespace phong {
 
 /// Which specular term: none, reflection-based (seed 000/003: max(r.v, 0)^m with
@@ -109,7 +111,7 @@ inline constexpr features seed003_diffuse{
     .emission = false, .alpha = false, .mode = evaluation::exact};
 
 /// The same feature set evaluated in another mode (e.g. with_mode(seed000_classic, stable)).
-constexpr features with_mode(features f, evaluation mode)
+PHONG_HD constexpr features with_mode(features f, evaluation mode)
 {
     f.mode = mode;
     return f;

@@ -21,8 +21,8 @@ struct light {
     spot_cone<T, Q> spot{};           ///< read when features::spot is not none
 
     /// Seed 000's light: homogeneous position and one strength L_i for diffuse and specular.
-    static constexpr light seed000(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
-                                   falloff<T> attenuation = {})
+    PHONG_HD static constexpr light seed000(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
+                                            falloff<T> attenuation = {})
     {
         light l;
         l.position = position;

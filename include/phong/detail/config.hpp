@@ -24,7 +24,7 @@ namespace phong::detail {
 
 /// Called only when a precondition fails during constant evaluation. It is deliberately not
 /// constexpr, so the compiler rejects the constant expression and names this function.
-inline void precondition_failed_see_phong_validate(const char*) noexcept {}
+PHONG_HD inline void precondition_failed_see_phong_validate(const char*) noexcept {}
 
 /// Checks `ok`: a compile error in constant evaluation, an assertion at run time (debug builds).
 PHONG_HD constexpr void require(bool ok, const char* message) noexcept

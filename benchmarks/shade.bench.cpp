@@ -1,0 +1,137 @@
+// shade<F> over an array of points against the naive GLM baseline: time per (point, light) and
+// error against the __float128 reference, for every variant (exact / stable mode, float / double,
+// Phong / Blinn-Phong), K = 1, 4, 16, 64 lights, a cache-sized and a DRAM-sized N, and two stiff
+// input classes (m = 1e4 near the highlight, grazing n.l ~ 1e-6).
+//
+// Row names: <path>.<mode>.<specular>.<type>/<input set>/K:<K>/N:<N>, path = naive_glm | scalar.
+#include "support/baseline.hpp"
+#include "support/bounds.hpp"
+#include "support/harness.hpp"
+
+#include <phong/phong.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace phong_bench {
+namespace {
+
+/// The model every row of this file computes: seed 003's phong.vert summed over positional lights
+/// (per-light ambient, diffuse, specular gated on n.l > 0, eye at the origin).
+constexpr phong::features model(phong::specular_model spec, phong::evaluation mode)
+{
+    phong::features f = phong::presets::seed003_ads;
+    f.specular = spec;
+    f.mode = mode;
+    return f;
+}
+
+template <class T>
+std::vector<naive::LightInfo<T>> naive_lights(const scene& sc)
+{
+    std::vector<naive::LightInfo<T>> out;
+    for (std::size_t i = 0; i < sc.light_position.size(); ++i)
+        out.push_back({glm::vec<4, T>(sc.light_position[i]), glm::vec<3, T>(sc.light_ambient[i]),
+                       glm::vec<3, T>(sc.light_diffuse[i]), glm::vec<3, T>(sc.light_specular[i])});
+    return out;
+}
+
+/// The baseline: naive::ads (or ads_blinn) on every point.
+template <class T, bool Blinn>
+void naive_row(benchmark::State& state, input_set set, std::size_t N, std::size_t K)
+{
+    const scene sc = make_scene(set, K);
+    const points<T>& pts = cached_points<T>(set, N, K);
+    const std::vector<naive::LightInfo<T>> lights = naive_lights<T>(sc);
+    const naive::MaterialInfo<T> mat{glm::vec<3, T>(sc.ka), glm::vec<3, T>(sc.kd), glm::vec<3, T>(sc.ks), T(sc.shininess)};
+    std::vector<glm::vec<3, T>> out(N);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < N; ++i)
+            out[i] = Blinn ? naive::ads_blinn(pts.position[i], pts.normal[i], lights, mat)
+                           : naive::ads(pts.position[i], pts.normal[i], lights, mat);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    constexpr phong::features F = model(Blinn ? phong::specular_model::blinn : phong::specular_model::phong, phong::evaluation::exact);
+    report(state, N, K, out, cached_reference(F, set, N, K), -1);
+}
+
+/// phong::shade<F> on every point, lights as a run-time span.
+template <class T, phong::features F>
+void scalar_row(benchmark::State& state, input_set set, std::size_t N, std::size_t K)
+{
+    const scene sc = make_scene(set, K);
+    const points<T>& pts = cached_points<T>(set, N, K);
+    const std::vector<phong::light<T>> lights = lights_of<T>(sc);
+    const std::span<const phong::light<T>> L(lights);
+    const phong::material<T> mat = material_of<T>(sc);
+    const phong::environment<T> env = environment_of<T>(sc);
+    std::vector<glm::vec<3, T>> out(N);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < N; ++i) out[i] = phong::shade<F>(pts.position[i], pts.normal[i], mat, L, env);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    report(state, N, K, out, cached_reference(F, set, N, K), published_bound<T>(F, set));
+}
+
+using row_fn = void (*)(benchmark::State&, input_set, std::size_t, std::size_t);
+
+struct variant {
+    std::string name;
+    row_fn fn;
+};
+
+template <class T>
+const char* type_name() { return sizeof(T) == 4 ? "float" : "double"; }
+
+template <class T>
+std::vector<variant> variants_of()
+{
+    using phong::evaluation;
+    using phong::specular_model;
+    const std::string t = type_name<T>();
+    return {
+        {"naive_glm.exact.phong." + t, &naive_row<T, false>},
+        {"naive_glm.exact.blinn." + t, &naive_row<T, true>},
+        {"scalar.exact.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::exact)>},
+        {"scalar.exact.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::exact)>},
+        {"scalar.stable.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::stable)>},
+        {"scalar.stable.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::stable)>},
+    };
+}
+
+void add(const variant& v, input_set set, std::size_t K, std::size_t N)
+{
+    const std::string name = v.name + "/" + phong_bench::name(set) + "/K:" + std::to_string(K) + "/N:" + std::to_string(N);
+    benchmark::RegisterBenchmark(name.c_str(), [fn = v.fn, set, K, N](benchmark::State& st) { fn(st, set, N, K); })
+        ->Unit(benchmark::kMillisecond);
+}
+
+constexpr std::size_t n_cache = 65536;      // points + normals + colours: 2.3 MB in float (L2/L3)
+constexpr std::size_t n_dram = 4u << 20;    // 4M points: 150 MB in float, far beyond the 32 MB L3
+
+const bool registered = [] {
+    std::vector<variant> all = variants_of<float>();
+    for (const variant& v : variants_of<double>()) all.push_back(v);
+    // The main grid: every variant, K = 1, 4, 16, 64, cache-sized N.
+    for (const variant& v : all)
+        for (std::size_t K : {1u, 4u, 16u, 64u}) add(v, input_set::typical, K, n_cache);
+    // DRAM-sized N at K = 1, where memory traffic per pair is largest.
+    for (const variant& v : all) add(v, input_set::typical, 1, n_dram);
+    // Scaling with N (K = 1) for the float Phong rows.
+    for (const variant& v : all)
+        if (v.name.ends_with(".phong.float"))
+            for (std::size_t N : {std::size_t(1024), std::size_t(16384), std::size_t(262144), std::size_t(1u << 20)})
+                add(v, input_set::typical, 1, N);
+    // Stiff classes: what each variant's speed costs on hard inputs.
+    for (const variant& v : all)
+        for (input_set s : {input_set::highlight, input_set::grazing}) add(v, s, 4, n_cache);
+    return true;
+}();
+
+} // namespace
+} // namespace phong_bench
