@@ -83,17 +83,21 @@ struct math_traits<xsimd::batch<T, A>> {
     static V min(const V& a, const V& b) { return xsimd::min(a, b); }
     static V max(const V& a, const V& b) { return xsimd::max(a, b); }
 
-    /// The power of two of math_traits<T>::inverse_pow2_scale, lane-wise, by integer bit arithmetic.
+    /// The power of two of math_traits<T>::inverse_pow2_scale, lane-wise: 2^(bias - e) has the
+    /// exponent field (2 bias) - (x's exponent field), one integer subtraction; x's above 2^bias
+    /// (where that would underflow) take 2^(1 - bias). Integer selects are avoided on purpose
+    /// (xsimd 8.1 does not compile them for AVX-512BW at -O0).
     static V inverse_pow2_scale(const V& x)
     {
         using I = xsimd::as_integer_t<T>;
         using IV = xsimd::batch<I, A>;
         constexpr int mant = std::numeric_limits<T>::digits - 1;
-        constexpr I max_biased = (I(1) << (sizeof(T) * 8 - 1 - mant)) - 2;
-        const IV biased = (xsimd::bitwise_cast<IV>(x) >> mant) & IV(max_biased + 1);
-        IV s = xsimd::select(biased == IV(0), IV(max_biased), IV(max_biased) - biased);
-        s = xsimd::min(xsimd::max(s, IV(1)), IV(max_biased));
-        return xsimd::bitwise_cast<V>(s << mant);
+        constexpr I one = I(1) << mant;                                       // exponent field 1: 2^(1 - bias)
+        constexpr I exponent_mask = ((I(1) << (sizeof(T) * 8 - 1 - mant)) - 1) << mant; // all exponent bits
+        constexpr I two_bias = exponent_mask - one;                           // field 2 bias: 2^bias
+        const IV scale_bits = IV(two_bias) - (xsimd::bitwise_cast<IV>(x) & IV(exponent_mask));
+        const V two_pow_bias = xsimd::bitwise_cast<V>(IV(two_bias));
+        return xsimd::select(x >= two_pow_bias, xsimd::bitwise_cast<V>(IV(one)), xsimd::bitwise_cast<V>(scale_bits));
     }
 
 private:
@@ -105,9 +109,16 @@ private:
     }
 };
 
+#  if defined(__GNUC__) && !defined(__clang__) && !defined(__OPTIMIZE__) && XSIMD_WITH_AVX512BW
+/// g++ 12 at -O0 cannot compile xsimd 8.1's AVX-512BW integer select (used inside xsimd::log):
+/// unoptimized builds use AVX-512DQ, the same 512-bit float arithmetic.
+using simd_arch = xsimd::avx512dq;
+#  else
+using simd_arch = xsimd::default_arch;
+#  endif
 /// The SIMD batch used by shade_batch for T: xsimd's widest for the compile flags (16 floats with
 /// AVX-512, 8 with AVX2, 4 with SSE2).
-template <class T> using simd_batch = xsimd::batch<T>;
+template <class T> using simd_batch = xsimd::batch<T, simd_arch>;
 #else
 template <class T> using simd_batch = T;
 #endif

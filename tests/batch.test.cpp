@@ -1,0 +1,238 @@
+// batch.hpp: shade_batch runs shade<F>'s own templates on SIMD batches. Checked against the
+// scalar path point by point (every feature set of the list, float and double, every tail length)
+// and against the __float128 reference; degenerate points and the NaN policy lane by lane.
+#include "support/generators.hpp"
+#include "support/numeric.hpp"
+#include "support/reference.hpp"
+
+#include <phong/batch.hpp>
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace phong;
+using namespace phong_test;
+
+namespace {
+
+/// SoA copies of a list of points, and the output channels.
+template <class T> struct soa_scene {
+    std::vector<T> px, py, pz, nx, ny, nz, r, g, b, a;
+    std::vector<char> front_storage;
+    std::vector<bool> front_values;
+
+    void add(const glm::vec<3, T>& p, const glm::vec<3, T>& n)
+    {
+        px.push_back(p.x), py.push_back(p.y), pz.push_back(p.z);
+        nx.push_back(n.x), ny.push_back(n.y), nz.push_back(n.z);
+    }
+    std::size_t size() const { return px.size(); }
+    template <features F>
+    void shade(const material<T>& mat, std::span<const light<T>> lights, const environment<T>& env,
+               const bool* front = nullptr)
+    {
+        const std::size_t n = size();
+        r.assign(n, T(-1)), g.assign(n, T(-1)), b.assign(n, T(-1)), a.assign(n, T(-1));
+        shade_batch<F>(soa3<T>{px, py, pz}, soa3<T>{nx, ny, nz}, mat, lights, soa_rgba<T>{r, g, b, a}, env,
+                       front ? std::span<const bool>(front, n) : std::span<const bool>());
+    }
+    glm::vec<4, T> color(std::size_t i) const { return {r[i], g[i], b[i], a[i]}; }
+};
+
+// Feature sets the batch path is checked on: every optional term on and off at least once.
+constexpr features batch_feature_sets[] = {
+    features{.mode = evaluation::exact},
+    features{.mode = evaluation::stable},
+    features{.specular = specular_model::blinn, .mode = evaluation::stable},
+    features{.specular = specular_model::blinn, .mode = evaluation::exact},
+    features{.light_ambient = true, .lights = light_kind::positional, .attenuation = attenuation_model::polynomial,
+             .spot = spot_model::opengl, .mode = evaluation::stable},
+    features{.light_ambient = true, .lights = light_kind::any, .attenuation = attenuation_model::windowed,
+             .spot = spot_model::smooth, .attenuate_ambient = false, .mode = evaluation::exact},
+    features{.specular = specular_model::none, .lights = light_kind::directional, .two_sided = facing::view,
+             .view = view_model::orthographic, .mode = evaluation::stable},
+    features{.specular = specular_model::blinn, .specular_gate = false, .two_sided = facing::flag,
+             .view = view_model::eye_point, .emission = true, .alpha = true, .mode = evaluation::stable},
+    presets::seed000_classic,
+    presets::with_mode(presets::seed000_classic, evaluation::stable),
+    presets::seed001_raytracer,
+    presets::seed003_ads,
+    presets::seed003_diffuse,
+};
+
+/// Relative difference of two colours, per channel, against the largest channel of the reference.
+template <class T> double channel_difference(const glm::vec<4, T>& a, const glm::vec<4, T>& b, int channels)
+{
+    double scale = 0, diff = 0;
+    for (int k = 0; k < channels; ++k) {
+        scale = std::max(scale, double(std::abs(b[k])));
+        diff = std::max(diff, double(std::abs(a[k] - b[k])));
+    }
+    return diff / std::max(scale, 1e-30);
+}
+
+/// Tolerance of batch against scalar: both are within the mode's bound of the reference, but the
+/// SIMD rsqrt estimate (float lanes, < 2 ulp) and contraction into FMA shift the rounding; the
+/// exact mode's power amplifies that by up to m, the stable mode's by about sqrt(m).
+template <class T> double batch_tolerance(const features& F, double m)
+{
+    const double eps = std::numeric_limits<T>::epsilon();
+    const double amplification = F.mode == evaluation::exact ? 1 + m : 1 + 4 * std::sqrt(m);
+    return 64 * eps * amplification;
+}
+
+template <class T, features F> void check_against_scalar(std::uint64_t seed)
+{
+    scene_gen<T> gen(seed);
+    constexpr std::size_t W = batch_width<T>;
+    for (std::size_t n : {std::size_t(0), std::size_t(1), W - 1, W, W + 1, 3 * W + 5, std::size_t(257)}) {
+        const scene<T> base = gen.make(F, 1 + gen.integer(0, 3));
+        soa_scene<T> batch;
+        std::vector<char> front_chars;
+        std::vector<scene<T>> points;
+        for (std::size_t i = 0; i < n; ++i) {
+            scene<T> s = base; // same material, lights and eye; each point its own Q, n and facing
+            s.position = gen.point();
+            s.normal = gen.direction() * gen.uniform(0.5, 2);
+            s.front_facing = gen.coin();
+            points.push_back(s);
+            batch.add(s.position, s.normal);
+            front_chars.push_back(s.front_facing);
+        }
+        std::unique_ptr<bool[]> front(new bool[n + 1]);
+        for (std::size_t i = 0; i < n; ++i) front[i] = front_chars[i] != 0;
+        batch.template shade<F>(base.mat, base.lights, base.env, front.get());
+        const int channels = F.alpha ? 4 : 3;
+        int checked = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const scene<T>& s = points[i];
+            const auto c = shade<F>(s.position, s.normal, s.mat, s.lights, s.env, s.front_facing);
+            glm::vec<4, T> scalar(T(0), T(0), T(0), T(-1));
+            for (int k = 0; k < channels; ++k) scalar[k] = c[k];
+            const glm::vec<4, T> got = batch.color(i);
+            for (int k = 0; k < channels; ++k) REQUIRE(std::isfinite(got[k]));
+            if (!well_conditioned(F, s, 1e-3)) continue; // a rounding may flip a gate or a cone edge
+            ++checked;
+            const double diff = channel_difference(got, scalar, channels);
+            const double tol = batch_tolerance<T>(F, double(s.mat.shininess));
+            if (diff > tol) {
+                MESSAGE("point " << i << " of " << n << ": batch vs scalar relative difference " << diff << " > " << tol);
+            }
+            CHECK(diff <= tol);
+        }
+        // Lanes beyond n untouched: the output spans are exactly n long, so nothing to check
+        // there; but a tail must have been written: no -1 left in the first n.
+        for (std::size_t i = 0; i < n; ++i) CHECK(batch.r[i] != T(-1));
+        (void)checked;
+    }
+}
+
+template <class T, std::size_t... I> void check_all_feature_sets(std::index_sequence<I...>)
+{
+    (check_against_scalar<T, batch_feature_sets[I]>(1000 + I), ...);
+}
+
+} // namespace
+
+TEST_CASE_TEMPLATE("shade_batch equals shade point by point, every feature set, every tail length", T, float, double)
+{
+    check_all_feature_sets<T>(std::make_index_sequence<std::size(batch_feature_sets)>{});
+}
+
+TEST_CASE_TEMPLATE("shade_batch stable mode is within the stable bound of the __float128 reference", T, float, double)
+{
+    // Well-conditioned random scenes; the bound is the scalar stable path's target for
+    // well-conditioned inputs (max 64 ulp of the largest channel), widened by the SIMD rsqrt.
+    constexpr features F{.light_ambient = true, .specular = specular_model::phong, .lights = light_kind::any,
+                         .attenuation = attenuation_model::polynomial, .emission = true, .mode = evaluation::stable};
+    constexpr features G{.specular = specular_model::blinn, .lights = light_kind::positional, .mode = evaluation::stable};
+    scene_gen<T> gen(77);
+    double worst = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const scene<T> base = gen.make(F, 3, 1, 200);
+        soa_scene<T> batch;
+        std::vector<scene<T>> points;
+        for (int i = 0; i < 37; ++i) {
+            scene<T> s = base;
+            s.position = gen.point();
+            s.normal = gen.direction();
+            points.push_back(s);
+            batch.add(s.position, s.normal);
+        }
+        batch.template shade<F>(base.mat, base.lights, base.env);
+        soa_scene<T> blinn = batch;
+        blinn.template shade<G>(base.mat, base.lights, base.env);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const scene<T>& s = points[i];
+            const wcolor ref = reference_shade<T>(F, s.position, s.normal, s.mat, s.lights, s.env);
+            const wcolor ref_b = reference_shade<T>(G, s.position, s.normal, s.mat, s.lights, s.env);
+            const wide scale = wmax(wmax(ref.r, ref.g), ref.b), scale_b = wmax(wmax(ref_b.r, ref_b.g), ref_b.b);
+            const bool ok_f = well_conditioned(F, s, 1e-3), ok_g = well_conditioned(G, s, 1e-3);
+            for (int k = 0; k < 3; ++k) {
+                const T got = k == 0 ? batch.r[i] : k == 1 ? batch.g[i] : batch.b[i];
+                const T got_b = k == 0 ? blinn.r[i] : k == 1 ? blinn.g[i] : blinn.b[i];
+                if (ok_f) worst = std::max(worst, double(wabs(wide(got) - ref[k]) / ulp_of<T>(scale)));
+                if (ok_g) worst = std::max(worst, double(wabs(wide(got_b) - ref_b[k]) / ulp_of<T>(scale_b)));
+            }
+        }
+    }
+    MESSAGE("batch stable: worst error " << worst << " ulp of the largest channel");
+    CHECK(worst <= 64);
+}
+
+TEST_CASE_TEMPLATE("shade_batch degenerate lanes: documented finite values, NaN policy", T, float, double)
+{
+    // One batch mixing: a normal point, a zero normal, a light at Q, Blinn l = -v, NaN and inf inputs.
+    constexpr features F{.light_ambient = true, .specular = specular_model::blinn, .lights = light_kind::positional,
+                         .mode = evaluation::stable};
+    constexpr features E = presets::with_mode(F, evaluation::exact);
+    material<T> mat{.ka = glm::vec<3, T>(T(0.5)), .kd = glm::vec<3, T>(T(0.25)), .ks = glm::vec<3, T>(T(1)), .shininess = T(0)};
+    std::array<light<T>, 1> lights{};
+    lights[0].position = {T(0), T(0), T(-2), T(1)};
+    lights[0].ambient = glm::vec<3, T>(T(0.5));
+    environment<T> env{.ambient = glm::vec<3, T>(T(1))};
+    const T inf = std::numeric_limits<T>::infinity(), nan = std::numeric_limits<T>::quiet_NaN();
+    soa_scene<T> s;
+    s.add({T(0), T(0), T(-1)}, {T(0), T(0), T(1)});   // 0: lit from behind the eye's line: light at z=-2 is behind Q (n.l < 0)
+    s.add({T(0), T(0), T(-3)}, {T(0), T(0), T(1)});   // 1: lit head-on: n.l = 1, l = v, m = 0 -> specular 1
+    s.add({T(0), T(0), T(-3)}, {T(0), T(0), T(0)});   // 2: zero normal: ambient only
+    s.add({T(0), T(0), T(-2)}, {T(0), T(0), T(1)});   // 3: light at Q: ambient only
+    s.add({nan, T(0), T(-3)}, {T(0), T(0), T(1)});    // 4: NaN position -> NaN
+    s.add({T(0), T(0), T(-3)}, {T(0), inf, T(1)});    // 5: inf normal -> NaN
+    for (int rep = 0; rep < int(batch_width<T>); ++rep) s.add({T(0), T(0), T(-3)}, {T(0), T(0), T(1)}); // fill a full batch
+    const T ambient_only = T(0.5) * (T(1) + T(0.5)); // ka (La + La_i)
+    for (int mode = 0; mode < 2; ++mode) {
+        if (mode == 0) s.template shade<F>(mat, lights, env);
+        else s.template shade<E>(mat, lights, env);
+        CAPTURE(mode);
+        CHECK(s.r[0] == ambient_only);                                  // n.l = -1: gated
+        CHECK(s.r[1] == doctest::Approx(double(ambient_only + T(0.25) + T(1))).epsilon(1e-6)); // + kd + ks * 1 (m = 0)
+        CHECK(s.r[2] == ambient_only);
+        CHECK(s.r[3] == ambient_only);
+        CHECK(std::isnan(s.r[4]));
+        CHECK(std::isnan(s.g[4]));
+        CHECK(std::isnan(s.b[5]));
+    }
+    // Blinn with l = -v exactly: eye at the origin, Q = (0, 0, -1), light at (0, 0, -2): l = (0, 0, -1), v = (0, 0, 1).
+    // n = (0, 0, -1) faces the light: n.l = 1 > 0, h undefined -> n.h = 0: specular 0 for m > 0, 1 for m = 0.
+    soa_scene<T> opp;
+    for (int i = 0; i < 3; ++i) opp.add({T(0), T(0), T(-1)}, {T(0), T(0), T(-1)});
+    material<T> shiny = mat;
+    shiny.shininess = T(8);
+    opp.template shade<F>(shiny, lights, env);
+    CHECK(opp.r[0] == doctest::Approx(double(ambient_only + T(0.25))).epsilon(1e-6)); // diffuse only
+    opp.template shade<F>(mat, lights, env);
+    CHECK(opp.r[2] == doctest::Approx(double(ambient_only + T(0.25) + T(1))).epsilon(1e-6)); // m = 0: 0^0 = 1
+}
+
+TEST_CASE("shade_batch: width and layer")
+{
+    // The batch type is a real SIMD type when xsimd is available (at least SSE2's 4 float lanes).
+    if (PHONG_HAS_XSIMD) CHECK(batch_width<float> >= 4);
+    CHECK(batch_width<double> * 2 == batch_width<float>);
+    MESSAGE("batch width: " << batch_width<float> << " floats, " << batch_width<double> << " doubles");
+}
