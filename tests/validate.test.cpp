@@ -1,0 +1,192 @@
+// validate(light) and validate(material) (light.hpp, material.hpp, validate.hpp): every rejection
+// listed in their doc comments, the acceptance of valid and documented-degenerate parameters,
+// and the same at compile time.
+#include <phong/light.hpp>
+#include <phong/material.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <string>
+
+namespace {
+template <class T> using vec3 = glm::vec<3, T>;
+template <class T> using vec4 = glm::vec<4, T>;
+template <class T> constexpr T pinf = std::numeric_limits<T>::infinity();
+template <class T> constexpr T qnan = std::numeric_limits<T>::quiet_NaN();
+
+// Rejected, with a message that names `field`.
+template <class X> bool rejected(const X& x, const char* field)
+{
+    const phong::validation r = phong::validate(x);
+    return !static_cast<bool>(r) && std::string(r.message()).find(field) != std::string::npos;
+}
+} // namespace
+
+TEST_CASE_TEMPLATE("validate(light): valid lights are accepted", T, float, double)
+{
+    phong::light<T> L{};
+    CHECK(static_cast<bool>(phong::validate(L)));
+    CHECK(std::string(phong::validate(L).message()) == "ok");
+    CHECK(static_cast<bool>(phong::validate(phong::light<T>::seed000(vec4<T>(1, 2, 3, 1), vec3<T>(0.5)))));
+    L.position = vec4<T>(-4, 5, 6, 1);
+    L.ambient = vec3<T>(0.1);
+    L.attenuation = {T(0), T(0), T(1), T(10)}; // c0 = 0 allowed when c2 > 0
+    L.spot = phong::spot_cone<T>::opengl(vec3<T>(0, -1, 0), T(10), T(45));
+    CHECK(static_cast<bool>(phong::validate(L)));
+    L.spot = phong::spot_cone<T>::smooth(vec3<T>(0, -1, 0), T(10), T(30));
+    CHECK(static_cast<bool>(phong::validate(L)));
+    L.spot.cos_inner = L.spot.cos_outer; // equal cones: a hard edge, allowed
+    CHECK(static_cast<bool>(phong::validate(L)));
+    // Documented: a directional light with xyz = 0 is accepted (contributes its ambient only).
+    phong::light<T> zero{};
+    zero.position = vec4<T>(0);
+    CHECK(static_cast<bool>(phong::validate(zero)));
+    // Cutoff 90 degrees (cos 0) and 0 degrees (cos 1) are the ends of the valid range.
+    zero.spot.cos_cutoff = T(0);
+    CHECK(static_cast<bool>(phong::validate(zero)));
+    zero.spot.cos_cutoff = T(1);
+    CHECK(static_cast<bool>(phong::validate(zero)));
+    // A w other than 0 or 1 but positive is a homogeneous point: accepted.
+    zero.position = vec4<T>(2, 2, 2, 2);
+    CHECK(static_cast<bool>(phong::validate(zero)));
+}
+
+TEST_CASE_TEMPLATE("validate(light): each documented rejection", T, float, double)
+{
+    using light = phong::light<T>;
+    struct bad {
+        const char* field;
+        std::function<void(light&)> spoil;
+    };
+    const bad cases[] = {
+        {"light.position", [](light& L) { L.position.x = qnan<T>; }},
+        {"light.position", [](light& L) { L.position.y = pinf<T>; }},
+        {"light.position", [](light& L) { L.position.w = pinf<T>; }},
+        {"light.position.w", [](light& L) { L.position.w = T(-1); }},
+        {"light.ambient", [](light& L) { L.ambient.r = T(-0.1); }},
+        {"light.ambient", [](light& L) { L.ambient.g = qnan<T>; }},
+        {"light.ambient", [](light& L) { L.ambient.b = pinf<T>; }},
+        {"light.diffuse", [](light& L) { L.diffuse.r = T(-1); }},
+        {"light.diffuse", [](light& L) { L.diffuse.b = qnan<T>; }},
+        {"light.diffuse", [](light& L) { L.diffuse.g = pinf<T>; }},
+        {"light.specular", [](light& L) { L.specular.g = T(-1e-30); }},
+        {"light.specular", [](light& L) { L.specular.r = qnan<T>; }},
+        {"light.specular", [](light& L) { L.specular.b = pinf<T>; }},
+        {"light.attenuation", [](light& L) { L.attenuation.constant = T(-1); }},
+        {"light.attenuation", [](light& L) { L.attenuation.linear = T(-0.5); }},
+        {"light.attenuation", [](light& L) { L.attenuation.quadratic = T(-0.5); }},
+        {"light.attenuation", [](light& L) { L.attenuation.constant = qnan<T>; }},
+        {"light.attenuation", [](light& L) { L.attenuation.linear = pinf<T>; }},
+        {"light.attenuation", [](light& L) { L.attenuation = {T(0), T(0), T(0), pinf<T>}; }}, // all zero
+        {"light.attenuation.range", [](light& L) { L.attenuation.range = T(0); }},
+        {"light.attenuation.range", [](light& L) { L.attenuation.range = T(-3); }},
+        {"light.attenuation.range", [](light& L) { L.attenuation.range = qnan<T>; }},
+        {"light.spot.exponent", [](light& L) { L.spot.exponent = T(-1); }},
+        {"light.spot.exponent", [](light& L) { L.spot.exponent = pinf<T>; }},
+        {"light.spot.exponent", [](light& L) { L.spot.exponent = qnan<T>; }},
+        {"light.spot.cos_cutoff", [](light& L) { L.spot.cos_cutoff = T(-0.5); }}, // 120 degrees
+        {"light.spot.cos_cutoff", [](light& L) { L.spot.cos_cutoff = T(1.5); }},
+        {"light.spot.cos_cutoff", [](light& L) { L.spot.cos_cutoff = qnan<T>; }},
+        {"light.spot", [](light& L) { L.spot.cos_inner = T(1.5); }},
+        {"light.spot", [](light& L) { L.spot.cos_outer = T(-1.5); }},
+        {"light.spot", [](light& L) { L.spot.cos_inner = qnan<T>; }},
+        {"light.spot", [](light& L) { L.spot.cos_inner = T(0.5), L.spot.cos_outer = T(0.9); }}, // outer narrower
+        {"light.spot.direction", [](light& L) { L.spot.direction = vec3<T>(0, 0, -2); }},
+        {"light.spot.direction", [](light& L) { L.spot.direction = vec3<T>(0); }},
+        {"light.spot.direction", [](light& L) { L.spot.direction = vec3<T>(0, 0, T(-1.01)); }},
+        {"light.spot.direction", [](light& L) { L.spot.direction = vec3<T>(qnan<T>, 0, 1); }},
+    };
+    for (const bad& b : cases) {
+        light L = light::seed000(vec4<T>(1, 2, 3, 1), vec3<T>(1));
+        REQUIRE(static_cast<bool>(phong::validate(L)));
+        b.spoil(L);
+        CAPTURE(b.field);
+        CAPTURE(phong::validate(L).message());
+        CHECK(rejected(L, b.field));
+    }
+    // The spot axis tolerance is 1e-3 on the length (documented): 1.0004 passes.
+    light L{};
+    L.spot.direction = vec3<T>(0, 0, T(-1.0004));
+    CHECK(static_cast<bool>(phong::validate(L)));
+}
+
+TEST_CASE_TEMPLATE("validate(material): valid materials are accepted", T, float, double)
+{
+    phong::material<T> m{};
+    CHECK(static_cast<bool>(phong::validate(m)));
+    m.ka = m.kd = m.ks = m.emission = vec3<T>(0);
+    m.shininess = T(0);
+    m.alpha = T(0);
+    CHECK(static_cast<bool>(phong::validate(m)));
+    // Shininess above seed 001's 200 is accepted (documented); coefficients above 1 too (the
+    // doc rejects only negative, NaN or inf).
+    m.shininess = T(1e5);
+    m.kd = vec3<T>(2);
+    m.alpha = T(1);
+    CHECK(static_cast<bool>(phong::validate(m)));
+}
+
+TEST_CASE_TEMPLATE("validate(material): each documented rejection", T, float, double)
+{
+    using material = phong::material<T>;
+    struct bad {
+        const char* field;
+        std::function<void(material&)> spoil;
+    };
+    const bad cases[] = {
+        {"material.ka", [](material& m) { m.ka.r = T(-0.1); }},
+        {"material.ka", [](material& m) { m.ka.g = qnan<T>; }},
+        {"material.ka", [](material& m) { m.ka.b = pinf<T>; }},
+        {"material.kd", [](material& m) { m.kd.r = T(-1); }},
+        {"material.kd", [](material& m) { m.kd.g = qnan<T>; }},
+        {"material.kd", [](material& m) { m.kd.b = pinf<T>; }},
+        {"material.ks", [](material& m) { m.ks.b = T(-1); }},
+        {"material.ks", [](material& m) { m.ks.r = qnan<T>; }},
+        {"material.ks", [](material& m) { m.ks.g = pinf<T>; }},
+        {"material.emission", [](material& m) { m.emission.r = T(-1); }},
+        {"material.emission", [](material& m) { m.emission.g = qnan<T>; }},
+        {"material.emission", [](material& m) { m.emission.b = pinf<T>; }},
+        {"material.shininess", [](material& m) { m.shininess = T(-1); }},
+        {"material.shininess", [](material& m) { m.shininess = qnan<T>; }},
+        {"material.shininess", [](material& m) { m.shininess = pinf<T>; }},
+        {"material.alpha", [](material& m) { m.alpha = T(-0.01); }},
+        {"material.alpha", [](material& m) { m.alpha = T(1.01); }},
+        {"material.alpha", [](material& m) { m.alpha = qnan<T>; }},
+    };
+    for (const bad& b : cases) {
+        material m{};
+        b.spoil(m);
+        CAPTURE(b.field);
+        CAPTURE(phong::validate(m).message());
+        CHECK(rejected(m, b.field));
+    }
+}
+
+// validate is constexpr: the same answers at compile time.
+namespace {
+constexpr phong::light<float> bad_light()
+{
+    phong::light<float> L{};
+    L.attenuation.range = -1.0f;
+    return L;
+}
+constexpr phong::material<double> bad_material()
+{
+    phong::material<double> m{};
+    m.shininess = -2;
+    return m;
+}
+static_assert(static_cast<bool>(phong::validate(phong::light<float>{})));
+static_assert(static_cast<bool>(phong::validate(phong::material<double>{})));
+static_assert(!static_cast<bool>(phong::validate(bad_light())));
+static_assert(!static_cast<bool>(phong::validate(bad_material())));
+} // namespace
+
+TEST_CASE("validate: the compile-time answers name the field")
+{
+    CHECK(std::strstr(phong::validate(bad_light()).message(), "range") != nullptr);
+    CHECK(std::strstr(phong::validate(bad_material()).message(), "shininess") != nullptr);
+}
