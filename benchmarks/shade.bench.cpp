@@ -9,10 +9,16 @@
 #include "support/harness.hpp"
 
 #include <phong/phong.hpp>
+#if __has_include(<phong/batch.hpp>)
+#  include <phong/batch.hpp>
+#  define PHONG_BENCH_BATCH 1
+#endif
 
 #include <benchmark/benchmark.h>
 
+#include <map>
 #include <span>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -78,6 +84,52 @@ void scalar_row(benchmark::State& state, input_set set, std::size_t N, std::size
     report(state, N, K, out, cached_reference(F, set, N, K), published_bound<T>(F, set));
 }
 
+#if defined(PHONG_BENCH_BATCH)
+/// The same points as structure of arrays (built once per input set).
+template <class T>
+struct soa_points {
+    std::vector<T> px, py, pz, nx, ny, nz;
+};
+
+template <class T>
+const soa_points<T>& cached_soa(input_set set, std::size_t N, std::size_t K)
+{
+    static std::map<std::tuple<int, std::size_t, std::size_t>, soa_points<T>> cache;
+    auto [it, fresh] = cache.try_emplace({static_cast<int>(set), N, set == input_set::highlight ? K : 0});
+    if (fresh) {
+        const points<T>& p = cached_points<T>(set, N, K);
+        soa_points<T>& s = it->second;
+        for (std::size_t i = 0; i < N; ++i) {
+            s.px.push_back(p.position[i].x), s.py.push_back(p.position[i].y), s.pz.push_back(p.position[i].z);
+            s.nx.push_back(p.normal[i].x), s.ny.push_back(p.normal[i].y), s.nz.push_back(p.normal[i].z);
+        }
+    }
+    return it->second;
+}
+
+/// phong::shade_batch<F> over SoA spans (SIMD lanes through xsimd).
+template <class T, phong::features F>
+void batch_row(benchmark::State& state, input_set set, std::size_t N, std::size_t K)
+{
+    const scene sc = make_scene(set, K);
+    const soa_points<T>& p = cached_soa<T>(set, N, K);
+    const std::vector<phong::light<T>> lights = lights_of<T>(sc);
+    const phong::material<T> mat = material_of<T>(sc);
+    const phong::environment<T> env = environment_of<T>(sc);
+    std::vector<T> r(N), g(N), b(N);
+    const phong::soa3<T> pos{p.px, p.py, p.pz}, nrm{p.nx, p.ny, p.nz};
+    const phong::soa_rgba<T> out{r, g, b, {}};
+    for (auto _ : state) {
+        phong::shade_batch<F>(pos, nrm, mat, std::span<const phong::light<T>>(lights), out, env);
+        benchmark::DoNotOptimize(r.data());
+        benchmark::ClobberMemory();
+    }
+    std::vector<glm::vec<3, T>> rgb(N);
+    for (std::size_t i = 0; i < N; ++i) rgb[i] = {r[i], g[i], b[i]};
+    report(state, N, K, rgb, cached_reference(F, set, N, K), published_bound<T>(F, set));
+}
+#endif
+
 using row_fn = void (*)(benchmark::State&, input_set, std::size_t, std::size_t);
 
 struct variant {
@@ -101,6 +153,12 @@ std::vector<variant> variants_of()
         {"scalar.exact.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::exact)>},
         {"scalar.stable.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::stable)>},
         {"scalar.stable.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::stable)>},
+#if defined(PHONG_BENCH_BATCH)
+        {"batch.exact.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::exact)>},
+        {"batch.exact.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::exact)>},
+        {"batch.stable.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::stable)>},
+        {"batch.stable.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::stable)>},
+#endif
     };
 }
 

@@ -51,7 +51,7 @@ data& the_data()
         d.normal = pts.normal;
         d.out.assign(N, vec3(0));
         d.positional = phong_bench::lights_of<float>(sc);
-        d.directional = phong_bench::lights_of<float>(sc, true);
+        d.directional = phong_bench::lights_of<float>(sc, phong_bench::light_style::directional);
         d.spot = d.positional;
         for (std::size_t i = 0; i < K; ++i) {
             d.positional[i].attenuation = {1.0f, 0.09f, 0.032f}; // read only by the attenuation kernels

@@ -51,19 +51,19 @@ inline std::vector<std::size_t> sample_indices(std::size_t N)
 /// run-time value; phong's features is a plain aggregate). Inputs are the double ones, which equal
 /// the float ones exactly, so float and double rows share it.
 inline const std::vector<phong_test::wcolor>& cached_reference(phong::features F, input_set set, std::size_t N,
-                                                               std::size_t K, bool directional = false)
+                                                               std::size_t K, light_style style = light_style::plain)
 {
     F.mode = phong::evaluation::exact; // the reference is the model itself, whatever the mode
-    using key_t = std::tuple<std::string, int, std::size_t, std::size_t, bool>;
+    using key_t = std::tuple<std::string, int, std::size_t, std::size_t, int>;
     static std::map<key_t, std::vector<phong_test::wcolor>> cache;
     // features has no operator<; its bytes are a fine key (a structural aggregate of enums and bools).
     const std::string fkey(reinterpret_cast<const char*>(&F), sizeof F);
-    const key_t key{fkey, static_cast<int>(set), N, K, directional};
+    const key_t key{fkey, static_cast<int>(set), N, K, static_cast<int>(style)};
     auto it = cache.find(key);
     if (it != cache.end()) return it->second;
 
     const scene sc = make_scene(set, K);
-    const std::vector<phong::light<double>> lights = lights_of<double>(sc, directional);
+    const std::vector<phong::light<double>> lights = lights_of<double>(sc, style);
     const phong::material<double> mat = material_of<double>(sc);
     const phong::environment<double> env = environment_of<double>(sc);
     std::vector<phong_test::wcolor> ref;

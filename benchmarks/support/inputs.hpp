@@ -181,20 +181,32 @@ phong::material<T> material_of(const scene& s)
     return m;
 }
 
-/// The scene's lights as phong lights. `directional`: w = 0, xyz the direction toward the light
-/// seen from the sphere's centre (the directional limit of the same light).
+/// How a scene's lights are handed to phong. `plain`: positional, no attenuation, no spot (the
+/// seed 003 model). `directional`: w = 0, xyz the direction toward the light seen from the
+/// sphere's centre (the directional limit of the same light). `attenuated_spot`: positional with
+/// OpenGL attenuation (1, 0.09, 0.032) and a spot cone (exponent 8, cutoff 60 degrees) aimed at
+/// the sphere's centre, for the feature presets.
+enum class light_style { plain, directional, attenuated_spot };
+
 template <class T>
-std::vector<phong::light<T>> lights_of(const scene& s, bool directional = false)
+std::vector<phong::light<T>> lights_of(const scene& s, light_style style = light_style::plain)
 {
     std::vector<phong::light<T>> out;
     for (std::size_t i = 0; i < s.light_position.size(); ++i) {
         phong::light<T> L;
         glm::dvec4 p = s.light_position[i];
-        if (directional) p = glm::dvec4(to_float_grid(glm::normalize(dvec3(p) - dvec3(0, 0, -4))), 0);
+        if (style == light_style::directional) p = glm::dvec4(to_float_grid(glm::normalize(dvec3(p) - dvec3(0, 0, -4))), 0);
         L.position = glm::vec<4, T>(p);
         L.ambient = glm::vec<3, T>(s.light_ambient[i]);
         L.diffuse = glm::vec<3, T>(s.light_diffuse[i]);
         L.specular = glm::vec<3, T>(s.light_specular[i]);
+        if (style == light_style::attenuated_spot) {
+            // Float-grid values, so the float and double lights are the same numbers.
+            L.attenuation = {T(1), T(0.09f), T(0.032f)};
+            L.spot.direction = glm::vec<3, T>(to_float_grid(s.spot_axis[i]));
+            L.spot.exponent = T(8);
+            L.spot.cos_cutoff = T(0.5); // 60 degrees
+        }
         out.push_back(L);
     }
     return out;
