@@ -27,13 +27,14 @@ template <class T> T ce_log(T x) { return static_cast<T>(phong::detail::ce::log(
 template <class T> T ce_log1p(T x) { return static_cast<T>(phong::detail::ce::log1p(x)); }
 template <class T> T ce_pow(T x, T y) { return static_cast<T>(phong::detail::ce::pow(x, y)); }
 
-// log(1 + x) in the wide type: exact 1 + x when it fits in the wide significand, else the series.
+// log(1 + x) in the wide type.
 wide wlog1p(wide x)
 {
-    if (wabs(x) > wide(1e-4)) return wlog(1 + x);
-    wide term = x, sum = 0;
-    for (int k = 1; k < 30; ++k, term *= -x) sum += term / k;
-    return sum;
+#if defined(PHONG_HAVE_QUADMATH)
+    return log1pq(x);
+#else
+    return std::log1p(x);
+#endif
 }
 
 } // namespace
