@@ -85,14 +85,16 @@ struct spot_cone {
 };
 
 /// OpenGL spot factor for the unit light direction l (from Q toward the light) and unit axis s:
-///   c = dot(-l, s);  spot = c >= cos_cutoff ? max(c, 0)^e : 0;  cos_cutoff = -1 (180 deg) gives 1.
+///   c = dot(-l, s);  spot = c >= cos_cutoff ? clamp(c, 0, 1)^e : 0;  cos_cutoff = -1 (180 deg) gives 1.
 /// Pre: l, s unit; e >= 0. Edge: l = 0 (light at Q) gives c = 0: inside only for a 90 degree
-/// cutoff, then 0^e (1 for e = 0). e = 0 gives a hard-edged cone of strength 1.
+/// cutoff, then 0^e (1 for e = 0). e = 0 gives a hard-edged cone of strength 1. spot <= 1: the
+/// base is clamped at 1, since rounding (or an axis accepted by validate within 1e-3 of unit
+/// length) can give c slightly above 1, and (1 + eps)^e overflows for large e.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
 {
     const T c = -phong::dot(l, s);
-    const T inside = phong::select(c >= cos_cutoff, phong::pow(phong::max(c, T(0)), exponent), T(0));
+    const T inside = phong::select(c >= cos_cutoff, phong::pow(phong::clamp(c, T(0), T(1)), exponent), T(0));
     return phong::select(cos_cutoff <= T(-1), T(1), inside);
 }
 
