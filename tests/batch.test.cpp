@@ -229,6 +229,40 @@ TEST_CASE_TEMPLATE("shade_batch degenerate lanes: documented finite values, NaN 
     CHECK(opp.r[2] == doctest::Approx(double(ambient_only + T(0.25) + T(1))).epsilon(1e-6)); // m = 0: 0^0 = 1
 }
 
+TEST_CASE_TEMPLATE("shade_batch: per-point materials and interleaved output equal the SoA path", T, float, double)
+{
+    constexpr features F{.light_ambient = true, .specular = specular_model::blinn, .lights = light_kind::any,
+                         .attenuation = attenuation_model::polynomial, .emission = true, .alpha = true,
+                         .mode = evaluation::stable};
+    scene_gen<T> gen(4242);
+    const scene<T> base = gen.make(F, 3);
+    const std::size_t n = 2 * batch_width<T> + 3;
+    soa_scene<T> pts;
+    std::vector<material<T>> mats;
+    for (std::size_t i = 0; i < n; ++i) {
+        pts.add(gen.point(), gen.direction());
+        mats.push_back(gen.material(1, 100));
+    }
+    const soa3<T> P{pts.px, pts.py, pts.pz}, N{pts.nx, pts.ny, pts.nz};
+    std::vector<T> r(n), g(n), b(n), a(n);
+    shade_batch<F>(P, N, std::span<const material<T>>(mats), std::span<const light<T>>(base.lights),
+                   soa_rgba<T>{r, g, b, a}, base.env);
+    std::vector<glm::vec<4, T>> interleaved(n);
+    shade_batch<F>(P, N, std::span<const material<T>>(mats), std::span<const light<T>>(base.lights),
+                   std::span<glm::vec<4, T>>(interleaved), base.env);
+    for (std::size_t i = 0; i < n; ++i) {
+        // Per-point material: each lane equals the same point shaded alone with its own material.
+        soa_scene<T> one;
+        one.add({pts.px[i], pts.py[i], pts.pz[i]}, {pts.nx[i], pts.ny[i], pts.nz[i]});
+        one.template shade<F>(mats[i], base.lights, base.env);
+        CHECK(r[i] == one.r[0]);
+        CHECK(g[i] == one.g[0]);
+        CHECK(b[i] == one.b[0]);
+        CHECK(a[i] == mats[i].alpha);
+        CHECK(interleaved[i] == glm::vec<4, T>(r[i], g[i], b[i], a[i]));
+    }
+}
+
 TEST_CASE("shade_batch: width and layer")
 {
     // The batch type is a real SIMD type when xsimd is available (at least SSE2's 4 float lanes).

@@ -11,6 +11,7 @@
 
 #include "shade.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -175,98 +176,193 @@ template <class V, class T> void store(const V& v, T* p)
     else v.store_unaligned(p);
 }
 
-/// Shades lanes [i, i + width) of the input: loads, runs the scalar templates on V, stores.
-template <features F, class V, class T, glm::qualifier Q>
-void shade_lanes(const T* px, const T* py, const T* pz, const T* nx, const T* ny, const T* nz, const bool* front,
-                 const material<V, Q>& mat, std::span<const light<V, Q>> lights, const environment<V, Q>& env,
-                 T* r, T* g, T* b, T* a)
+/// Gathers the materials of `count` consecutive points into one material of lanes (the last one
+/// repeated past count).
+template <class V, class T, glm::qualifier Q>
+material<V, Q> gather(const material<T, Q>* m, std::size_t count)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
-    const glm::vec<3, V, Q> position(load<V>(px), load<V>(py), load<V>(pz));
-    const glm::vec<3, V, Q> normal(load<V>(nx), load<V>(ny), load<V>(nz));
-    mask_t<V> front_facing(true);
-    if constexpr (F.two_sided == facing::flag) {
-        if (front != nullptr) {
-            alignas(64) T lanes[W];
-            for (std::size_t k = 0; k < W; ++k) lanes[k] = front[k] ? T(1) : T(0);
-            front_facing = load<V>(lanes) > V(0);
+    alignas(64) T lane[14][W];
+    for (std::size_t k = 0; k < W; ++k) {
+        const material<T, Q>& mk = m[k < count ? k : count - 1];
+        for (int c = 0; c < 3; ++c) {
+            lane[c][k] = mk.ka[c];
+            lane[3 + c][k] = mk.kd[c];
+            lane[6 + c][k] = mk.ks[c];
+            lane[9 + c][k] = mk.emission[c];
+        }
+        lane[12][k] = mk.shininess;
+        lane[13][k] = mk.alpha;
+    }
+    material<V, Q> out;
+    for (int c = 0; c < 3; ++c) {
+        out.ka[c] = load<V>(lane[c]);
+        out.kd[c] = load<V>(lane[3 + c]);
+        out.ks[c] = load<V>(lane[6 + c]);
+        out.emission[c] = load<V>(lane[9 + c]);
+    }
+    out.shininess = load<V>(lane[12]);
+    out.alpha = load<V>(lane[13]);
+    return out;
+}
+
+/// One batch step: shade_batch's kernel over `count` <= W points starting at index i. Loads
+/// straight from the spans when the step is full, through padded copies for the tail.
+template <features F, class V, class T, glm::qualifier Q, class Materials, class Output>
+void shade_step(std::size_t i, std::size_t count, const soa3<T>& positions, const soa3<T>& normals,
+                const Materials& materials, const material<V, Q>& shared_mat, std::span<const light<V, Q>> lights,
+                const environment<V, Q>& env, std::span<const bool> front_facing, const Output& out)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
+    constexpr bool per_point_material = !std::is_same_v<Materials, material<T, Q>>;
+    const std::span<const T> in[6] = {positions.x, positions.y, positions.z, normals.x, normals.y, normals.z};
+    V lanes[6];
+    if (count == W) {
+        for (int c = 0; c < 6; ++c) lanes[c] = load<V>(in[c].data() + i);
+    } else {
+        // Tail: padded with a harmless point, Q = (0, 0, -1) with n = (0, 0, 1) facing the eye.
+        alignas(64) T buf[W];
+        for (int c = 0; c < 6; ++c) {
+            const T pad = c == 2 ? T(-1) : c == 5 ? T(1) : T(0);
+            for (std::size_t k = 0; k < W; ++k) buf[k] = k < count ? in[c][i + k] : pad;
+            lanes[c] = load<V>(buf);
         }
     }
-    const surface_frame<V, Q> s = prepare<F>(position, normal, env, front_facing);
+    mask_t<V> front(true);
+    if constexpr (F.two_sided == facing::flag) {
+        if (!front_facing.empty()) {
+            alignas(64) T buf[W];
+            for (std::size_t k = 0; k < W; ++k) buf[k] = k < count && !front_facing[i + k] ? T(0) : T(1);
+            front = load<V>(buf) > V(T(0));
+        }
+    }
+    material<V, Q> gathered;
+    if constexpr (per_point_material) gathered = gather<V>(materials.data() + i, count);
+    const material<V, Q>& mat = per_point_material ? gathered : shared_mat;
+
+    const surface_frame<V, Q> s = prepare<F>(glm::vec<3, V, Q>(lanes[0], lanes[1], lanes[2]),
+                                             glm::vec<3, V, Q>(lanes[3], lanes[4], lanes[5]), env, front);
     light_sums<V, Q> sums{};
     for (const light<V, Q>& L : lights) add_light<F>(sums, s, L, mat.shininess);
-    const auto c = finish<F>(sums, s, mat, env);
-    store(c.x, r);
-    store(c.y, g);
-    store(c.z, b);
-    if constexpr (F.alpha) store(c.w, a);
+    const color<F, V, Q> c = finish<F>(sums, s, mat, env);
+
+    constexpr int channels = F.alpha ? 4 : 3;
+    if constexpr (std::is_same_v<Output, soa_rgba<T>>) {
+        T* dst[4] = {out.r.data(), out.g.data(), out.b.data(), F.alpha ? out.a.data() : nullptr};
+        for (int ch = 0; ch < channels; ++ch) {
+            if (count == W) {
+                store(c[ch], dst[ch] + i);
+            } else {
+                alignas(64) T buf[W];
+                store(c[ch], buf);
+                for (std::size_t k = 0; k < count; ++k) dst[ch][i + k] = buf[k];
+            }
+        }
+    } else {
+        // Interleaved rgb(a): transpose through a small buffer.
+        alignas(64) T buf[4][W];
+        for (int ch = 0; ch < channels; ++ch) store(c[ch], buf[ch]);
+        for (std::size_t k = 0; k < count; ++k)
+            for (int ch = 0; ch < channels; ++ch) out[i + k][ch] = buf[ch][k];
+    }
+}
+
+template <features F, class T, glm::qualifier Q, class Materials, class Output>
+void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Materials& materials,
+                      std::span<const light<T, Q>> lights, const Output& out, const environment<T, Q>& env,
+                      std::span<const bool> front_facing)
+{
+    using V = simd_batch<T>;
+    constexpr std::size_t W = batch_width<T>;
+    constexpr bool per_point_material = !std::is_same_v<Materials, material<T, Q>>;
+    const std::size_t n = positions.x.size();
+    [[maybe_unused]] std::size_t out_size = 0;
+    if constexpr (std::is_same_v<Output, soa_rgba<T>>)
+        out_size = std::min({out.r.size(), out.g.size(), out.b.size(), F.alpha ? out.a.size() : out.r.size()});
+    else
+        out_size = out.size();
+    PHONG_ASSERT(positions.y.size() == n && positions.z.size() == n && normals.x.size() == n &&
+                     normals.y.size() == n && normals.z.size() == n && out_size >= n,
+                 "shade_batch: spans of different lengths");
+    PHONG_ASSERT(front_facing.empty() || front_facing.size() == n, "shade_batch: front_facing length");
+    if constexpr (per_point_material) {
+        PHONG_ASSERT(materials.size() == n, "shade_batch: one material per point");
+#if !defined(NDEBUG)
+        for (const material<T, Q>& m : materials) PHONG_ASSERT(static_cast<bool>(validate(m)), validate(m).message());
+#endif
+    } else {
+        PHONG_ASSERT(static_cast<bool>(validate(materials)), validate(materials).message());
+    }
+#if !defined(NDEBUG)
+    for (const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
+#endif
+
+    // Lights, a shared material and the environment are the same for every lane: broadcast once.
+    std::vector<light<V, Q>> lane_lights;
+    lane_lights.reserve(lights.size());
+    for (const light<T, Q>& L : lights) lane_lights.push_back(splat<V>(L));
+    material<V, Q> shared{};
+    if constexpr (!per_point_material) shared = splat<V>(materials);
+    const environment<V, Q> lane_env{splat<V>(env.ambient), splat<V>(env.eye)};
+    const std::span<const light<V, Q>> lane_span(lane_lights);
+
+    std::size_t i = 0;
+    for (; i + W <= n; i += W)
+        shade_step<F, V>(i, W, positions, normals, materials, shared, lane_span, lane_env, front_facing, out);
+    if (i < n) shade_step<F, V>(i, n - i, positions, normals, materials, shared, lane_span, lane_env, front_facing, out);
 }
 
 } // namespace detail
 
 /// Shades N points at once: out[i] = shade<F>(position[i], normal[i], mat, lights, env,
-/// front_facing[i]) for every i, written to the SoA channels out.r, out.g, out.b (and out.a when
-/// F.alpha). The kernels are shade<F>'s own templates run on simd_batch<T> (batch_width<T> points
-/// per step); a tail shorter than the width is shaded through a padded copy. Results agree with
-/// the scalar shade<F> within the published bound of F.mode (phong/accuracy.hpp; SIMD exp/log1p
-/// and the compiler's contraction of a*b+c differ by a few ulp).
-/// Pre: every span has the same length N (front_facing: N or empty = all front-facing; read only
-/// for facing::flag); validate(mat) and validate(L) for every light (debug assertion).
-/// Edges and NaN policy: as shade<F>, point by point.
+/// front_facing[i]) for every i. The kernels are shade<F>'s own templates (detail::prepare,
+/// add_light, finish) run on simd_batch<T>, batch_width<T> points per step; a tail shorter than
+/// the width goes through padded copies. Lights, material and environment are broadcast to the
+/// lanes once per call.
+///   positions, normals: structure of arrays (x, y, z spans of length N), as shade<F> takes them;
+///   mat: one material for all points, or a span of N materials (one per point);
+///   out: SoA channels (soa_rgba: r, g, b, and a when F.alpha), or a span of N interleaved
+///        colours (std::span<color<F, T>>: glm::vec3, or glm::vec4 when F.alpha);
+///   front_facing: N flags, read only for facing::flag; empty means all front-facing.
+/// Pre: spans of length N (out may be longer); validate(material) and validate(L) (debug
+/// assertions). Edges and NaN policy: those of shade<F>, point by point.
+/// Accuracy: within the published bound of F.mode (phong/accuracy.hpp), tested against the
+/// __float128 reference; against the scalar shade<F> the results differ by the SIMD rsqrt
+/// estimate (< 2 ulp, float lanes) and the exp/log implementations, amplified by the exponent m in
+/// exact mode (by about sqrt(m) in stable mode).
 template <features F, class T, glm::qualifier Q = glm::defaultp>
 void shade_batch(const soa3<T>& positions, const soa3<T>& normals, const material<T, Q>& mat,
                  std::span<const light<T, Q>> lights, const soa_rgba<T>& out, const environment<T, Q>& env = {},
                  std::span<const bool> front_facing = {})
 {
-    using V = simd_batch<T>;
-    constexpr std::size_t W = batch_width<T>;
-    const std::size_t n = positions.x.size();
-    PHONG_ASSERT(positions.y.size() == n && positions.z.size() == n && normals.x.size() == n &&
-                     normals.y.size() == n && normals.z.size() == n && out.r.size() >= n && out.g.size() >= n &&
-                     out.b.size() >= n && (!F.alpha || out.a.size() >= n),
-                 "shade_batch: spans of different lengths");
-    PHONG_ASSERT(front_facing.empty() || front_facing.size() == n, "shade_batch: front_facing length");
-    PHONG_ASSERT(static_cast<bool>(validate(mat)), validate(mat).message());
-    for ([[maybe_unused]] const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
+    detail::shade_batch_impl<F>(positions, normals, mat, lights, out, env, front_facing);
+}
 
-    // Lights, material and environment are the same for every lane: broadcast them once per call.
-    std::vector<light<V, Q>> lanes_lights;
-    lanes_lights.reserve(lights.size());
-    for (const light<T, Q>& L : lights) lanes_lights.push_back(detail::splat<V>(L));
-    const material<V, Q> lanes_mat = detail::splat<V>(mat);
-    const environment<V, Q> lanes_env{detail::splat<V>(env.ambient), detail::splat<V>(env.eye)};
-    const bool* front = front_facing.empty() ? nullptr : front_facing.data();
-    T* const a = F.alpha ? out.a.data() : nullptr;
+/// shade_batch with one material per point (materials.size() == N).
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+void shade_batch(const soa3<T>& positions, const soa3<T>& normals, std::span<const material<T, Q>> materials,
+                 std::span<const light<T, Q>> lights, const soa_rgba<T>& out, const environment<T, Q>& env = {},
+                 std::span<const bool> front_facing = {})
+{
+    detail::shade_batch_impl<F>(positions, normals, materials, lights, out, env, front_facing);
+}
 
-    std::size_t i = 0;
-    for (; i + W <= n; i += W)
-        detail::shade_lanes<F>(positions.x.data() + i, positions.y.data() + i, positions.z.data() + i,
-                               normals.x.data() + i, normals.y.data() + i, normals.z.data() + i,
-                               front ? front + i : nullptr, lanes_mat, std::span<const light<V, Q>>(lanes_lights),
-                               lanes_env, out.r.data() + i, out.g.data() + i, out.b.data() + i, a ? a + i : nullptr);
-    if (i < n) {
-        // Tail: copy into full-width buffers padded with a harmless point (Q = (0, 0, -1) facing the eye).
-        alignas(64) T buf[10][W];
-        bool front_buf[W];
-        for (std::size_t k = 0; k < W; ++k) {
-            const bool real = i + k < n;
-            buf[0][k] = real ? positions.x[i + k] : T(0);
-            buf[1][k] = real ? positions.y[i + k] : T(0);
-            buf[2][k] = real ? positions.z[i + k] : T(-1);
-            buf[3][k] = real ? normals.x[i + k] : T(0);
-            buf[4][k] = real ? normals.y[i + k] : T(0);
-            buf[5][k] = real ? normals.z[i + k] : T(1);
-            front_buf[k] = real && front ? front[i + k] : true;
-        }
-        detail::shade_lanes<F>(buf[0], buf[1], buf[2], buf[3], buf[4], buf[5], front_buf, lanes_mat,
-                               std::span<const light<V, Q>>(lanes_lights), lanes_env, buf[6], buf[7], buf[8], buf[9]);
-        for (std::size_t k = 0; i + k < n; ++k) {
-            out.r[i + k] = buf[6][k];
-            out.g[i + k] = buf[7][k];
-            out.b[i + k] = buf[8][k];
-            if constexpr (F.alpha) out.a[i + k] = buf[9][k];
-        }
-    }
+/// shade_batch writing interleaved colours (rgb, or rgba when F.alpha), one material for all.
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+void shade_batch(const soa3<T>& positions, const soa3<T>& normals, const material<T, Q>& mat,
+                 std::span<const light<T, Q>> lights, std::span<color<F, T, Q>> out, const environment<T, Q>& env = {},
+                 std::span<const bool> front_facing = {})
+{
+    detail::shade_batch_impl<F>(positions, normals, mat, lights, out, env, front_facing);
+}
+
+/// shade_batch writing interleaved colours, one material per point.
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+void shade_batch(const soa3<T>& positions, const soa3<T>& normals, std::span<const material<T, Q>> materials,
+                 std::span<const light<T, Q>> lights, std::span<color<F, T, Q>> out, const environment<T, Q>& env = {},
+                 std::span<const bool> front_facing = {})
+{
+    detail::shade_batch_impl<F>(positions, normals, materials, lights, out, env, front_facing);
 }
 
 } // namespace phong
