@@ -81,10 +81,9 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> cube_normal(const glm::vec<3, T, Q>& p)
 {
     const T ax = phong::abs(p.x), ay = phong::abs(p.y), az = phong::abs(p.z);
-    const auto sign = [](T x) { return x < T(0) ? T(-1) : T(1); };
-    if (ax >= ay && ax >= az) return {sign(p.x), T(0), T(0)};
-    if (ay >= az) return {T(0), sign(p.y), T(0)};
-    return {T(0), T(0), sign(p.z)};
+    if (ax >= ay && ax >= az) return {p.x < T(0) ? T(-1) : T(1), T(0), T(0)};
+    if (ay >= az) return {T(0), p.y < T(0) ? T(-1) : T(1), T(0)};
+    return {T(0), T(0), p.z < T(0) ? T(-1) : T(1)};
 }
 
 // ---- ray intersection in generic coordinates ----------------------------------------------
