@@ -7,6 +7,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <limits>
+
 namespace phong {
 
 /// The result of validate(...): empty when the parameters are in the model's domain, else the
@@ -19,7 +21,12 @@ struct validation {
 
 namespace detail {
 
-template <class T> PHONG_HD constexpr bool finite(T x) { return x == x && x - x == T(0); }
+// Comparisons only: inf - inf (the usual x - x == 0 test) is not a constant expression, so that
+// test made validate() unusable in constant evaluation for infinite parameters. NaN compares false.
+template <class T> PHONG_HD constexpr bool finite(T x)
+{
+    return x >= std::numeric_limits<T>::lowest() && x <= std::numeric_limits<T>::max();
+}
 template <class T> PHONG_HD constexpr bool finite_non_negative(T x) { return finite(x) && x >= T(0); }
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr bool finite_non_negative(const glm::vec<L, T, Q>& v)
