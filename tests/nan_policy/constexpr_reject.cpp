@@ -1,0 +1,48 @@
+// Compile-time half of the NaN / bad-input policy: shade() in constant evaluation with parameters
+// that validate() rejects must not compile, and the compiler must name
+// phong::detail::precondition_failed_see_phong_validate (detail/config.hpp). Compiled once per case
+// by ctest (tests/nan_policy/checks.cmake) with -DPHONG_REJECT_CASE=N; case 0 is the valid control,
+// which must compile cleanly (so a failure of the others is not a broken command line).
+#include <phong/phong.hpp>
+
+#include <array>
+#include <limits>
+
+#ifndef PHONG_REJECT_CASE
+#  error "define PHONG_REJECT_CASE"
+#endif
+
+using namespace phong;
+
+constexpr material<double> make_material()
+{
+    material<double> m{};
+#if PHONG_REJECT_CASE == 1
+    m.kd.y = -0.5; // negative reflectivity
+#elif PHONG_REJECT_CASE == 2
+    m.shininess = std::numeric_limits<double>::quiet_NaN();
+#elif PHONG_REJECT_CASE == 3
+    m.alpha = 1.5;
+#endif
+    return m;
+}
+
+constexpr light<double> make_light()
+{
+    light<double> L = light<double>::seed000({1, 2, 3, 1}, {1, 1, 1});
+#if PHONG_REJECT_CASE == 4
+    L.attenuation.constant = -1; // negative attenuation coefficient
+#elif PHONG_REJECT_CASE == 5
+    L.spot.direction = {0, 0, 2}; // spot axis not unit length
+#elif PHONG_REJECT_CASE == 6
+    L.position.w = -1;
+#elif PHONG_REJECT_CASE == 7
+    L.diffuse.x = std::numeric_limits<double>::infinity();
+#endif
+    return L;
+}
+
+constexpr std::array<light<double>, 1> lights{make_light()};
+constexpr features F{.attenuation = attenuation_model::polynomial, .spot = spot_model::opengl};
+constexpr glm::dvec3 rgb = shade<F>(glm::dvec3(0, 0, -5), glm::dvec3(0, 0, 1), make_material(), lights, environment<double>{});
+static_assert(rgb.x >= 0);
