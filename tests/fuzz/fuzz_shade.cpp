@@ -110,8 +110,11 @@ glm::vec<L, T> vec(reader& in, bool signed_grid = false)
     return v;
 }
 
+/// Flags byte: bits 0-1 w (0, 1, or a scalar), bit 2 range = inf, bit 3 normalize the spot axis,
+/// bit 4 cos_cutoff = -1, bit 5 aim the spot axis exactly at Q (so that c = -l.s is 1 up to
+/// rounding), bit 6 (with bit 5) scale the aimed axis by 1 + 2^-11 (inside validate's tolerance).
 template <class T>
-phong::light<T> decode_light(reader& in)
+phong::light<T> decode_light(reader& in, const glm::vec<3, T>& Q)
 {
     phong::light<T> L;
     const std::uint8_t flags = in.byte();
@@ -128,6 +131,11 @@ phong::light<T> decode_light(reader& in)
     glm::vec<3, T> axis = vec<3, T>(in, true);
     if (flags & 8) { // normalized in long double and rounded once: unit within rounding
         const wide a = axis.x, b = axis.y, c = axis.z, len = std::sqrt(a * a + b * b + c * c);
+        if (std::isfinite(len) && len > 0) axis = glm::vec<3, T>(T(a / len), T(b / len), T(c / len));
+    }
+    if (flags & 32) { // axis = normalize(Q - L.xyz), in long double, rounded once
+        const wide a = wide(Q.x) - wide(xyz.x), b = wide(Q.y) - wide(xyz.y), c = wide(Q.z) - wide(xyz.z);
+        const wide len = std::sqrt(a * a + b * b + c * c) / ((flags & 64) ? 1 + std::ldexp(wide(1), -11) : wide(1));
         if (std::isfinite(len) && len > 0) axis = glm::vec<3, T>(T(a / len), T(b / len), T(c / len));
     }
     L.spot.direction = axis;
@@ -469,7 +477,7 @@ void run(reader& in, std::uint8_t selector)
     s.mat.emission = vec<3, T>(in);
     s.mat.shininess = scalar<T>(in);
     s.mat.alpha = scalar<T>(in);
-    for (std::size_t i = 0; i < s.count; ++i) s.lights[i] = decode_light<T>(in);
+    for (std::size_t i = 0; i < s.count; ++i) s.lights[i] = decode_light<T>(in, s.position);
 
     current<T> = &s;
     current_features = selector & 0x0f;

@@ -21,14 +21,14 @@ def cvec(*vs):
     return b"".join(c(v) for v in vs)
 
 def light(flags, xyz, w=None, amb=(0, 0, 0), dif=(1, 1, 1), spe=(1, 1, 1), att=(1, 0, 0), rng=None,
-          axis=(0, 0, -1), exponent=0, cutoff=None, inner=-1, outer=-1):
+          axis=(0, 0, -1), exponent=0, cutoff=None, inner=-1, outer=-1, exponent_tag=None):
     out = bytes([flags]) + cvec(*xyz)
     if flags & 3 >= 2:
         out += g(w)
     out += vec(*amb) + vec(*dif) + vec(*spe) + vec(*att)
     if not flags & 4:
         out += g(rng)
-    out += cvec(*axis) + g(exponent)
+    out += cvec(*axis) + (bytes([exponent_tag]) if exponent_tag is not None else g(exponent))
     if not flags & 16:
         out += c(cutoff)
     return out + c(inner) + c(outer)
@@ -49,6 +49,12 @@ seeds = {}
 for sel in range(16):
     for typ in (0, 0x10):
         seeds[f"scene_{sel:02d}_{'d' if typ else 'f'}"] = scene(sel | typ | 0x20, [positional, directional, spot])
+# Spot axes aimed exactly at the point (flag 32; 64 scales the axis by 1 + 2^-11), exponent 1e30
+# (special value 22, tag 0x36): c = -l.s rounds to 1 or just above.
+aimed = light(1 | 4 | 32, (1, 11, -2), axis=(0, 0, 0), exponent_tag=0x36, cutoff=0.5)
+aimed_long = light(1 | 4 | 32 | 64, (3, 1, 2), axis=(0, 0, 0), exponent_tag=0x36, cutoff=0.5)
+seeds["aimed_spot_f"] = scene(0x2B, [aimed, aimed_long])
+seeds["aimed_spot_d"] = scene(0x3B, [aimed, aimed_long])
 seeds["eight_lights"] = scene(0x2C, [positional, directional, spot, windowed, homog, at_point, spot, positional])
 seeds["light_at_point"] = scene(0x21, [at_point])
 seeds["zero_normal"] = scene(0x22, [positional], n=(0, 0, 0))
