@@ -270,3 +270,64 @@ TEST_CASE("shade_batch: width and layer")
     CHECK(batch_width<double> * 2 == batch_width<float>);
     MESSAGE("batch width: " << batch_width<float> << " floats, " << batch_width<double> << " doubles");
 }
+
+#if PHONG_HAS_XSIMD
+TEST_CASE("batch lane kernels: log, exp, pow and (1 - x)^m within their published bounds")
+{
+    using V = simd_batch<float>;
+    constexpr std::size_t W = batch_width<float>;
+    namespace lanes = phong::detail::lanes;
+    double worst_log = 0, worst_exp = 0, worst_pow = 0, worst_pow1m = 0;
+    alignas(64) float in[W], in2[W], out[W];
+    // log_normal on [2^-126, 2]: every exponent, 64 mantissas each, plus the ends.
+    std::vector<float> logs{1.17549435e-38f, 2.0f, 1.0f, std::nextafter(1.0f, 0.0f), std::nextafter(1.0f, 2.0f),
+                            0.70710677f, 0.70710683f, 1.41421354f};
+    for (int e = -126; e <= 0; ++e)
+        for (int k = 0; k < 64; ++k) logs.push_back(std::ldexp(1.0f + float(k) / 64.0f + 1e-4f * float(k % 7), e));
+    for (std::size_t i = 0; i < logs.size(); i += W) {
+        for (std::size_t k = 0; k < W; ++k) in[k] = logs[std::min(i + k, logs.size() - 1)];
+        lanes::log_normal(V::load_aligned(in)).store_aligned(out);
+        for (std::size_t k = 0; k < W; ++k) worst_log = std::max(worst_log, error_ulp<float>(out[k], wlog(wide(in[k]))));
+    }
+    // exp_nonpositive on [-87.33, 0]: a fine grid.
+    for (int j = 0; j <= 873365; j += 7) {
+        for (std::size_t k = 0; k < W; ++k) in[k] = -float(j + int(k)) * 1e-4f;
+        lanes::exp_nonpositive(V::load_aligned(in)).store_aligned(out);
+        for (std::size_t k = 0; k < W; ++k)
+            if (in[k] >= -87.3365f) worst_exp = std::max(worst_exp, error_ulp<float>(out[k], wexp(wide(in[k]))));
+    }
+    // pow_unit and pow_one_minus: the error of exp(y) grows with |y| (the rounding of y = m ln b
+    // is amplified by |y|): checked against lanes::pow_max_ulp(y).
+    scene_gen<float> gen(99);
+    for (int trial = 0; trial < 4000; ++trial) {
+        for (std::size_t k = 0; k < W; ++k) {
+            in[k] = gen.coin(0.1) ? float(gen.integer(0, 1)) : gen.uniform(0, 1) * (gen.coin() ? 1.0f : 1e-3f);
+            in2[k] = gen.coin(0.05) ? 0.0f : gen.uniform(0, 300);
+        }
+        lanes::pow_unit(V::load_aligned(in), V::load_aligned(in2)).store_aligned(out);
+        for (std::size_t k = 0; k < W; ++k) {
+            const wide b = in[k], m = in2[k];
+            const wide ref = m == 0 ? wide(1) : (b == 0 ? wide(0) : wpow(b, m));
+            const double y = double(m == 0 || b == 0 ? wide(0) : m * wlog(b));
+            if (y < -87.34) { CHECK(out[k] == 0.0f); continue; } // flushed
+            if (y < -87.0) continue;                               // at the flush threshold either is right
+            worst_pow = std::max(worst_pow, error_ulp<float>(out[k], ref) / lanes::pow_max_ulp(y));
+        }
+        lanes::pow_one_minus(V::load_aligned(in), V::load_aligned(in2)).store_aligned(out);
+        for (std::size_t k = 0; k < W; ++k) {
+            const wide x = in[k], m = in2[k];
+            const wide ref = m == 0 ? wide(1) : (x >= 1 ? wide(0) : wpow(1 - x, m));
+            const double y = double(m == 0 || x >= 1 ? wide(0) : m * wlog(1 - x));
+            if (y < -87.34) { CHECK(out[k] == 0.0f); continue; }
+            if (y < -87.0) continue; // at the flush threshold either is right
+            worst_pow1m = std::max(worst_pow1m, error_ulp<float>(out[k], ref) / lanes::pow_max_ulp(y));
+        }
+    }
+    MESSAGE("lane kernels: log " << worst_log << " ulp, exp " << worst_exp << " ulp, pow " << worst_pow
+                                 << " and (1-x)^m " << worst_pow1m << " of their pow_max_ulp(y) allowance");
+    CHECK(worst_log <= lanes::log_max_ulp);
+    CHECK(worst_exp <= lanes::exp_max_ulp);
+    CHECK(worst_pow <= 1.0);
+    CHECK(worst_pow1m <= 1.0);
+}
+#endif

@@ -16,6 +16,7 @@ namespace phong {
 template <class T>
 PHONG_HD constexpr T pow_one_minus(T x, T m)
 {
+    if constexpr (requires { math_traits<T>::pow_one_minus(x, m); }) return math_traits<T>::pow_one_minus(x, m); // SIMD kernels
     const T lg = phong::max(phong::log1p(-phong::min(x, T(1))), -largest<T>());
     return phong::exp(m * lg);
 }
