@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The benchmark report in one command: configures and builds the `bench` preset (g++ Release,
+# -O3 -march=native), runs the whole suite with repetitions (the report reads medians), runs the
+# instruction-count check (feature_cost.sh), then writes a markdown report with PASS/FAIL per
+# target and a PNG of error against time.
+#
+# Usage: benchmarks/report.sh [--docs] [extra Google Benchmark flags, e.g. --benchmark_filter=K:1/]
+#   --docs  also copy the report and the plot to docs/benchmarks/ (what README.md shows)
+# Output: build/bench/report/{report.md,error_vs_time.png,results.json}; the report is printed.
+# Takes about 3-4 minutes on 2 cores (build ~1 min, suite ~2 min, callgrind ~15 s).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+docs=0
+if [[ ${1:-} == --docs ]]; then docs=1; shift; fi
+build=build/bench
+out=$build/report
+mkdir -p "$out"
+
+cmake --preset bench >/dev/null
+cmake --build --preset bench -j 2 --target phong_bench phong_feature_cost
+
+echo "Running the suite (3 repetitions per row, medians; load average: $(cut -d' ' -f1-3 /proc/loadavg))"
+"$build/benchmarks/phong_bench" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+  --benchmark_min_time=0.1 --benchmark_out="$out/results.json" --benchmark_out_format=json "$@" >"$out/console.txt"
+
+benchmarks/feature_cost.sh "$build" | tee "$out/feature_cost.txt" || true
+
+python3 benchmarks/report.py "$out/results.json" "$out" "$build/feature_cost.tsv"
+cat "$out/report.md"
+if ((docs)); then
+  mkdir -p docs/benchmarks
+  cp "$out/report.md" "$out/error_vs_time.png" "$out/feature_cost.txt" docs/benchmarks/
+  echo "copied to docs/benchmarks/"
+fi
+echo
+echo "report: $out/report.md   plot: $out/error_vs_time.png"
