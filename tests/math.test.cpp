@@ -152,7 +152,7 @@ TEST_CASE_TEMPLATE("math: abs, min, max, clamp, select and their NaN rules", T, 
     CHECK(phong::select(false, T(1), T(2)) == T(2));
 }
 
-TEST_CASE_TEMPLATE("math: inverse_pow2_scale brings |x| into [1, 2) with a power of two", T, float, double)
+TEST_CASE_TEMPLATE("math: inverse_pow2_scale brings |x| into 1..2 with a power of two", T, float, double)
 {
     using traits = phong::math_traits<T>;
     auto is_pow2 = [](T s) {
