@@ -170,7 +170,13 @@ struct math_traits {
         return std::sqrt(x);
     }
     /// 1/sqrt(x), correctly rounded twice (a division of a square root).
-    PHONG_HD static constexpr V rsqrt(V x) { return V(1) / sqrt(x); }
+    PHONG_HD static constexpr V rsqrt(V x)
+    {
+        // 1/0 is not a constant expression: give rsqrt(0) = inf explicitly, so that the guarded
+        // select(dd > 0, rsqrt(dd), 0) of normalize(0) etc. stays constexpr.
+        if (std::is_constant_evaluated() && x == V(0)) return std::numeric_limits<V>::infinity();
+        return V(1) / sqrt(x);
+    }
     PHONG_HD static constexpr V exp(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::exp(x));
