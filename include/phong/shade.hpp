@@ -3,6 +3,7 @@
 #pragma once
 
 #include "attenuation.hpp"
+#include "detail/twofold.hpp"
 #include "features.hpp"
 #include "light.hpp"
 #include "material.hpp"
@@ -42,6 +43,8 @@ struct surface_frame {
     glm::vec<3, T, Q> normal_scaled; ///< stable: the same normal before its last rounding, rescaled exactly
     T inv_normal_length;             ///< stable: 1 / |normal_scaled|
     glm::vec<3, T, Q> view;          ///< unit view vector v (0 if undefined)
+    glm::vec<3, T, Q> normal_lo{T(0)}; ///< stable: rounding error of normal (normal + normal_lo to O(eps^2))
+    glm::vec<3, T, Q> view_lo{T(0)};   ///< stable: rounding error of view
     mask_t<T> defined;               ///< normal and view both nonzero
     T poison;                        ///< 0, or NaN when the point's inputs are not finite
 };
@@ -54,11 +57,21 @@ struct light_sums {
     glm::vec<3, T, Q> specular{T(0)};
 };
 
+/// The exact mode's threshold on a squared length: the smallest normal number of T. Below it
+/// |v|^2 has lost bits to underflow and v / |v| would not be a unit vector (a light 1e-22 from Q
+/// in float gave n.l and r.v off by factors), so such a vector counts as zero: the light, normal
+/// or view is dropped (its terms give 0, a relative error of at most 1, never garbage or NaN).
+template <class T> PHONG_HD constexpr T exact_min_square() { return T(std::numeric_limits<scalar_t<T>>::min()); }
+
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> unit(const glm::vec<3, T, Q>& v)
 {
-    if constexpr (F.mode == evaluation::stable) return phong::normalize(v);
-    else return phong::normalize_unscaled(v);
+    if constexpr (F.mode == evaluation::stable) {
+        return phong::normalize(v);
+    } else {
+        const T dd = phong::dot(v, v);
+        return v * phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
+    }
 }
 
 template <features F, class T, glm::qualifier Q>
@@ -68,27 +81,44 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     using vec3 = glm::vec<3, T, Q>;
     surface_frame<T, Q> s{};
     s.position = position;
-    if constexpr (F.view == view_model::perspective) {
+    if constexpr (F.mode == evaluation::stable) {
+        // v and n twofold (detail/twofold.hpp), from the exact E.xyz - E.w Q and the exact normal.
+        vec3 e(T(0)), e_lo(T(0));
+        if constexpr (F.view == view_model::perspective) {
+            e = -position;
+        } else if constexpr (F.view == view_model::orthographic) {
+            e = vec3(env.eye.x, env.eye.y, env.eye.z);
+        } else {
+            const vec3 p = position * env.eye.w;
+            e = vec3(env.eye.x, env.eye.y, env.eye.z) - p;
+            for (int k = 0; k < 3; ++k)
+                e_lo[k] = detail::two_sum_error(env.eye[k], -p[k], e[k]) - phong::fma(env.eye.w, position[k], -p[k]);
+        }
+        const unit_twofold<T, Q> uv = detail::unit_of(e, e_lo);
+        s.view = uv.hi;
+        s.view_lo = uv.lo;
+        const unit_twofold<T, Q> un = detail::unit_of(normal, vec3(T(0)));
+        s.normal = un.hi;
+        s.normal_lo = un.lo;
+        s.normal_scaled = phong::rescaled(normal);
+        s.inv_normal_length = un.inv_scaled;
+    } else if constexpr (F.view == view_model::perspective) {
         s.view = unit<F>(-position);
     } else if constexpr (F.view == view_model::orthographic) {
         s.view = phong::normalize(vec3(env.eye.x, env.eye.y, env.eye.z));
     } else {
         s.view = unit<F>(vec3(env.eye.x, env.eye.y, env.eye.z) - position * env.eye.w);
     }
-    if constexpr (F.mode == evaluation::stable) {
-        s.normal_scaled = phong::rescaled(normal);
-        const T nn = phong::dot(s.normal_scaled, s.normal_scaled);
-        s.inv_normal_length = phong::select(nn > T(0), phong::rsqrt(nn), T(0));
-        s.normal = s.normal_scaled * s.inv_normal_length;
-    } else {
-        s.normal = phong::normalize_unscaled(normal);
-    }
+    if constexpr (F.mode != evaluation::stable) s.normal = unit<F>(normal);
     if constexpr (F.two_sided != facing::none) {
         T sign;
         if constexpr (F.two_sided == facing::view) sign = phong::select(phong::dot(s.normal, s.view) < T(0), T(-1), T(1));
         else sign = phong::select(front_facing, T(1), T(-1));
         s.normal = s.normal * sign;
-        if constexpr (F.mode == evaluation::stable) s.normal_scaled = s.normal_scaled * sign;
+        if constexpr (F.mode == evaluation::stable) {
+            s.normal_scaled = s.normal_scaled * sign;
+            s.normal_lo = s.normal_lo * sign;
+        }
     } else {
         (void)front_facing;
     }
@@ -137,17 +167,18 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
 
     vec3 l;
     T nl, length_d, inv;
+    [[maybe_unused]] vec3 l_lo(T(0)); // stable: l + l_lo and nl + nl_lo to O(eps^2) (detail/twofold.hpp)
+    [[maybe_unused]] T nl_lo = T(0);
     if constexpr (stable) {
-        const T scale = math_traits<T>::inverse_pow2_scale(phong::max_abs(d)); // exact: keeps d bit for bit
-        const vec3 hs = d * scale;
-        const T dd = phong::dot(hs, hs);
-        inv = phong::select(dd > T(0), phong::rsqrt(dd), T(0));
-        l = hs * inv;
-        nl = (phong::dot_compensated(s.normal_scaled, hs) + phong::dot(s.normal_scaled, lo * scale)) * (s.inv_normal_length * inv);
-        length_d = phong::sqrt(dd) / scale;
+        const unit_twofold<T, Q> u = detail::unit_of(d, lo); // rescaled: any finite nonzero d
+        l = u.hi;
+        l_lo = u.lo;
+        inv = u.inv_scaled;
+        detail::dot_twofold(s.normal, s.normal_lo, l, l_lo, nl, nl_lo);
+        length_d = u.length;
     } else {
         const T dd = phong::dot(d, d);
-        inv = phong::select(dd > T(0), phong::rsqrt(dd), T(0));
+        inv = phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
         l = d * inv;
         nl = phong::dot(s.normal, l);
         length_d = phong::sqrt(dd);
@@ -180,29 +211,38 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
     if constexpr (F.specular != specular_model::none) {
         const vec3& n = s.normal;
         const vec3& v = s.view;
-        T spec;
-        if constexpr (F.specular == specular_model::phong) {
-            if constexpr (stable) {
-                const vec3 chord = n * (T(2) * nl) - l - v; // r - v; |r - v|^2 / 2 = 1 - r.v
-                spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
+        mask_t<T> on = lit;
+        if constexpr (F.specular_gate) on = math_traits<T>::both(lit, nl > T(0));
+        // Only where the term is on: a scalar skips pow (and the register spills around the call) on
+        // unlit pairs, a SIMD batch when no lane is lit (its off lanes are zeroed below).
+        T spec = T(0);
+        if (math_traits<T>::any(on)) {
+            if constexpr (F.specular == specular_model::phong) {
+                if constexpr (stable) {
+                    // 1 - r.v = |r - v|^2 / 2, the chord r - v = 2 (n.l) n - l - v formed twofold.
+                    spec = phong::pow_one_minus(detail::one_minus_rv(n, s.normal_lo, nl, nl_lo, l, l_lo, v, s.view_lo), m);
+                } else {
+                    const vec3 r = n * (T(2) * nl) - l; // phong::reflect(-l, n)
+                    spec = phong::pow(phong::clamp(phong::dot(r, v), T(0), T(1)), m);
+                }
+            } else if constexpr (stable) {
+                // h = normalize(l + v) twofold from the twofold sum; 1 - n.h = |n - h|^2 / 2.
+                vec3 sum(T(0)), sum_lo(T(0));
+                for (int k = 0; k < 3; ++k) {
+                    sum[k] = l[k] + v[k];
+                    sum_lo[k] = detail::two_sum_error(l[k], v[k], sum[k]) + (l_lo[k] + s.view_lo[k]);
+                }
+                const unit_twofold<T, Q> h = detail::unit_of(sum, sum_lo); // l = -v: h = 0, x = 1
+                spec = phong::pow_one_minus(phong::select(h.inv_scaled > T(0), detail::one_minus_nh(n, s.normal_lo, h.hi, h.lo), T(1)), m);
             } else {
-                const vec3 r = n * (T(2) * nl) - l; // phong::reflect(-l, n)
-                spec = phong::pow(phong::clamp(phong::dot(r, v), T(0), T(1)), m);
-            }
-        } else {
-            const vec3 sum = l + v;
-            const T hh = phong::dot(sum, sum);
-            const vec3 h = sum * phong::select(hh > T(0), phong::rsqrt(hh), T(0)); // l = -v: h = 0
-            if constexpr (stable) {
-                const vec3 chord = n - h; // |n - h|^2 / 2 = 1 - n.h
-                spec = phong::pow_one_minus(phong::select(hh > T(0), phong::dot(chord, chord) * T(0.5), T(1)), m);
-            } else {
+                const vec3 sum = l + v;
+                const T hh = phong::dot(sum, sum);
+                const vec3 h = sum * phong::select(hh >= exact_min_square<T>(), phong::rsqrt(hh), T(0)); // l = -v: h = 0
                 spec = phong::pow(phong::clamp(phong::dot(n, h), T(0), T(1)), m);
             }
         }
-        mask_t<T> on = lit;
-        if constexpr (F.specular_gate) on = math_traits<T>::both(lit, nl > T(0));
-        sums.specular += L.specular * (f * phong::select(on, spec, T(0)));
+        if constexpr (!std::is_floating_point_v<T>) spec = phong::select(on, spec, T(0)); // lanes computed but off
+        sums.specular += L.specular * (f * spec);
     }
 }
 
@@ -264,8 +304,12 @@ template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::t
 ///  * m = 0: the specular base^0 = 1 wherever the specular term is on (pow(0, 0) = 1);
 ///  * c0 = 0 and d -> 0: f capped at 1 / attenuation_denominator_min<T>;
 ///  * NaN or inf in position, normal or (eye_point) eye: every channel is NaN.
-/// Accuracy: per F.mode, see phong/accuracy.hpp (exact: huge or tiny coordinates lose the light,
-/// giving 0 instead of NaN; stable: accurate on the whole finite range).
+/// Accuracy: per F.mode and input class, the constants phong::accuracy::bounds<M, T> (tested in
+/// tests/accuracy.test.cpp, table in README.md). exact: a vector whose squared length is not a
+/// normal number (|L - Q|, |n| or |Q| below ~1.1e-19 or above ~1.8e19 in float, 1.5e-154 and
+/// 1.3e154 in double) is dropped: its light gives 0 (relative error 1), never NaN. stable: every
+/// finite input; unit vectors, n.l and the specular chords carried twofold (detail/twofold.hpp),
+/// float stays within a few ulp up to m = 1e5 near the peak and at n.l ~ 1e-6.
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                         const material<T, Q>& mat, const Lights& lights,

@@ -9,16 +9,19 @@
 namespace phong {
 
 /// (1 - x)^m for x in [0, 1], m >= 0, without the rounding amplification of pow(1 - x, m):
-///   exp(m * log1p(-x)), log1p(-1) = -inf held at -max so m = 0 still gives exactly 1.
+///   exp(m * log1p(-x)), with m = 0 giving exactly 1 (pow(0, 0) = 1; m * log1p(-1) is never
+///   formed as 0 * -inf, and no finite product overflows, so it is a constant expression too).
 /// For unit vectors a, b: 1 - a.b = |a - b|^2 / 2, so with x = |a - b|^2 / 2 the relative error
-/// of the result is about (m |a - b| + |m log1p(-x)| + 2) eps instead of (m + 2) eps.
+/// of the result is about (|m log1p(-x)| + 2) eps plus m times the absolute error of x (x from
+/// twofold unit vectors, as shade's stable mode does, makes that last term about m x eps).
 /// Edge: x >= 1 gives 0 for m > 0 and 1 for m = 0 (pow(0, 0) = 1); x = 0 gives 1.
 template <class T>
 PHONG_HD constexpr T pow_one_minus(T x, T m)
 {
     if constexpr (requires { math_traits<T>::pow_one_minus(x, m); }) return math_traits<T>::pow_one_minus(x, m); // SIMD kernels
-    const T lg = phong::max(phong::log1p(-phong::min(x, T(1))), -largest<T>());
-    return phong::exp(m * lg);
+    const T lg = phong::log1p(-phong::min(x, T(1))); // -inf at x = 1
+    const mask_t<T> positive = m > T(0);
+    return phong::exp(phong::select(positive, phong::select(positive, m, T(1)) * lg, T(0)));
 }
 
 /// Phong's reflection-based specular factor (seed 000, seed 003):

@@ -1,0 +1,146 @@
+// phong: twofold ("double-word") arithmetic for the stable evaluation mode.
+// SPDX-License-Identifier: MIT
+//
+// A value carried as hi + lo, |lo| <~ eps |hi|, built from error-free transformations (TwoSum,
+// TwoProd through fma), so unit vectors, n.l and the chords r - v and n - h are known to about
+// eps^2 instead of eps. Why: near the highlight 1 - r.v ~ theta^2 / 2 with theta ~ 1/sqrt(m), and
+// an error of eps in any unit vector moves 1 - r.v by ~ theta eps, i.e. the specular factor by
+// ~ m theta eps = sqrt(m) eps relative. Carrying the vectors twofold removes that term; what is
+// left is a few eps from the final roundings, log1p and exp (bounds in phong/accuracy.hpp).
+// Everything is branch-free (select), constexpr, and written on a scalar-like T so that the same
+// code runs on SIMD batches (it needs only +, -, *, /, phong::sqrt, phong::fma and select).
+#pragma once
+
+#include "../vector.hpp"
+
+namespace phong::detail {
+
+/// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b).
+template <class T> PHONG_HD constexpr T two_sum_error(T a, T b, T hi)
+{
+    const T bb = hi - a;
+    return (a - (hi - bb)) + (b - bb);
+}
+
+/// A unit vector carried twofold: hi + lo = d / |d| with an error of a few eps^2 per component.
+template <class T, glm::qualifier Q>
+struct unit_twofold {
+    glm::vec<3, T, Q> hi; ///< the unit vector rounded (0 when d = 0)
+    glm::vec<3, T, Q> lo; ///< its rounding error
+    T inv_scaled;         ///< 1 / |d * scale| (0 when d = 0): > 0 exactly when the direction exists
+    T length;             ///< |d| rounded (inf only if |d| exceeds the range of T)
+};
+
+/// The unit vector along the exact vector d + dlo (dlo: the rounding error of d, or 0).
+/// d is first rescaled by a power of two (exact), so the result is accurate for every finite
+/// nonzero d, subnormal or huge. Then with S = |d|^2 as a twofold sum and r ~ 1/sqrt(S) rounded,
+/// one Newton step on the residual e = 1 - S r^2 (computed exactly enough: 1 - fl(S r^2) is exact
+/// by Sterbenz) gives 1/|d| = r (1 + e/2) to O(eps^2), and the unit vector is d r + d r e/2 + dlo r.
+/// Edge: d = 0 gives 0 (and inv_scaled = 0, length = 0).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& dlo)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    const T scale = math_traits<T>::inverse_pow2_scale(phong::max_abs(d));
+    const vec3 a = d * scale;
+    const vec3 al = dlo * scale;
+    // S = |a + al|^2 = sh + sl (products exact by fma, sums by TwoSum; al^2 is below eps^2).
+    T sh = a[0] * a[0];
+    T sl = phong::fma(a[0], a[0], -sh) + T(2) * a[0] * al[0];
+    for (int k = 1; k < 3; ++k) {
+        const T p = a[k] * a[k];
+        const T pe = phong::fma(a[k], a[k], -p);
+        const T s = sh + p;
+        sl = sl + (two_sum_error(sh, p, s) + pe + T(2) * a[k] * al[k]);
+        sh = s;
+    }
+    const T s_hi = sh + sl;
+    sl = sl - (s_hi - sh);
+    sh = s_hi;
+    const mask_t<T> nonzero = sh > T(0);
+    const T r = phong::select(nonzero, T(1) / phong::sqrt(phong::select(nonzero, sh, T(1))), T(0));
+    // e = 1 - S r^2: r^2 = r2h + r2l exactly, sh r2h = th + tl exactly, 1 - th exact.
+    const T r2h = r * r;
+    const T r2l = phong::fma(r, r, -r2h);
+    const T th = sh * r2h;
+    const T tl = phong::fma(sh, r2h, -th);
+    const T e = phong::select(nonzero, ((T(1) - th) - tl) - sh * r2l - sl * r2h, T(0));
+    const T rl = r * e * T(0.5); // 1/|a| = r + rl + O(e^2)
+    unit_twofold<T, Q> u{a * r, vec3(T(0)), r, T(0)};
+    for (int k = 0; k < 3; ++k) u.lo[k] = phong::fma(a[k], r, -u.hi[k]) + (a[k] * rl + al[k] * r);
+    u.length = phong::sqrt(sh) / scale;
+    return u;
+}
+
+/// (ah + al) . (bh + bl) as a twofold value, returned rounded in hi and its error in lo:
+/// Dot2 on the high parts (exact products, TwoSum accumulation) plus the first-order cross terms.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr void dot_twofold(const glm::vec<3, T, Q>& ah, const glm::vec<3, T, Q>& al, const glm::vec<3, T, Q>& bh,
+                                    const glm::vec<3, T, Q>& bl, T& hi, T& lo)
+{
+    T p = ah[0] * bh[0];
+    T err = phong::fma(ah[0], bh[0], -p) + (ah[0] * bl[0] + al[0] * bh[0]);
+    for (int k = 1; k < 3; ++k) {
+        const T h = ah[k] * bh[k];
+        const T r = phong::fma(ah[k], bh[k], -h);
+        const T s = p + h;
+        err = err + (two_sum_error(p, h, s) + r + (ah[k] * bl[k] + al[k] * bh[k]));
+        p = s;
+    }
+    hi = p + err;
+    lo = err - (hi - p);
+}
+
+/// |c + c_lo|^2 / 2 rounded once (products exact by fma; the c_lo^2 terms are below eps^2).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr T half_square(const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& c_lo)
+{
+    T hi = c[0] * c[0];
+    T lo = phong::fma(c[0], c[0], -hi) + T(2) * c[0] * c_lo[0];
+    for (int k = 1; k < 3; ++k) {
+        const T p = c[k] * c[k];
+        const T s = hi + p;
+        lo = lo + (two_sum_error(hi, p, s) + phong::fma(c[k], c[k], -p) + T(2) * c[k] * c_lo[k]);
+        hi = s;
+    }
+    return (hi + lo) * T(0.5);
+}
+
+/// 1 - r.v = |r - v|^2 / 2 for Phong's r = 2 (n.l) n - l, from twofold n, l, v and n.l: the chord
+/// and its square are formed to O(eps^2) and rounded once, so the result has a relative error
+/// of about 1 eps however close r is to v. Pre: n, l, v unit (or 0).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr T one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, T nl_hi, T nl_lo,
+                                  const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo, const glm::vec<3, T, Q>& vh,
+                                  const glm::vec<3, T, Q>& vlo)
+{
+    glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
+    for (int k = 0; k < 3; ++k) {
+        const T ph = T(2) * nl_hi * nh[k]; // 2 (n.l) n_k, exact error below
+        const T pe = T(2) * (phong::fma(nl_hi, nh[k], -(nl_hi * nh[k])) + (nl_hi * nlo[k] + nl_lo * nh[k]));
+        const T s1 = ph - lh[k];
+        const T e1 = two_sum_error(ph, -lh[k], s1);
+        const T s2 = s1 - vh[k];
+        const T e2 = two_sum_error(s1, -vh[k], s2);
+        c[k] = s2 + (((e1 + e2) + pe) - (llo[k] + vlo[k]));
+        c_lo[k] = (((e1 + e2) + pe) - (llo[k] + vlo[k])) - (c[k] - s2);
+    }
+    return half_square(c, c_lo);
+}
+
+/// 1 - n.h = |n - h|^2 / 2 for twofold unit n and h (chord and square to O(eps^2), rounded once).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr T one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, const glm::vec<3, T, Q>& hh,
+                                  const glm::vec<3, T, Q>& hlo)
+{
+    glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
+    for (int k = 0; k < 3; ++k) {
+        const T s = nh[k] - hh[k];
+        const T lo = two_sum_error(nh[k], -hh[k], s) + (nlo[k] - hlo[k]);
+        c[k] = s + lo;
+        c_lo[k] = lo - (c[k] - s);
+    }
+    return half_square(c, c_lo);
+}
+
+} // namespace phong::detail
