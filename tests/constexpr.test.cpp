@@ -271,6 +271,61 @@ template <class T> constexpr bool three_light_shades()
 static_assert(three_light_shades<float>());
 static_assert(three_light_shades<double>());
 
+// The documented degenerate inputs are constant expressions too (no 1/0, no NaN), in both modes:
+// a zero normal, a light at Q, a zero-length directional light, Q at the eye, Blinn with l = -v.
+template <class T, evaluation mode> constexpr bool degenerate_shades()
+{
+    constexpr phong::features F = three_light_features(specular_model::blinn, spot_model::opengl, mode);
+    constexpr auto mat = three_light_material<T>();
+    constexpr auto env = three_light_environment<T>();
+    // Ambient only: emission + ka (La + La_A/3 + La_B + La_C/16), from the 3-light scene above.
+    constexpr auto lights = three_lights<T>();
+    constexpr vec4<T> expected_ambient = [] {
+        vec4<T> e(T(0), T(0), T(0), T(0.5));
+        const auto L = three_lights<T>();
+        const auto m = three_light_material<T>();
+        const auto en = three_light_environment<T>();
+        for (int k = 0; k < 3; ++k)
+            e[k] = m.emission[k] + m.ka[k] * (en.ambient[k] + L[0].ambient[k] / T(3) + L[1].ambient[k] + L[2].ambient[k] / T(16));
+        return e;
+    }();
+    static_assert(close(phong::shade<F>(vec3<T>(0, 0, -2), vec3<T>(0), mat, lights, env), expected_ambient, 8)); // zero normal
+    // Q at the eye: the distances to A (now 0: f = 1/c0 = 1, ambient only), B, C change; no
+    // diffuse or specular. Only checks that it is a finite constant.
+    static_assert(phong::shade<F>(vec3<T>(0), vec3<T>(0, 0, 1), mat, lights, env).x >= T(0));
+    // A light at Q and a zero-length directional light: ambient only.
+    constexpr std::array<phong::light<T>, 2> degenerate = [] {
+        std::array<phong::light<T>, 2> d{};
+        d[0].position = vec4<T>(1, 2, -3, 1);
+        d[0].ambient = vec3<T>(0.5);
+        d[1].position = vec4<T>(0, 0, 0, 0);
+        d[1].ambient = vec3<T>(0.25);
+        return d;
+    }();
+    constexpr vec4<T> only_ambient(mat.emission + mat.ka * (env.ambient + vec3<T>(0.75)), T(0.5));
+    static_assert(close(phong::shade<F>(vec3<T>(1, 2, -3), vec3<T>(0, 0, 1), mat, degenerate, env), only_ambient, 8));
+    // Blinn with l = -v, m > 0: the lit diffuse only (n.h = 0).
+    constexpr std::array<phong::light<T>, 1> behind_eye = [] {
+        std::array<phong::light<T>, 1> d{};
+        d[0].position = vec4<T>(0, 0, -1, 0); // l = (0, 0, -1) = -v at Q on the axis
+        d[0].diffuse = vec3<T>(1);
+        d[0].specular = vec3<T>(1);
+        return d;
+    }();
+    constexpr phong::features G = [] {
+        phong::features f = three_light_features(specular_model::blinn, spot_model::none, mode);
+        f.two_sided = phong::facing::none;
+        return f;
+    }();
+    constexpr vec4<T> lit(mat.emission + mat.ka * env.ambient + mat.kd, T(0.5));
+    static_assert(close(phong::shade<G>(vec3<T>(0, 0, -2), vec3<T>(0, 0, -1), mat, behind_eye, env), lit, 8));
+    return true;
+}
+static_assert(degenerate_shades<float, evaluation::exact>());
+static_assert(degenerate_shades<float, evaluation::stable>());
+static_assert(degenerate_shades<double, evaluation::exact>());
+static_assert(degenerate_shades<double, evaluation::stable>());
+
 // ---------------------------------------------------------------------------------------------
 // Constant evaluation against run time.
 
