@@ -5,7 +5,9 @@
 // Run:                   ./fuzz_shade corpus/ -max_total_time=60
 //
 // The input bytes are decoded into a point Q, a normal n, an environment (La, eye), a material and
-// 1-8 lights; the first byte picks the number type (float, double), the feature set (one of the
+// 1-8 lights; the first byte picks the number type (bit 4: float or double), the front_facing flag
+// (bit 5), whether parameters are repaired into the domain (bit 6, `repair`: extreme but valid
+// values, so that the bound checks see many more inputs), and the feature set (bits 0-3, one of the
 // `phong::features` instantiations below: phong/blinn, exact/stable, attenuation
 // none/polynomial/windowed, spots, two-sided, every view model) and the front_facing flag.
 // Every scalar may be any bit pattern (NaN, inf, subnormal, huge) or a small grid value.
@@ -22,6 +24,7 @@
 //     material's alpha.
 #include <phong/phong.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -461,6 +464,44 @@ void dispatch(std::size_t index, const scene<T>& s, bool valid, std::index_seque
     ((index == I ? check<feature_table[I], T>(s, valid) : void()), ...);
 }
 
+/// Moves every material and light parameter into the documented domain, keeping magnitudes: NaN
+/// and inf become 1, negatives their absolute value, alpha and cosines are folded into their
+/// ranges, the spot axis is normalized (in long double) and all-zero attenuation gets c0 = 1.
+/// Geometry (Q, n, eye, light positions' xyz) is left as decoded.
+template <class T> T repaired(T x) { return std::isfinite(x) ? std::fabs(x) : T(1); }
+template <class T> T folded(T x, T lo, T hi) { return std::isfinite(x) ? std::clamp(x, lo, hi) : hi; }
+template <class T> void repair(scene<T>& s)
+{
+    for (int k = 0; k < 3; ++k) {
+        s.mat.ka[k] = repaired(s.mat.ka[k]), s.mat.kd[k] = repaired(s.mat.kd[k]);
+        s.mat.ks[k] = repaired(s.mat.ks[k]), s.mat.emission[k] = repaired(s.mat.emission[k]);
+        s.env.ambient[k] = repaired(s.env.ambient[k]);
+    }
+    s.mat.shininess = repaired(s.mat.shininess);
+    s.mat.alpha = folded(s.mat.alpha, T(0), T(1));
+    for (std::size_t i = 0; i < s.count; ++i) {
+        phong::light<T>& L = s.lights[i];
+        for (int k = 0; k < 3; ++k) {
+            if (!std::isfinite(L.position[k])) L.position[k] = T(1);
+            L.ambient[k] = repaired(L.ambient[k]), L.diffuse[k] = repaired(L.diffuse[k]), L.specular[k] = repaired(L.specular[k]);
+        }
+        L.position.w = repaired(L.position.w);
+        auto& a = L.attenuation;
+        a.constant = repaired(a.constant), a.linear = repaired(a.linear), a.quadratic = repaired(a.quadratic);
+        if (a.constant == 0 && a.linear == 0 && a.quadratic == 0) a.constant = T(1);
+        if (std::isnan(a.range) || a.range == 0) a.range = std::numeric_limits<T>::infinity();
+        a.range = std::fabs(a.range);
+        auto& sp = L.spot;
+        sp.exponent = repaired(sp.exponent);
+        if (sp.cos_cutoff != T(-1)) sp.cos_cutoff = folded(std::fabs(sp.cos_cutoff), T(0), T(1));
+        sp.cos_inner = folded(sp.cos_inner, T(-1), T(1)), sp.cos_outer = folded(sp.cos_outer, T(-1), T(1));
+        if (sp.cos_outer > sp.cos_inner) std::swap(sp.cos_outer, sp.cos_inner);
+        const wide x = sp.direction.x, y = sp.direction.y, z = sp.direction.z, len = std::sqrt(x * x + y * y + z * z);
+        sp.direction = (std::isfinite(len) && len > 0) ? glm::vec<3, T>(T(x / len), T(y / len), T(z / len))
+                                                       : glm::vec<3, T>(T(0), T(0), T(-1));
+    }
+}
+
 template <class T>
 void run(reader& in, std::uint8_t selector)
 {
@@ -478,6 +519,7 @@ void run(reader& in, std::uint8_t selector)
     s.mat.shininess = scalar<T>(in);
     s.mat.alpha = scalar<T>(in);
     for (std::size_t i = 0; i < s.count; ++i) s.lights[i] = decode_light<T>(in, s.position);
+    if (selector & 0x40) repair(s);
 
     current<T> = &s;
     current_features = selector & 0x0f;

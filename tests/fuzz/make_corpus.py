@@ -61,6 +61,14 @@ seeds["zero_normal"] = scene(0x22, [positional], n=(0, 0, 0))
 seeds["back_facing"] = scene(0x0A, [windowed, homog], n=(0, 0, -1))
 seeds["nan_position"] = bytes([0x20, 0]) + bytes([0x28]) + scene(0x20, [positional])[3:]
 seeds["raw_bits"] = bytes([0x11, 0x02]) + bytes([0x00] + [0x3F, 0xF0] + [0] * 6) * 40
+# Repaired inputs (selector bit 0x40): raw bit patterns moved into the domain by the fuzzer.
+import random
+rng = random.Random(7)
+for name, sel in (("repaired_raw_f", 0x4C), ("repaired_raw_d", 0x5C), ("repaired_raw_f2", 0x62), ("repaired_raw_d2", 0x77)):
+    body = bytearray([sel, 7])
+    for _ in range(260):
+        body += bytes([rng.randrange(0, 0x20)]) + bytes(rng.randrange(256) for _ in range(8))
+    seeds[name] = bytes(body)
 os.makedirs(os.path.join(os.path.dirname(__file__) or ".", "corpus"), exist_ok=True)
 for name, data in seeds.items():
     with open(os.path.join(os.path.dirname(__file__) or ".", "corpus", name), "wb") as f:
