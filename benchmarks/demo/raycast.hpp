@@ -6,8 +6,10 @@
 //      inverse(projection * view), so perspective and orthographic cameras are the same code);
 //      each object's inverse transform gives the generic ray S' + t c', the nearest generic hit
 //      gives t, P = S + t c and the generic normal m' (phong/primitives.hpp), carried to world
-//      space by the object's normal matrix (M^{-1})^T (phong/normal.hpp), giving a G-buffer;
+//      space by the object's normal matrix (M^{-1})^T (phong/normal.hpp), and a shadow ray toward
+//      each light marks which lights reach P: a G-buffer;
 //   2. shade: phong::shade<F>(P, m, material, lights, environment) on every G-buffer entry, with
+//      only the lights that reach P (a point no light reaches gets exactly the ambient term), and
 //      the eye of the environment = inverse(view) * eye_from_projection(projection): the camera
 //      position (w = 1) for a perspective camera, the direction toward the viewer (w = 0) for an
 //      orthographic one (seed 001's e = ray.start - P, or e = -ray direction).
