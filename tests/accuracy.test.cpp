@@ -51,7 +51,7 @@ void check_within_bound(input_class c, specular_model S, const error_stats& e)
 }
 
 template <class T, specular_model S>
-void check_class(input_class c, const std::vector<scene<T>>& scenes)
+void check_class(input_class c, const std::vector<stiff_scene<T>>& scenes)
 {
     constexpr phong::features exact = phong::accuracy::measured_features(evaluation::exact, S);
     constexpr phong::features stable = phong::accuracy::measured_features(evaluation::stable, S);
@@ -85,7 +85,7 @@ TEST_CASE_TEMPLATE("accuracy: NaN or inf in Q or the normal gives NaN in every c
             if (!std::isnan(c[k])) return false;
         return true;
     };
-    for (const scene<T>& s : scenes) {
+    for (const stiff_scene<T>& s : scenes) {
         CHECK(all_nan(shade_scene<phong::accuracy::measured_features(evaluation::exact, specular_model::phong)>(s)));
         CHECK(all_nan(shade_scene<phong::accuracy::measured_features(evaluation::stable, specular_model::phong)>(s)));
         CHECK(all_nan(shade_scene<phong::accuracy::measured_features(evaluation::exact, specular_model::blinn)>(s)));
@@ -158,7 +158,7 @@ TEST_CASE_TEMPLATE("stiff classes: reproducible from the seed, independent acros
 
 TEST_CASE_TEMPLATE("stiff classes: grazing scenes have n.l between 2.5e-7 and 4e-6", T, float, double)
 {
-    for (const scene<T>& s : make_class<T>(input_class::grazing, 200, test_seed)) {
+    for (const stiff_scene<T>& s : make_class<T>(input_class::grazing, 200, test_seed)) {
         const phong::light<T>& L = s.lights[0];
         const wvec3 l = wnormalize(wvec3{wide(L.position.x), wide(L.position.y), wide(L.position.z)} - widen(s.position) * wide(L.position.w));
         const wide nl = wdot(wnormalize(widen(s.normal)), l);
@@ -172,7 +172,7 @@ TEST_CASE_TEMPLATE("stiff classes: high exponents are near the peak, m exact", T
     const std::array<std::pair<input_class, double>, 3> classes{
         {{input_class::shininess_1e3, 1e3}, {input_class::shininess_1e4, 1e4}, {input_class::shininess_1e5, 1e5}}};
     for (const auto& [c, m] : classes) {
-        for (const scene<T>& s : make_class<T>(c, 100, test_seed)) {
+        for (const stiff_scene<T>& s : make_class<T>(c, 100, test_seed)) {
             CHECK(s.material.shininess == T(m));
             // angle(r, v) < 3 / sqrt(m) up to rounding of the inputs: 1 - r.v < 4.5 / m (+ 1%).
             const wvec3 n = wnormalize(widen(s.normal));
@@ -188,18 +188,18 @@ TEST_CASE_TEMPLATE("stiff classes: high exponents are near the peak, m exact", T
 
 TEST_CASE_TEMPLATE("stiff classes: near lights at 1e-20 and 1e-40, tiny directional at 1e-30", T, float, double)
 {
-    for (const scene<T>& s : make_class<T>(input_class::near_light_1e20, 100, test_seed)) {
+    for (const stiff_scene<T>& s : make_class<T>(input_class::near_light_1e20, 100, test_seed)) {
         const wide d = wlength(wvec3{wide(s.lights[0].position.x), wide(s.lights[0].position.y), wide(s.lights[0].position.z)} - widen(s.position));
         CHECK(double(d) >= 0.49e-20);
         CHECK(double(d) <= 2.01e-20);
         CHECK(s.lights[0].position.w == T(1));
     }
-    for (const scene<T>& s : make_class<T>(input_class::near_light_1e40, 100, test_seed)) {
+    for (const stiff_scene<T>& s : make_class<T>(input_class::near_light_1e40, 100, test_seed)) {
         const wide d = wlength(wvec3{wide(s.lights[0].position.x), wide(s.lights[0].position.y), wide(s.lights[0].position.z)} - widen(s.position));
         CHECK(double(d) >= 0.49e-40);
         CHECK(double(d) <= 2.01e-40);
     }
-    for (const scene<T>& s : make_class<T>(input_class::tiny_directional, 100, test_seed)) {
+    for (const stiff_scene<T>& s : make_class<T>(input_class::tiny_directional, 100, test_seed)) {
         REQUIRE(s.lights.size() == 1);
         CHECK(s.lights[0].position.w == T(0));
         CHECK(double(wlen4(s.lights[0].position)) >= 0.49e-30);
@@ -209,24 +209,24 @@ TEST_CASE_TEMPLATE("stiff classes: near lights at 1e-20 and 1e-40, tiny directio
 
 TEST_CASE_TEMPLATE("stiff classes: huge coordinates, c0 = 0, subnormals, m = 0", T, float, double)
 {
-    for (const scene<T>& s : make_class<T>(input_class::huge_1e30, 50, test_seed)) CHECK(double(wlength(widen(s.position))) > 1e30);
-    for (const scene<T>& s : make_class<T>(input_class::huge_1e20, 50, test_seed)) CHECK(double(wlength(widen(s.position))) > 1e20);
-    for (const scene<T>& s : make_class<T>(input_class::attenuation_c0_zero, 50, test_seed)) {
+    for (const stiff_scene<T>& s : make_class<T>(input_class::huge_1e30, 50, test_seed)) CHECK(double(wlength(widen(s.position))) > 1e30);
+    for (const stiff_scene<T>& s : make_class<T>(input_class::huge_1e20, 50, test_seed)) CHECK(double(wlength(widen(s.position))) > 1e20);
+    for (const stiff_scene<T>& s : make_class<T>(input_class::attenuation_c0_zero, 50, test_seed)) {
         CHECK(s.lights[0].attenuation.constant == T(0));
         CHECK(s.lights[0].attenuation.quadratic > T(0));
     }
-    for (const scene<T>& s : make_class<T>(input_class::denormal, 50, test_seed)) {
+    for (const stiff_scene<T>& s : make_class<T>(input_class::denormal, 50, test_seed)) {
         for (int k = 0; k < 3; ++k) CHECK(std::fpclassify(s.normal[k]) != FP_NORMAL);
         CHECK(wlength(widen(s.normal)) > 0);
         for (int k = 0; k < 3; ++k) CHECK(std::fpclassify(s.lights[0].position[k]) != FP_NORMAL);
         CHECK(std::fpclassify(s.lights[1].attenuation.quadratic) == FP_SUBNORMAL);
     }
-    for (const scene<T>& s : make_class<T>(input_class::shininess_zero, 50, test_seed)) CHECK(s.material.shininess == T(0));
+    for (const stiff_scene<T>& s : make_class<T>(input_class::shininess_zero, 50, test_seed)) CHECK(s.material.shininess == T(0));
 }
 
 TEST_CASE_TEMPLATE("stiff classes: blinn_opposite has l = -v exactly", T, float, double)
 {
-    for (const scene<T>& s : make_class<T>(input_class::blinn_opposite, 100, test_seed)) {
+    for (const stiff_scene<T>& s : make_class<T>(input_class::blinn_opposite, 100, test_seed)) {
         const phong::light<T>& L = s.lights[0];
         const wvec3 d = wvec3{wide(L.position.x), wide(L.position.y), wide(L.position.z)} - widen(s.position) * wide(L.position.w);
         const wvec3 q = widen(s.position); // v is along -Q: l = -v iff d = t Q with t > 0

@@ -29,7 +29,7 @@ struct row {
 };
 
 template <class T, specular_model S>
-row measure_row(const std::vector<phong_test::scene<T>>& scenes)
+row measure_row(const std::vector<phong_test::stiff_scene<T>>& scenes)
 {
     constexpr phong::features exact = phong::accuracy::measured_features(evaluation::exact, S);
     constexpr phong::features stable = phong::accuracy::measured_features(evaluation::stable, S);

@@ -44,8 +44,9 @@ enum class view_model : unsigned char { perspective, orthographic, eye_point };
 
 /// How the terms are evaluated (accuracy against speed; bounds in phong/accuracy.hpp).
 /// `exact`: the formulas as written, guarded so they never give NaN/Inf for finite input.
-/// `stable`: scaled normalization, compensated n.l on exact L - Q, half-chord exponent
-/// exp(m log1p(-|r - v|^2/2)); accurate on stiff and extreme inputs.
+/// `stable`: power-of-two rescaled vectors; the unit vectors n, l, v (h), n.l and the chords r - v,
+/// n - h carried twofold (to ~eps^2, from the exact L - Q; detail/twofold.hpp); half-chord exponent
+/// exp(m log1p(-|r - v|^2/2)); a few ulp on stiff and extreme inputs (phong/accuracy.hpp).
 enum class evaluation : unsigned char { exact, stable };
 
 /// Everything shade<F> can compute. Defaults: seed 000's classic model with one ambient term,

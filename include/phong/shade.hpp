@@ -180,6 +180,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         const T dd = phong::dot(d, d);
         inv = phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
         l = d * inv;
+        for (int k = 0; k < 3; ++k) l[k] = phong::select(inv > T(0), l[k], T(0)); // overflowed d: inf * 0
         nl = phong::dot(s.normal, l);
         length_d = phong::sqrt(dd);
     }

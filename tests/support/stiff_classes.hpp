@@ -7,7 +7,9 @@
 //   auto scenes = phong_test::make_class<float>(input_class::grazing, 1000, seed);
 //   phong_test::error_stats e = phong_test::measure<F>(scenes);   // p50/p99/max ulp, max rel, NaN/inf
 //
-// Scenes are features-independent: a point, its normal, a material, lights and an environment.
+// Scenes (stiff_scene<T>) are features-independent: a point, its normal, a material, lights and an
+// environment. (Not named `scene`: tests/support/generators.hpp has a phong_test::scene of another
+// layout, and both headers are linked into phong_tests; one name for two types breaks the ODR.)
 // They are generated in double from a small counter-based generator (splitmix64, so the same seed
 // gives the same scenes on every compiler and library), then rounded to T; where a class needs an
 // exact property in T (n.l ~ 1e-6, l = -v), it is established or checked on the rounded values.
@@ -33,7 +35,7 @@ using phong::accuracy::input_class;
 
 /// One shading problem, independent of the feature set.
 template <class T>
-struct scene {
+struct stiff_scene {
     glm::vec<3, T> position{T(0)};
     glm::vec<3, T> normal{T(0), T(0), T(1)};
     phong::material<T> material{};
@@ -42,7 +44,7 @@ struct scene {
 };
 
 /// splitmix64: a tiny, fully specified generator (the standard distributions are not portable).
-struct rng {
+struct splitmix {
     std::uint64_t state;
     std::uint64_t next()
     {
@@ -98,7 +100,7 @@ template <class T> double subnormal_lo() { return sizeof(T) == 4 ? 1e-44 : 1e-32
 template <class T> double subnormal_hi() { return sizeof(T) == 4 ? 1e-39 : 1e-309; }
 
 /// Material with random coefficients in [0, 1) and m in [1, 200].
-template <class T> phong::material<T> random_material(rng& g)
+template <class T> phong::material<T> random_material(splitmix& g)
 {
     phong::material<T> mat;
     mat.ka = to<T>({g.uniform(), g.uniform(), g.uniform()});
@@ -109,7 +111,7 @@ template <class T> phong::material<T> random_material(rng& g)
 }
 
 /// Light strengths in [0.1, 1) and attenuation c0 in [0.5, 1.5), c1 in [0, 0.2), c2 in [0, 0.05).
-template <class T> phong::light<T> random_light(rng& g, const glm::vec<4, T>& position)
+template <class T> phong::light<T> random_light(splitmix& g, const glm::vec<4, T>& position)
 {
     phong::light<T> L;
     L.position = position;
@@ -123,16 +125,16 @@ template <class T> phong::light<T> random_light(rng& g, const glm::vec<4, T>& po
 }
 
 /// A point in front of the eye (perspective: the eye at the origin looking down -z).
-inline glm::dvec3 random_point(rng& g) { return {g.uniform(-10, 10), g.uniform(-10, 10), g.uniform(-30, -2)}; }
+inline glm::dvec3 random_point(splitmix& g) { return {g.uniform(-10, 10), g.uniform(-10, 10), g.uniform(-30, -2)}; }
 
 /// A normal facing the viewer at Q (unit direction times a length in [0.5, 2)).
-inline glm::dvec3 facing_normal(rng& g, const glm::dvec3& Q) { return g.unit_around(dnormalize(-Q), 0.05); }
+inline glm::dvec3 facing_normal(splitmix& g, const glm::dvec3& Q) { return g.unit_around(dnormalize(-Q), 0.05); }
 
 /// The well-conditioned scene, in double; `scale` multiplies every coordinate (points, normal,
 /// light positions) and divides c1 (c2 = 0 when scaled), so the scaled scene has the same colour.
-template <class T> scene<T> well_conditioned(rng& g, double scale = 1)
+template <class T> stiff_scene<T> well_conditioned(splitmix& g, double scale = 1)
 {
-    scene<T> s;
+    stiff_scene<T> s;
     const glm::dvec3 Q = random_point(g);
     s.position = to<T>(Q * scale);
     s.normal = to<T>(facing_normal(g, Q) * g.uniform(0.5, 2) * scale);
@@ -156,10 +158,10 @@ template <class T> scene<T> well_conditioned(rng& g, double scale = 1)
 /// m = shininess near the peak: r at angle theta = k / sqrt(m), k in [0, 3), from v, so Phong's
 /// exact factor (r.v)^m is at least exp(-4.5); h is then within about theta / 2 of n, so Blinn's
 /// (n.h)^m is near its peak too. Specular only (ka = kd = 0).
-template <class T> scene<T> near_peak(rng& g, double shininess)
+template <class T> stiff_scene<T> near_peak(splitmix& g, double shininess)
 {
     for (;;) {
-        scene<T> s;
+        stiff_scene<T> s;
         const glm::dvec3 Q = random_point(g);
         const glm::dvec3 v = dnormalize(-Q);
         const glm::dvec3 n = g.unit_around(v, 0.5);
@@ -180,7 +182,7 @@ template <class T> scene<T> near_peak(rng& g, double shininess)
 }
 
 /// The exact n.l of a scene's first light, from the values in T.
-template <class T> wide exact_nl(const scene<T>& s)
+template <class T> wide exact_nl(const stiff_scene<T>& s)
 {
     const phong::light<T>& L = s.lights[0];
     const wvec3 d = wvec3{wide(L.position.x), wide(L.position.y), wide(L.position.z)} - widen(s.position) * wide(L.position.w);
@@ -189,10 +191,10 @@ template <class T> wide exact_nl(const scene<T>& s)
 
 /// n.l ~ 1e-6: the light direction at angle ~ 1e-6 above the tangent plane; kept when the exact
 /// n.l of the rounded scene lies in [2.5e-7, 4e-6]. Diffuse only (ka = ks = 0).
-template <class T> scene<T> grazing(rng& g)
+template <class T> stiff_scene<T> grazing(splitmix& g)
 {
     for (;;) {
-        scene<T> s;
+        stiff_scene<T> s;
         const glm::dvec3 Q = random_point(g);
         const glm::dvec3 n = facing_normal(g, Q);
         const double c = g.uniform(0.5e-6, 2e-6);
@@ -212,10 +214,10 @@ template <class T> scene<T> grazing(rng& g)
 
 /// A positional light at distance ~ distance (x [0.5, 2)) from Q, Q at ~ 1000 * distance from
 /// the eye (so L - Q is representable), the light above the surface.
-template <class T> scene<T> near_light(rng& g, double distance, double c0_lo = 0.5)
+template <class T> stiff_scene<T> near_light(splitmix& g, double distance, double c0_lo = 0.5)
 {
     for (;;) {
-        scene<T> s;
+        stiff_scene<T> s;
         const glm::dvec3 Q = dnormalize(random_point(g)) * (1000 * distance * g.uniform(0.5, 1));
         const glm::dvec3 n = facing_normal(g, Q);
         const glm::dvec3 l = g.unit_around(n, 0.1);
@@ -234,9 +236,9 @@ template <class T> scene<T> near_light(rng& g, double distance, double c0_lo = 0
 }
 
 /// A directional light with xyz of length ~ length (x [0.5, 2)), above the surface.
-template <class T> scene<T> tiny_directional(rng& g, double length)
+template <class T> stiff_scene<T> tiny_directional(splitmix& g, double length)
 {
-    scene<T> s = well_conditioned<T>(g);
+    stiff_scene<T> s = well_conditioned<T>(g);
     s.lights.resize(1);
     const glm::dvec3 n = dnormalize(glm::dvec3(s.normal.x, s.normal.y, s.normal.z));
     s.lights[0].position = to<T>(g.unit_around(n, 0.1) * (length * g.uniform(0.5, 2)), 0);
@@ -245,9 +247,9 @@ template <class T> scene<T> tiny_directional(rng& g, double length)
 
 /// l = -v exactly: L = 2 Q (positional: L - Q = Q) or L.xyz = Q / 2 (directional), whose
 /// normalizations are -v bit for bit; the normal faces the light (away from the viewer).
-template <class T> scene<T> blinn_opposite(rng& g)
+template <class T> stiff_scene<T> blinn_opposite(splitmix& g)
 {
-    scene<T> s = well_conditioned<T>(g);
+    stiff_scene<T> s = well_conditioned<T>(g);
     s.lights.resize(1);
     const glm::dvec3 Q(s.position.x, s.position.y, s.position.z);
     s.normal = to<T>(g.unit_around(dnormalize(Q), 0.1) * g.uniform(0.5, 2));
@@ -257,9 +259,9 @@ template <class T> scene<T> blinn_opposite(rng& g)
 }
 
 /// Subnormal inputs: the normal, a directional light's xyz and a positional light's c1, c2.
-template <class T> scene<T> denormal(rng& g)
+template <class T> stiff_scene<T> denormal(splitmix& g)
 {
-    scene<T> s = well_conditioned<T>(g);
+    stiff_scene<T> s = well_conditioned<T>(g);
     s.lights.clear();
     const double lo = subnormal_lo<T>(), hi = subnormal_hi<T>();
     const glm::dvec3 n = facing_normal(g, glm::dvec3(s.position.x, s.position.y, s.position.z));
@@ -273,9 +275,9 @@ template <class T> scene<T> denormal(rng& g)
 }
 
 /// NaN or +-inf in one component of Q or of the normal.
-template <class T> scene<T> non_finite(rng& g)
+template <class T> stiff_scene<T> non_finite(splitmix& g)
 {
-    scene<T> s = well_conditioned<T>(g);
+    stiff_scene<T> s = well_conditioned<T>(g);
     const T values[] = {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(),
                         -std::numeric_limits<T>::infinity()};
     const T bad = values[g.next() % 3];
@@ -290,10 +292,10 @@ template <class T> scene<T> non_finite(rng& g)
 /// n scenes of class c, reproducible from seed (the same seed gives the same scenes; scenes of
 /// different classes or types use independent streams).
 template <class T>
-std::vector<scene<T>> make_class(input_class c, std::size_t n, std::uint64_t seed)
+std::vector<stiff_scene<T>> make_class(input_class c, std::size_t n, std::uint64_t seed)
 {
-    rng g{seed ^ (0x51ed2705u * (std::uint64_t(c) + 1)) ^ (sizeof(T) == 4 ? 0 : 0xd1b54a32d192ed03ull)};
-    std::vector<scene<T>> out;
+    splitmix g{seed ^ (0x51ed2705u * (std::uint64_t(c) + 1)) ^ (sizeof(T) == 4 ? 0 : 0xd1b54a32d192ed03ull)};
+    std::vector<stiff_scene<T>> out;
     out.reserve(n);
     const double attenuation_lo = sizeof(T) == 4 ? 1e-30 : 1e-200;
     for (std::size_t i = 0; i < n; ++i) {
@@ -314,7 +316,7 @@ std::vector<scene<T>> make_class(input_class c, std::size_t n, std::uint64_t see
         case input_class::blinn_opposite: out.push_back(detail::blinn_opposite<T>(g)); break;
         case input_class::denormal: out.push_back(detail::denormal<T>(g)); break;
         case input_class::shininess_zero: {
-            scene<T> s = detail::well_conditioned<T>(g);
+            stiff_scene<T> s = detail::well_conditioned<T>(g);
             s.material.shininess = T(0);
             out.push_back(s);
             break;
@@ -370,22 +372,22 @@ private:
 };
 
 /// shade<F> of one scene.
-template <phong::features F, class T> phong::color<F, T> shade_scene(const scene<T>& s)
+template <phong::features F, class T> phong::color<F, T> shade_scene(const stiff_scene<T>& s)
 {
     return phong::shade<F>(s.position, s.normal, s.material, std::span<const phong::light<T>>(s.lights), s.environment);
 }
 
 /// The reference colour of one scene under F.
-template <class T> wcolor reference_scene(const phong::features& F, const scene<T>& s)
+template <class T> wcolor reference_scene(const phong::features& F, const stiff_scene<T>& s)
 {
     return reference_shade<T>(F, s.position, s.normal, s.material, std::span<const phong::light<T>>(s.lights), s.environment);
 }
 
 /// Error statistics of shade<F> over the scenes, rgb channels, against reference_shade.
-template <phong::features F, class T> error_stats measure(const std::vector<scene<T>>& scenes)
+template <phong::features F, class T> error_stats measure(const std::vector<stiff_scene<T>>& scenes)
 {
     error_accumulator acc;
-    for (const scene<T>& s : scenes) {
+    for (const stiff_scene<T>& s : scenes) {
         const auto c = shade_scene<F>(s);
         const wcolor r = reference_scene(F, s);
         for (int k = 0; k < 3; ++k) acc.add<T>(c[k], r[k]);
@@ -396,7 +398,7 @@ template <phong::features F, class T> error_stats measure(const std::vector<scen
 /// The same with the references computed once (they cost far more than shade): refs[i] is
 /// reference_scene(F', scenes[i]) for any F' with the same model as F (the mode does not matter).
 template <phong::features F, class T>
-error_stats measure(const std::vector<scene<T>>& scenes, const std::vector<wcolor>& refs)
+error_stats measure(const std::vector<stiff_scene<T>>& scenes, const std::vector<wcolor>& refs)
 {
     error_accumulator acc;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -407,11 +409,11 @@ error_stats measure(const std::vector<scene<T>>& scenes, const std::vector<wcolo
 }
 
 /// reference_scene(F, s) for every scene.
-template <class T> std::vector<wcolor> references(const phong::features& F, const std::vector<scene<T>>& scenes)
+template <class T> std::vector<wcolor> references(const phong::features& F, const std::vector<stiff_scene<T>>& scenes)
 {
     std::vector<wcolor> out;
     out.reserve(scenes.size());
-    for (const scene<T>& s : scenes) out.push_back(reference_scene(F, s));
+    for (const stiff_scene<T>& s : scenes) out.push_back(reference_scene(F, s));
     return out;
 }
 

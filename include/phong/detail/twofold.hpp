@@ -36,14 +36,21 @@ struct unit_twofold {
 /// nonzero d, subnormal or huge. Then with S = |d|^2 as a twofold sum and r ~ 1/sqrt(S) rounded,
 /// one Newton step on the residual e = 1 - S r^2 (computed exactly enough: 1 - fl(S r^2) is exact
 /// by Sterbenz) gives 1/|d| = r (1 + e/2) to O(eps^2), and the unit vector is d r + d r e/2 + dlo r.
-/// Edge: d = 0 gives 0 (and inv_scaled = 0, length = 0).
+/// Edge: d = 0 gives 0 (and inv_scaled = 0, length = 0). A d that overflowed (an inf component,
+/// e.g. L.xyz - w Q with |w Q| > max although L, w and Q are finite) gives 0, inv_scaled = 0 and
+/// length = inf, never NaN: like a light at infinity with no direction.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& dlo)
 {
     using vec3 = glm::vec<3, T, Q>;
-    const T scale = math_traits<T>::inverse_pow2_scale(phong::max_abs(d));
-    const vec3 a = d * scale;
-    const vec3 al = dlo * scale;
+    const T largest_d = phong::max_abs(d);
+    const mask_t<T> in_range = largest_d <= largest<T>();
+    const T scale = math_traits<T>::inverse_pow2_scale(phong::select(in_range, largest_d, T(1)));
+    vec3 a(T(0)), al(T(0));
+    for (int k = 0; k < 3; ++k) {
+        a[k] = phong::select(in_range, d[k] * scale, T(0));
+        al[k] = phong::select(in_range, dlo[k] * scale, T(0)); // dlo is NaN when d overflowed
+    }
     // S = |a + al|^2 = sh + sl (products exact by fma, sums by TwoSum; al^2 is below eps^2).
     T sh = a[0] * a[0];
     T sl = phong::fma(a[0], a[0], -sh) + T(2) * a[0] * al[0];
@@ -68,7 +75,7 @@ PHONG_HD constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const 
     const T rl = r * e * T(0.5); // 1/|a| = r + rl + O(e^2)
     unit_twofold<T, Q> u{a * r, vec3(T(0)), r, T(0)};
     for (int k = 0; k < 3; ++k) u.lo[k] = phong::fma(a[k], r, -u.hi[k]) + (a[k] * rl + al[k] * r);
-    u.length = phong::sqrt(sh) / scale;
+    u.length = phong::select(in_range, phong::sqrt(sh) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
     return u;
 }
 
