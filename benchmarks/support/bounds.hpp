@@ -1,17 +1,33 @@
-// The published error bound of a variant for an input class, read from phong/accuracy.hpp when
-// that header exists; -1 (none published) otherwise.
+// The published error bound of a variant for an input class: phong/accuracy.hpp's max_rel for
+// the row's mode and number type (typical -> well_conditioned, the stiff sets -> shininess_1e4 and
+// grazing). -1 when the header is absent or its table is not filled in (all zeros).
 #pragma once
 
 #include "inputs.hpp"
 
 #include <phong/features.hpp>
+#if __has_include(<phong/accuracy.hpp>)
+#  include <phong/accuracy.hpp>
+#  define PHONG_BENCH_HAVE_ACCURACY 1
+#endif
 
 namespace phong_bench {
 
 template <class T>
-double published_bound(const phong::features&, input_set)
+double published_bound([[maybe_unused]] const phong::features& F, [[maybe_unused]] input_set set)
 {
+#if defined(PHONG_BENCH_HAVE_ACCURACY)
+    using phong::accuracy::input_class;
+    const input_class c = set == input_set::highlight ? input_class::shininess_1e4
+                        : set == input_set::grazing   ? input_class::grazing
+                                                      : input_class::well_conditioned;
+    const phong::accuracy::bound b = F.mode == phong::evaluation::stable ? phong::accuracy::of<phong::evaluation::stable, T>(c)
+                                                                         : phong::accuracy::of<phong::evaluation::exact, T>(c);
+    if (b.max_rel == 0 && b.p99_ulp == 0 && b.max_ulp == 0) return -1; // not published yet
+    return b.max_rel;
+#else
     return -1;
+#endif
 }
 
 } // namespace phong_bench

@@ -14,6 +14,7 @@
 //
 // Usage: phong_feature_cost <kernel> [repeat]   runs <kernel> `repeat` times (default 1)
 //        phong_feature_cost --check             runs every pair and compares outputs bit for bit
+#include "baseline.hpp"
 #include "inputs.hpp"
 
 #include <phong/phong.hpp>
@@ -86,7 +87,7 @@ inline float dot3(const vec3& a, const vec3& b) { return a.x * b.x + a.y * b.y +
 
 } // namespace
 
-#define FC_KERNEL extern "C" __attribute__((noinline)) void
+#define FC_KERNEL extern "C" __attribute__((noipa)) void // noipa: no inlining, cloning or constant propagation
 
 FC_KERNEL fc_phong_diffuse_directional(const vec3* q, const vec3* n, std::size_t count, const light* L, std::size_t k,
                                        const phong::material<float>& mat, const phong::environment<float>& env, vec3* out)
@@ -155,6 +156,14 @@ FC_KERNEL fc_hand_ads(const vec3* q, const vec3* n, std::size_t count, const lig
     }
 }
 
+/// The naive GLM baseline of the benchmarks (support/baseline.hpp), for reference: seed 003 as a
+/// user writes it (no guards, pow only where n.l > 0). Its lights are converted once, outside.
+FC_KERNEL fc_naive_ads(const vec3* q, const vec3* n, std::size_t count, const std::vector<phong_bench::naive::LightInfo<float>>& lights,
+                       const phong_bench::naive::MaterialInfo<float>& mat, vec3* out)
+{
+    for (std::size_t i = 0; i < count; ++i) out[i] = phong_bench::naive::ads(q[i], n[i], lights, mat);
+}
+
 // Feature costs: the seed 003 model with one feature changed.
 #define FC_PHONG(name, F)                                                                                 \
     FC_KERNEL name(const vec3* q, const vec3* n, std::size_t count, const light* L, std::size_t k,          \
@@ -211,12 +220,20 @@ const kernel kernels[] = {
     {"fc_phong_ads_scene_ambient", fc_phong_ads_scene_ambient, lights::positional},
     {"fc_phong_ads_stable", fc_phong_ads_stable, lights::positional},
     {"fc_phong_ambient_diffuse", fc_phong_ambient_diffuse, lights::positional},
+    {"fc_naive_ads", nullptr, lights::positional},
 };
 
 std::vector<vec3> run(const kernel& kn, int repeat)
 {
     data& d = the_data();
     const std::vector<light>& L = kn.set == lights::directional ? d.directional : kn.set == lights::spot ? d.spot : d.positional;
+    if (kn.fn == nullptr) { // the naive baseline: its own light and material structs
+        std::vector<phong_bench::naive::LightInfo<float>> L;
+        for (const light& l : d.positional) L.push_back({l.position, l.ambient, l.diffuse, l.specular});
+        const phong_bench::naive::MaterialInfo<float> mat{d.mat.ka, d.mat.kd, d.mat.ks, d.mat.shininess};
+        for (int r = 0; r < repeat; ++r) fc_naive_ads(d.position.data(), d.normal.data(), N, L, mat, d.out.data());
+        return d.out;
+    }
     for (int r = 0; r < repeat; ++r) kn.fn(d.position.data(), d.normal.data(), N, L.data(), K, d.mat, d.env, d.out.data());
     return d.out;
 }

@@ -119,7 +119,7 @@ void report(benchmark::State& state, std::size_t N, std::size_t K, const std::ve
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(pairs));
     state.counters["ns_per_pair"] = benchmark::Counter(double(state.iterations()) * pairs * 1e-9,
                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-    const error_stats e = measure(out, ref);
+    const error_stats e = phong_bench::measure(out, ref);
     state.counters["max_rel_err"] = e.max_rel;
     state.counters["p99_ulp"] = e.p99_ulp;
     state.counters["max_ulp"] = e.max_ulp;
