@@ -70,6 +70,14 @@ TEST_CASE_TEMPLATE("accuracy: every input class within its published bound, both
     for (std::size_t k = 0; k < phong::accuracy::input_class_count; ++k) {
         const auto c = static_cast<input_class>(k);
         if (c == input_class::non_finite) continue;
+        // Without __float128 (clang finds no quadmath.h) the reference is x87 long double: its own
+        // error, ~m 2^-64 relative in (r.v)^m and ~2^-64 / (n.l) at grazing incidence, is above
+        // the double bounds of these classes. They are then checked by the g++ build only.
+        if (wide_digits < 113 && sizeof(T) == 8 &&
+            (c == input_class::shininess_1e4 || c == input_class::shininess_1e5 || c == input_class::grazing)) {
+            MESSAGE("reference is long double: double " << phong::accuracy::name(c) << " not checked in this build");
+            continue;
+        }
         const auto scenes = make_class<T>(c, n, test_seed);
         REQUIRE(scenes.size() == n);
         check_class<T, specular_model::phong>(c, scenes);

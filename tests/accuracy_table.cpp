@@ -130,9 +130,11 @@ int main(int argc, char** argv)
         else if (positional++ == 0) n = std::strtoull(argv[i], nullptr, 10);
         else seed = std::strtoull(argv[i], nullptr, 10);
     }
-    std::printf("Scenes per class: %zu, seed %llu; 3 channels per scene. Errors per channel against __float128.\n"
+    std::printf("Scenes per class: %zu, seed %llu; 3 channels per scene. Errors per channel against %s.\n"
                 "ulp: of the exact value in the type; rel: max |computed - exact| / |exact|; NaN/Inf: channels.\n\n",
-                n, static_cast<unsigned long long>(seed));
+                n, static_cast<unsigned long long>(seed),
+                phong_test::wide_digits >= 113 ? "__float128"
+                                               : "long double (64 bits: too few for double at m >= 1e4; build with g++)");
     std::printf("| class | type | specular | exact p50 | p99 | max ulp | max rel | NaN/Inf | stable p50 | p99 | max ulp | max rel | NaN/Inf |\n");
     std::printf("|---|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
     bool ok = true;
