@@ -27,9 +27,9 @@ constexpr std::size_t n_scenes = 4096;
 constexpr std::uint64_t seed = 20261122;
 
 template <class T>
-const std::vector<phong_test::scene<T>>& cached_scenes(input_class c)
+const std::vector<phong_test::stiff_scene<T>>& cached_scenes(input_class c)
 {
-    static std::map<input_class, std::vector<phong_test::scene<T>>> cache;
+    static std::map<input_class, std::vector<phong_test::stiff_scene<T>>> cache;
     auto [it, fresh] = cache.try_emplace(c);
     if (fresh) it->second = phong_test::make_class<T>(c, n_scenes, seed);
     return it->second;
@@ -39,7 +39,7 @@ template <phong::evaluation M, phong::specular_model S, class T>
 void class_row(benchmark::State& state, input_class c)
 {
     constexpr phong::features F = phong::accuracy::measured_features(M, S);
-    const std::vector<phong_test::scene<T>>& scenes = cached_scenes<T>(c);
+    const std::vector<phong_test::stiff_scene<T>>& scenes = cached_scenes<T>(c);
     static std::map<input_class, std::vector<phong_test::wcolor>> refs; // one per (M, S, T, class)
     auto [it, fresh] = refs.try_emplace(c);
     if (fresh) it->second = phong_test::references<T>(F, scenes);
@@ -48,7 +48,7 @@ void class_row(benchmark::State& state, input_class c)
     for (const auto& s : scenes) pairs += s.lights.size();
     for (auto _ : state) {
         for (std::size_t i = 0; i < scenes.size(); ++i) {
-            const phong_test::scene<T>& s = scenes[i];
+            const phong_test::stiff_scene<T>& s = scenes[i];
             out[i] = phong::shade<F>(s.position, s.normal, s.material, std::span<const phong::light<T>>(s.lights), s.environment);
         }
         benchmark::DoNotOptimize(out.data());
