@@ -150,6 +150,12 @@ TEST_CASE_TEMPLATE("NaN policy: finite degenerate input gives finite output", T,
     for_each_feature_set<T>([&](scene<T>& s) { s.position = glm::vec<3, T>(huge, -huge, tiny); }, check_finite);
     for_each_feature_set<T>([&](scene<T>& s) { s.normal = glm::vec<3, T>(tiny, 0, tiny); }, check_finite);
     for_each_feature_set<T>([&](scene<T>& s) { s.normal = glm::vec<3, T>(huge, huge, huge); }, check_finite);
+    // L.xyz - w Q and E.xyz - E.w Q overflow although every input is finite (|w Q| > max): that
+    // light (or the view) has no direction, never NaN (the smooth spot used to turn inf * 0 into NaN).
+    const T top = std::numeric_limits<T>::max();
+    for_each_feature_set<T>([&](scene<T>& s) { s.lights[0].position.w = top; }, check_finite);
+    for_each_feature_set<T>([&](scene<T>& s) { s.env.eye.w = top; }, check_finite);
+    for_each_feature_set<T>([&](scene<T>& s) { s.lights[0].position = glm::vec<4, T>(top, -top, top, T(1)); s.position = glm::vec<3, T>(-top, top, -top); }, check_finite);
 }
 
 TEST_CASE_TEMPLATE("NaN policy: an OpenGL spot aimed at the point with a huge exponent stays finite, spot <= 1", T, float, double)
