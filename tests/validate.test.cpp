@@ -54,6 +54,24 @@ TEST_CASE_TEMPLATE("validate(light): valid lights are accepted", T, float, doubl
     CHECK(static_cast<bool>(phong::validate(zero)));
 }
 
+TEST_CASE_TEMPLATE("light::seed000: one strength L_i for diffuse and specular, no ambient", T, float, double)
+{
+    const phong::falloff<T> fall{T(1), T(0.5), T(0.25), T(10)};
+    const auto L = phong::light<T>::seed000(vec4<T>(1, 2, 3, 0), vec3<T>(0.25, 0.5, 0.75), fall);
+    CHECK(L.position == vec4<T>(1, 2, 3, 0));
+    CHECK(L.diffuse == vec3<T>(0.25, 0.5, 0.75));
+    CHECK(L.specular == vec3<T>(0.25, 0.5, 0.75));
+    CHECK(L.ambient == vec3<T>(0));
+    CHECK(L.attenuation.linear == T(0.5));
+    CHECK(L.attenuation.range == T(10));
+    // Defaults: no attenuation (f = 1), no spot.
+    const phong::light<T> d{};
+    CHECK(d.attenuation.constant == T(1));
+    CHECK(d.attenuation.linear == T(0));
+    CHECK(d.attenuation.quadratic == T(0));
+    CHECK(d.spot.cos_cutoff == T(-1));
+}
+
 TEST_CASE_TEMPLATE("validate(light): each documented rejection", T, float, double)
 {
     using light = phong::light<T>;
