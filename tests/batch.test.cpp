@@ -331,3 +331,4 @@ TEST_CASE("batch lane kernels: log, exp, pow and (1 - x)^m within their publishe
     CHECK(worst_pow1m <= 1.0);
 }
 #endif
+

@@ -1,0 +1,79 @@
+// batch.hpp on the stiff and extreme input classes of phong/accuracy.hpp: shade_batch in stable
+// mode stays within the stable mode's published bounds (the same constants the scalar path is held
+// to), produces no NaN/inf for finite input, and NaN in every channel for non-finite geometry.
+#include "support/numeric.hpp"
+#include "support/reference.hpp"
+#include "support/stiff_classes.hpp"
+
+#include <phong/accuracy.hpp>
+#include <phong/batch.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace phong;
+using namespace phong_test;
+
+namespace {
+
+/// shade_batch on W + 1 copies of each scene (a full step and a tail), every lane compared with
+/// lane 0, lane 0 against the reference: the batch path's error statistics over one class.
+template <features F, class T>
+error_stats measure_batch(const std::vector<phong_test::stiff_scene<T>>& scenes, std::size_t& lanes_disagree)
+{
+    error_accumulator acc;
+    const std::size_t n = batch_width<T> + 1;
+    std::vector<T> px, py, pz, nx, ny, nz, r(n), g(n), b(n);
+    for (const phong_test::stiff_scene<T>& s : scenes) {
+        px.assign(n, s.position.x), py.assign(n, s.position.y), pz.assign(n, s.position.z);
+        nx.assign(n, s.normal.x), ny.assign(n, s.normal.y), nz.assign(n, s.normal.z);
+        shade_batch<F>(soa3<T>{px, py, pz}, soa3<T>{nx, ny, nz}, s.material, std::span<const light<T>>(s.lights),
+                       soa_rgba<T>{r, g, b, {}}, s.environment);
+        const wcolor ref = reference_scene(F, s);
+        for (std::size_t i = 1; i < n; ++i)
+            if (std::memcmp(&r[i], &r[0], sizeof(T)) != 0 || std::memcmp(&b[i], &b[0], sizeof(T)) != 0) ++lanes_disagree;
+        acc.add<T>(r[0], ref.r);
+        acc.add<T>(g[0], ref.g);
+        acc.add<T>(b[0], ref.b);
+    }
+    return acc.summary();
+}
+
+template <class T, specular_model S> void check_batch_classes()
+{
+    using phong::accuracy::input_class;
+    constexpr features F = phong::accuracy::measured_features(evaluation::stable, S);
+    for (std::size_t c = 0; c < phong::accuracy::input_class_count; ++c) {
+        const auto cls = static_cast<input_class>(c);
+        const auto scenes = make_class<T>(cls, 300, 500 + c);
+        std::size_t disagree = 0;
+        const error_stats e = measure_batch<F>(scenes, disagree);
+        const phong::accuracy::bound bound = phong::accuracy::of<evaluation::stable, T>(cls);
+        CAPTURE(std::string(phong::accuracy::name(cls)));
+        CAPTURE(e.p99_ulp);
+        CAPTURE(e.max_ulp);
+        CAPTURE(e.max_rel);
+        MESSAGE(std::string(phong::accuracy::name(cls)) << (sizeof(T) == 4 ? " float " : " double ") << (S == specular_model::phong ? "phong" : "blinn")
+                << ": p99 " << e.p99_ulp << " max " << e.max_ulp << " ulp, max rel " << e.max_rel << ", non-finite " << e.non_finite);
+        CHECK(disagree == 0);
+        if (cls == input_class::non_finite) {
+            CHECK(e.non_finite == e.channels); // NaN in every channel
+            continue;
+        }
+        CHECK(e.non_finite == 0);
+        CHECK(e.p99_ulp <= bound.p99_ulp);
+        CHECK(e.max_ulp <= bound.max_ulp);
+        CHECK(e.max_rel <= bound.max_rel);
+    }
+}
+
+} // namespace
+
+TEST_CASE_TEMPLATE("shade_batch stable: every stiff and extreme class within the published stable bound", T, float, double)
+{
+    check_batch_classes<T, specular_model::phong>();
+    check_batch_classes<T, specular_model::blinn>();
+}
