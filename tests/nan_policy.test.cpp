@@ -156,6 +156,13 @@ TEST_CASE_TEMPLATE("NaN policy: finite degenerate input gives finite output", T,
     for_each_feature_set<T>([&](scene<T>& s) { s.lights[0].position.w = top; }, check_finite);
     for_each_feature_set<T>([&](scene<T>& s) { s.env.eye.w = top; }, check_finite);
     for_each_feature_set<T>([&](scene<T>& s) { s.lights[0].position = glm::vec<4, T>(top, -top, top, T(1)); s.position = glm::vec<3, T>(-top, top, -top); }, check_finite);
+    // A far light exactly opposite the viewer (l = -v in the high parts, l + v carried only by the
+    // rounding errors): the stable Blinn halfway vector used to overflow its low part (NaN).
+    for_each_feature_set<T>([&](scene<T>& s) {
+        s.position = glm::vec<3, T>(T(11.875));
+        s.env.eye = glm::vec<4, T>(T(0), T(1), T(0), T(0));
+        s.lights[0].position = glm::vec<4, T>(T(1), -top, T(1), T(1));
+    }, check_finite);
 }
 
 TEST_CASE_TEMPLATE("NaN policy: an OpenGL spot aimed at the point with a huge exponent stays finite, spot <= 1", T, float, double)

@@ -232,6 +232,11 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
                 for (int k = 0; k < 3; ++k) {
                     sum[k] = l[k] + v[k];
                     sum_lo[k] = detail::two_sum_error(l[k], v[k], sum[k]) + (l_lo[k] + s.view_lo[k]);
+                    // Renormalize: where l and v cancel in the high parts, lo can exceed hi, and
+                    // unit_of (which scales by the high parts) then overflows lo to inf (NaN out).
+                    const T t = sum[k] + sum_lo[k];
+                    sum_lo[k] = detail::two_sum_error(sum[k], sum_lo[k], t);
+                    sum[k] = t;
                 }
                 const unit_twofold<T, Q> h = detail::unit_of(sum, sum_lo); // l = -v: h = 0, x = 1
                 spec = phong::pow_one_minus(phong::select(h.inv_scaled > T(0), detail::one_minus_nh(n, s.normal_lo, h.hi, h.lo), T(1)), m);
