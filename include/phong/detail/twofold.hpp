@@ -9,6 +9,11 @@
 // left is a few eps from the final roundings, log1p and exp (bounds in phong/accuracy.hpp).
 // Everything is branch-free (select), constexpr, and written on a scalar-like T so that the same
 // code runs on SIMD batches (it needs only +, -, *, /, phong::sqrt, phong::fma and select).
+// Requirement: phong::fma(a, b, c) must round once (math.hpp's contract), so fma(a, b, -a*b) is
+// the exact error of the product. A math_traits whose fma is a*b + c (xsimd::fma on targets
+// without FMA instructions) silently turns every error term into 0 and the stable mode back into
+// a ~sqrt(m) eps method; such a type must emulate fma exactly (Dekker's product, as
+// math_traits::dekker_fma does for constant evaluation).
 #pragma once
 
 #include "../vector.hpp"
