@@ -11,9 +11,9 @@
 // code runs on SIMD batches (it needs only +, -, *, /, phong::sqrt, phong::fma and select).
 // Requirement: phong::fma(a, b, c) must round once (math.hpp's contract), so fma(a, b, -a*b) is
 // the exact error of the product. A math_traits whose fma is a*b + c (Debian's xsimd 8.1: its
-// generic fma, used for every arch but fma3<sse>, AVX-512 included) silently turns every error term into 0 and the stable mode back into
-// a ~sqrt(m) eps method; such a type must emulate fma exactly (Dekker's product, as
-// math_traits::dekker_fma does for constant evaluation).
+// generic fma, used for every arch but fma3<sse>, AVX-512 included) silently turns every error
+// term into 0 and the stable mode back into a ~sqrt(m) eps method; such a type must emulate fma
+// exactly (Dekker's product, as math_traits::dekker_fma does for constant evaluation).
 #pragma once
 
 #include "../vector.hpp"
