@@ -406,7 +406,7 @@ template <features F, class T> sweep_result sweep(std::uint64_t seed, int count)
 
 template <class T, std::size_t... I> void sweep_all(std::index_sequence<I...>)
 {
-    double worst = 0, worst_eps = 0, worst_m = 0;
+    double worst = 0, worst_eps = 0, worst_m = 0, worst_stable_eps = 0;
     int scenes = 0;
     (
         [&] {
@@ -425,11 +425,12 @@ template <class T, std::size_t... I> void sweep_all(std::index_sequence<I...>)
             CHECK(r.scenes >= 30); // the filter must leave most scenes
             worst = std::max(worst, r.worst);
             if (r.worst_eps > worst_eps) worst_eps = r.worst_eps, worst_m = r.worst_m;
+            if (F.mode == evaluation::stable) worst_stable_eps = std::max(worst_stable_eps, r.worst_eps);
             scenes += r.scenes;
         }(),
         ...);
     MESSAGE("shade vs reference: " << scenes << " scenes, worst error " << worst_eps << " eps (at m = " << worst_m
-                                   << "), worst error / tolerance " << worst);
+                                   << "), stable mode " << worst_stable_eps << " eps, worst error / tolerance " << worst);
 }
 } // namespace
 

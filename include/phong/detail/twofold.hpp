@@ -48,13 +48,21 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& dlo)
 {
     using vec3 = glm::vec<3, T, Q>;
-    const T largest_d = phong::max_abs(d);
-    const mask_t<T> in_range = largest_d <= largest<T>();
+    // Renormalize d + dlo first (then |dlo| <= ulp(d) / 2): where d cancels, as L.xyz - w Q does
+    // with an inexact w Q, the caller's dlo can be a sizeable fraction of d, and the O(dlo^2)
+    // terms dropped below would leave |hi + lo| off 1 by that much (a 4% bright diffuse term).
+    vec3 dh(T(0)), dl(T(0));
+    for (int k = 0; k < 3; ++k) {
+        dh[k] = d[k] + dlo[k];
+        dl[k] = two_sum_error(d[k], dlo[k], dh[k]);
+    }
+    const T largest_d = phong::max_abs(dh);
+    const mask_t<T> in_range = math_traits<T>::both(phong::max_abs(d) <= largest<T>(), largest_d <= largest<T>());
     const T scale = math_traits<T>::inverse_pow2_scale(phong::select(in_range, largest_d, T(1)));
     vec3 a(T(0)), al(T(0));
     for (int k = 0; k < 3; ++k) {
-        a[k] = phong::select(in_range, d[k] * scale, T(0));
-        al[k] = phong::select(in_range, dlo[k] * scale, T(0)); // dlo is NaN when d overflowed
+        a[k] = phong::select(in_range, dh[k] * scale, T(0));
+        al[k] = phong::select(in_range, dl[k] * scale, T(0)); // NaN when d overflowed
     }
     // S = |a + al|^2 = sh + sl (products exact by fma, sums by TwoSum; al^2 is below eps^2).
     T sh = a[0] * a[0];
