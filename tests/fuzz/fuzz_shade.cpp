@@ -162,10 +162,10 @@ struct scene {
 template <int L, class T> void print(const char* name, const glm::vec<L, T>& v)
 {
     std::fprintf(stderr, "  %s = (", name);
-    for (int k = 0; k < L; ++k) std::fprintf(stderr, "%s%.9Lg", k ? ", " : "", static_cast<wide>(v[k]));
+    for (int k = 0; k < L; ++k) std::fprintf(stderr, "%s%.17Lg", k ? ", " : "", static_cast<wide>(v[k]));
     std::fprintf(stderr, ")\n");
 }
-template <class T> void print(const char* name, T x) { std::fprintf(stderr, "  %s = %.9Lg\n", name, static_cast<wide>(x)); }
+template <class T> void print(const char* name, T x) { std::fprintf(stderr, "  %s = %.17Lg\n", name, static_cast<wide>(x)); }
 
 template <class T> const scene<T>* current = nullptr;
 std::size_t current_features = 0;
@@ -175,7 +175,7 @@ template <class T> void describe()
 {
     const scene<T>& s = *current<T>;
     std::fprintf(stderr, "features #%zu, out = (", current_features);
-    for (int c = 0; c < last_channels; ++c) std::fprintf(stderr, "%s%.9Lg", c ? ", " : "", last_out[c]);
+    for (int c = 0; c < last_channels; ++c) std::fprintf(stderr, "%s%.17Lg", c ? ", " : "", last_out[c]);
     std::fprintf(stderr, ")\nscene (%s, front_facing %d, %zu lights):\n", sizeof(T) == 4 ? "float" : "double", s.front_facing, s.count);
     print("Q", s.position), print("n", s.normal), print("La", s.env.ambient), print("eye", s.env.eye);
     print("ka", s.mat.ka), print("kd", s.mat.kd), print("ks", s.mat.ks), print("emission", s.mat.emission);
