@@ -89,7 +89,8 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
         } else if constexpr (F.view == view_model::orthographic) {
             e = vec3(env.eye.x, env.eye.y, env.eye.z);
         } else {
-            const vec3 p = position * env.eye.w;
+            vec3 p(T(0));
+            for (int k = 0; k < 3; ++k) p[k] = detail::rounded_product(position[k], env.eye.w);
             e = vec3(env.eye.x, env.eye.y, env.eye.z) - p;
             for (int k = 0; k < 3; ++k)
                 e_lo[k] = detail::two_sum_error(env.eye[k], -p[k], e[k]) - phong::fma(env.eye.w, position[k], -p[k]);
@@ -158,7 +159,9 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
             for (int k = 0; k < 3; ++k) lo[k] = difference_error(Lxyz[k], s.position[k], d[k]);
     } else {
         w = L.position.w;
-        const vec3 p = s.position * w;
+        vec3 p = s.position * w;
+        if constexpr (stable) // a product the compiler may not fuse into L - p (twofold.hpp)
+            for (int k = 0; k < 3; ++k) p[k] = detail::rounded_product(s.position[k], w);
         d = Lxyz - p;
         if constexpr (stable)
             for (int k = 0; k < 3; ++k)
