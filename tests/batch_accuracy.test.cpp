@@ -48,6 +48,11 @@ template <class T, specular_model S> void check_batch_classes()
     constexpr features F = phong::accuracy::measured_features(evaluation::stable, S);
     for (std::size_t c = 0; c < phong::accuracy::input_class_count; ++c) {
         const auto cls = static_cast<input_class>(c);
+        // Without __float128 (clang: no quadmath.h) the reference is long double, whose own error
+        // exceeds these double bounds (see tests/accuracy.test.cpp): checked by the g++ build only.
+        if (wide_digits < 113 && sizeof(T) == 8 &&
+            (cls == input_class::shininess_1e4 || cls == input_class::shininess_1e5 || cls == input_class::grazing))
+            continue;
         const auto scenes = make_class<T>(cls, 300, 500 + c);
         std::size_t disagree = 0;
         const error_stats e = measure_batch<F>(scenes, disagree);
