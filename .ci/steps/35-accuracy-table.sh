@@ -2,12 +2,23 @@
 # The README's accuracy table on a fresh seed and a sample larger than the test's: every class,
 # both modes, float and double, must stay within the published bounds of phong/accuracy.hpp
 # (--bounds flags a row "ABOVE BOUND" and exits 1). Uses the Release build of step 10 (~30 s).
+# Then the same with FMA instructions enabled (GCC fuses products into sums under its default
+# -ffp-contract=fast; the stable mode's error-free transformations must survive that).
 set -euo pipefail
 cmake --preset gcc-release >/dev/null
 cmake --build build/gcc-release --target phong_accuracy_table
-out=$(mktemp)
-if ! build/gcc-release/tests/phong_accuracy_table 20000 3 --bounds >"$out"; then
-  grep "ABOVE BOUND" "$out"
-  exit 1
+check() { # binary seed
+  local out
+  out=$(mktemp)
+  if ! "$1" 20000 "$2" --bounds >"$out"; then
+    grep "ABOVE BOUND" "$out"
+    exit 1
+  fi
+  echo "accuracy table ($1): every class within its published bound (20000 scenes per class, seed $2)"
+}
+check build/gcc-release/tests/phong_accuracy_table 3
+if grep -qw fma /proc/cpuinfo; then
+  g++ -std=gnu++20 -O2 -mfma -DNDEBUG -DPHONG_HAVE_QUADMATH=1 -Iinclude -Itests tests/accuracy_table.cpp \
+      -o build/phong_accuracy_table_fma -lquadmath
+  check build/phong_accuracy_table_fma 4
 fi
-echo "accuracy table: every class within its published bound (20000 scenes per class, seed 3)"
