@@ -31,6 +31,7 @@
 #include <cstddef>
 #include <limits>
 #include <span>
+#include <time.h> // clock_gettime, CLOCK_THREAD_CPUTIME_ID (POSIX)
 #include <vector>
 
 namespace phong_demo {
@@ -240,12 +241,26 @@ void shade_pass(const scene& sc, const camera& cam, const std::vector<hit_record
     }
 }
 
-/// Seconds spent in each pass of one frame.
+/// Seconds spent in each pass of one frame: wall-clock time, and the CPU time of the rendering
+/// thread (the renderer is single-threaded; on a machine shared with other jobs the CPU time is
+/// the steadier figure, as time spent descheduled is not counted).
 struct frame_time {
-    double intersect = 0.0;
-    double shade = 0.0;
+    double intersect = 0.0, shade = 0.0;         ///< wall clock
+    double intersect_cpu = 0.0, shade_cpu = 0.0; ///< thread CPU time (= wall clock where unavailable)
     double total() const { return intersect + shade; }
+    double total_cpu() const { return intersect_cpu + shade_cpu; }
 };
+
+/// The calling thread's CPU time in seconds (POSIX CLOCK_THREAD_CPUTIME_ID), or the steady clock
+/// where that clock does not exist.
+inline double thread_seconds()
+{
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+    timespec ts{};
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) == 0) return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+#endif
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 /// Renders one frame: the intersection pass, then shading with features F.
 template <phong::features F>
@@ -253,11 +268,14 @@ frame_time render(const scene& sc, const camera& cam, image& out, std::vector<hi
 {
     using clock = std::chrono::steady_clock;
     const auto t0 = clock::now();
+    const double c0 = thread_seconds();
     intersect(sc, cam, gbuffer);
     const auto t1 = clock::now();
+    const double c1 = thread_seconds();
     shade_pass<F>(sc, cam, gbuffer, out);
     const auto t2 = clock::now();
-    return {std::chrono::duration<double>(t1 - t0).count(), std::chrono::duration<double>(t2 - t1).count()};
+    const double c2 = thread_seconds();
+    return {std::chrono::duration<double>(t1 - t0).count(), std::chrono::duration<double>(t2 - t1).count(), c1 - c0, c2 - c1};
 }
 
 /// The demo's lighting: ambient, diffuse, specular (reflection- or halfway-based, gated on n.l > 0
