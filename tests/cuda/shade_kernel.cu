@@ -60,6 +60,9 @@ __global__ void scalar_api(const glm::dvec3* points, double* out, int count)
     r += phong::dot(phong::faceforward(n, -v, n), normalize_unscaled(q)) + dot_compensated(n, l) + phong::pow<5>(0.5);
     r += phong::sqrt(2.0) + phong::exp(0.5) + phong::log(2.0) + phong::log1p(1e-9) + phong::pow(2.0, 0.5);
     r += phong::fma(1.0, 2.0, 3.0) + phong::clamp(r, 0.0, 1e9) + pow_one_minus(0.25, 3.0) + cos_degrees(30.0);
+    r += phong::dot(sphere_normal(q), cube_normal(q)) + tapered_cylinder_wall_normal(q, 0.5).z;
+    r += ray_sphere(glm::dvec3(0, 0, 5), glm::dvec3(0, 0, -1)).t + ray_tapered_cylinder(glm::dvec3(0, 0, 5), glm::dvec3(0, 0, -1), 0.5).t;
+    r += ray_cube(glm::dvec3(0, 0, 5), glm::dvec3(0, 0, -1)).t + accuracy::of<evaluation::stable, double>(accuracy::input_class::well_conditioned).p99_ulp;
     r += validate(material<double>{}) ? 1.0 : 0.0;
     r += validate(light<double>{}) ? 1.0 : 0.0;
     out[i] = r;
