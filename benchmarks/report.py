@@ -72,7 +72,7 @@ def main():
     md = []
     w = md.append
 
-    variants = sorted({k[0] for k in rows if not k[0].startswith("feature.")}, key=order)
+    variants = sorted({k[0] for k in rows if not k[0].startswith(("feature.", "class."))}, key=order)
     n_cache = 65536
     ks = sorted({k[2] for k in rows if k[1] == "typical" and k[3] == n_cache and not k[0].startswith("feature.")})
 
@@ -86,7 +86,8 @@ def main():
     load_avg = ctx.get("load_avg", [])
     w("# phong benchmark report\n")
     w(f"{ctx.get('date', '')}, {ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, "
-      f"build {ctx.get('library_build_type', '?')} (Google Benchmark's own build type), "
+      f"phong code built Release -O3 -march=native (g++; the Debian Google Benchmark library itself "
+      f"reports build type {ctx.get('library_build_type', '?')}, which does not affect the timed loops), "
       f"load average at start {', '.join(f'{x:.2f}' for x in load_avg)}.\n")
     w("Times are medians of the repetitions, CPU time per (point, light) = time / (N K). Speed-up is the naive GLM "
       "baseline's time over the row's (same specular model and number type; > 1 is faster). Errors are per colour "
@@ -144,6 +145,28 @@ def main():
                 if r:
                     w(f"| {v} | {st} | {r['ns']:.2f} | {fmt_err(r['max_rel'])} | {r['p99_ulp']:.1f} | "
                       f"{r['max_ulp']:.1f} | {r['nan']} | {fmt_bound(r['bound'])} |")
+        w("")
+
+    # Accuracy classes of phong/accuracy.hpp.
+    classes = sorted({k[1] for k in rows if k[0].startswith("class.")})
+    if classes:
+        w("## Input classes of phong/accuracy.hpp (scalar path, one scene per point, the bounds' feature set)\n")
+        w("Generators of tests/support/stiff_classes.hpp (4096 scenes each, 1-3 lights), features "
+          "`accuracy::measured_features(mode, specular)`: each row's error beside the bound it must respect.\n")
+        w("| variant | class | ns / pair | max_rel_err | p99_ulp | max_ulp | NaN | bound (max_rel) | within |")
+        w("|---|---|---:|---:|---:|---:|---:|---:|---|")
+        pref_c = ["well_conditioned", "shininess_1e4", "grazing", "near_light_1e20", "huge_1e20"]
+        classes.sort(key=lambda c: pref_c.index(c) if c in pref_c else 99)
+        cvars = sorted({k[0] for k in rows if k[0].startswith("class.")},
+                       key=lambda v: (v.split(".")[3] != "float", v.split(".")[1], v.split(".")[2]))
+        for c in classes:
+            for v in cvars:
+                r = rows.get((v, c, 1, 4096))
+                if not r:
+                    continue
+                within = "–" if r["bound"] < 0 else ("yes" if r["max_rel"] <= r["bound"] else "**NO**")
+                w(f"| {v} | {c} | {r['ns']:.2f} | {fmt_err(r['max_rel'])} | {r['p99_ulp']:.1f} | "
+                  f"{r['max_ulp']:.3g} | {r['nan']} | {fmt_bound(r['bound'])} | {within} |")
         w("")
 
     # Scaling with K.
@@ -233,7 +256,7 @@ def plot(rows, variants, ks, n_cache, stiff_sets, out_dir):
     png = os.path.join(out_dir, "error_vs_time.png")
     colours = {"naive_glm": "#000000", "scalar": "#1f77b4", "batch": "#d62728"}
     cmds = [
-        "set terminal pngcairo size 1100,700 font 'sans,10'",
+        "set terminal pngcairo size 1100,700 font 'sans,10' noenhanced",
         f"set output '{png}'",
         "set logscale xy",
         "set format y '10^{%L}'",

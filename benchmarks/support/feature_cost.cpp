@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -84,6 +85,8 @@ inline float poison(const vec3& q, const vec3& n)
     return (q.x * 0.0f + q.y * 0.0f + q.z * 0.0f) + (n.x * 0.0f + n.y * 0.0f + n.z * 0.0f);
 }
 inline float dot3(const vec3& a, const vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+// The exact mode drops a vector whose squared length is below the smallest normal float.
+constexpr float tiny = std::numeric_limits<float>::min();
 
 } // namespace
 
@@ -101,14 +104,14 @@ FC_KERNEL fc_hand_diffuse_directional(const vec3* q, const vec3* n, std::size_t 
 {
     for (std::size_t i = 0; i < count; ++i) {
         const float nn = dot3(n[i], n[i]);
-        const vec3 nh = n[i] * (nn > 0 ? 1 / std::sqrt(nn) : 0.0f);
-        const float qq = dot3(q[i], q[i]); // Q at the eye (or |Q|^2 out of range): no diffuse
-        const bool defined = nn > 0 && nn < INFINITY && qq > 0 && qq < INFINITY;
+        const vec3 nh = n[i] * (nn >= tiny ? 1 / std::sqrt(nn) : 0.0f);
+        const float qq = dot3(q[i], q[i]); // Q at the eye (|Q|^2 subnormal or overflowed): no diffuse
+        const bool defined = nn >= tiny && nn < INFINITY && qq >= tiny && qq < INFINITY;
         vec3 sum(0);
         for (std::size_t j = 0; j < k; ++j) {
             const vec3 d(L[j].position.x, L[j].position.y, L[j].position.z);
             const float dd = dot3(d, d);
-            const float inv = dd > 0 ? 1 / std::sqrt(dd) : 0.0f;
+            const float inv = dd >= tiny ? 1 / std::sqrt(dd) : 0.0f;
             const float nl = dot3(nh, d * inv);
             sum += L[j].diffuse * ((defined && inv > 0) ? (nl < 0 ? 0.0f : nl) : 0.0f);
         }
@@ -129,15 +132,15 @@ FC_KERNEL fc_hand_ads(const vec3* q, const vec3* n, std::size_t count, const lig
 {
     for (std::size_t i = 0; i < count; ++i) {
         const float qq = dot3(q[i], q[i]);
-        const vec3 v = -q[i] * (qq > 0 ? 1 / std::sqrt(qq) : 0.0f);
+        const vec3 v = -q[i] * (qq >= tiny ? 1 / std::sqrt(qq) : 0.0f);
         const float nn = dot3(n[i], n[i]);
-        const vec3 nh = n[i] * (nn > 0 ? 1 / std::sqrt(nn) : 0.0f);
+        const vec3 nh = n[i] * (nn >= tiny ? 1 / std::sqrt(nn) : 0.0f);
         const bool defined = dot3(nh, nh) > 0 && dot3(v, v) > 0;
         vec3 ambient(0), diffuse(0), specular(0);
         for (std::size_t j = 0; j < k; ++j) {
             const vec3 d = vec3(L[j].position.x, L[j].position.y, L[j].position.z) - q[i];
             const float dd = dot3(d, d);
-            const float inv = dd > 0 ? 1 / std::sqrt(dd) : 0.0f;
+            const float inv = dd >= tiny ? 1 / std::sqrt(dd) : 0.0f;
             const vec3 l = d * inv;
             const float nl = dot3(nh, l);
             const bool lit = defined && inv > 0;

@@ -42,7 +42,7 @@ struct surface_frame {
     glm::vec<3, T, Q> normal;        ///< unit normal after two-sided negation (0 if undefined)
     glm::vec<3, T, Q> normal_scaled; ///< stable: the same normal before its last rounding, rescaled exactly
     T inv_normal_length;             ///< stable: 1 / |normal_scaled|
-    glm::vec<3, T, Q> view;          ///< unit view vector v (0 if undefined)
+    glm::vec<3, T, Q> view;          ///< unit view vector v (0 if undefined; exact mode without a term reading v: 1 or 0)
     glm::vec<3, T, Q> normal_lo{T(0)}; ///< stable: rounding error of normal (normal + normal_lo to O(eps^2))
     glm::vec<3, T, Q> view_lo{T(0)};   ///< stable: rounding error of view
     mask_t<T> defined;               ///< normal and view both nonzero
@@ -104,7 +104,15 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
         s.normal_scaled = phong::rescaled(normal);
         s.inv_normal_length = un.inv_scaled;
     } else if constexpr (F.view == view_model::perspective) {
-        s.view = unit<F>(-position);
+        if constexpr (F.specular == specular_model::none && F.two_sided != facing::view) {
+            // No term reads v, only `defined` (Q not at the eye): unit<F>(-Q) is nonzero exactly when
+            // exact_min_square <= |Q|^2 <= max, so test that (a removed specular term then leaves no
+            // normalization of v behind; checked by benchmarks/feature_cost.sh).
+            const T qq = phong::dot(position, position);
+            s.view = vec3(phong::select(math_traits<T>::both(qq >= exact_min_square<T>(), qq <= largest<T>()), T(1), T(0)));
+        } else {
+            s.view = unit<F>(-position);
+        }
     } else if constexpr (F.view == view_model::orthographic) {
         s.view = phong::normalize(vec3(env.eye.x, env.eye.y, env.eye.z));
     } else {
