@@ -265,7 +265,7 @@ def plot(rows, variants, ks, n_cache, stiff_sets, out_dir):
         "set terminal pngcairo size 1100,700 font 'sans,10' noenhanced",
         f"set output '{png}'",
         "set logscale xy",
-        "set format y '10^{%L}'",
+        "set format y '1e%L'",
         "set xlabel 'time per (point, light) [ns], median'",
         "set ylabel 'max relative error per channel vs __float128 reference'",
         "set title 'phong: error against time (typical inputs, N = 65536; points along a line: K = 1, 4, 16, 64)'",
