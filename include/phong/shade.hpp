@@ -180,13 +180,54 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
     T nl, length_d, inv;
     [[maybe_unused]] vec3 l_lo(T(0)); // stable: l + l_lo and nl + nl_lo to O(eps^2) (detail/twofold.hpp)
     [[maybe_unused]] T nl_lo = T(0);
-    if constexpr (stable) {
+    // Stable mode, two depths. Twofold (the default): l, n.l and the specular chords to about
+    // eps^2. With F.stable_twofold_above = M > 0, pairs whose shininess is at most M (and whose
+    // l + v does not nearly cancel, for Blinn) round each component once instead: the rounding
+    // moves the specular factor by about sqrt(m) eps, and the cost drops to about a third.
+    // A SIMD batch goes twofold when any of its lanes needs it.
+    [[maybe_unused]] bool twofold = true;
+    if constexpr (stable && F.stable_twofold_above > 0) {
+        if constexpr (F.specular == specular_model::none) twofold = false;
+        else twofold = math_traits<T>::any(m > T(F.stable_twofold_above));
+    }
+    [[maybe_unused]] const auto twofold_light = [&] {
         const unit_twofold<T, Q> u = detail::unit_of(d, lo); // rescaled: any finite nonzero d
         l = u.hi;
         l_lo = u.lo;
         inv = u.inv_scaled;
         detail::dot_twofold(s.normal, s.normal_lo, l, l_lo, nl, nl_lo);
         length_d = u.length;
+    };
+    if constexpr (stable) {
+        if (twofold) {
+            twofold_light();
+        } else {
+            // d rescaled by a power of two (exact: huge and tiny d survive), l rounded once, and
+            // n.l compensated on the exact d = hi + lo and the exact (rescaled) normal.
+            const T largest_d = phong::max_abs(d);
+            const mask_t<T> in_range = largest_d <= largest<T>(); // an overflowed d has no direction
+            const T scale = math_traits<T>::inverse_pow2_scale(phong::select(in_range, largest_d, T(1)));
+            vec3 hs(T(0)), ls(T(0));
+            for (int k = 0; k < 3; ++k) {
+                hs[k] = phong::select(in_range, d[k] * scale, T(0));
+                ls[k] = phong::select(in_range, lo[k] * scale, T(0)); // lo is NaN when d overflowed
+            }
+            const T dd = phong::dot(hs, hs);
+            inv = phong::select(dd > T(0), phong::rsqrt(phong::select(dd > T(0), dd, T(1))), T(0));
+            l = hs * inv;
+            T nh, nlo;
+            detail::dot_twofold(s.normal_scaled, vec3(T(0)), hs, ls, nh, nlo);
+            nl = (nh + nlo) * (s.inv_normal_length * inv);
+            length_d = phong::select(in_range, phong::sqrt(dd) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
+            if constexpr (F.specular == specular_model::blinn) {
+                // l + v nearly cancels (|l + v| < 2^-10): h from once-rounded l and v is noise there.
+                const vec3 lv = l + s.view;
+                if (math_traits<T>::any(phong::dot(lv, lv) < T(1.0 / 1048576))) {
+                    twofold = true;
+                    twofold_light();
+                }
+            }
+        }
     } else {
         const T dd = phong::dot(d, d);
         inv = phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
@@ -231,13 +272,24 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         if (math_traits<T>::any(on)) {
             if constexpr (F.specular == specular_model::phong) {
                 if constexpr (stable) {
-                    // 1 - r.v = |r - v|^2 / 2, the chord r - v = 2 (n.l) n - l - v formed twofold.
-                    spec = phong::pow_one_minus(detail::one_minus_rv(n, s.normal_lo, nl, nl_lo, l, l_lo, v, s.view_lo), m);
+                    // 1 - r.v = |r - v|^2 / 2, the chord r - v = 2 (n.l) n - l - v (twofold by default).
+                    if (twofold) {
+                        spec = phong::pow_one_minus(detail::one_minus_rv(n, s.normal_lo, nl, nl_lo, l, l_lo, v, s.view_lo), m);
+                    } else {
+                        const vec3 chord = n * (T(2) * nl) - l - v;
+                        spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
+                    }
                 } else {
                     const vec3 r = n * (T(2) * nl) - l; // phong::reflect(-l, n)
                     spec = phong::pow(phong::clamp(phong::dot(r, v), T(0), T(1)), m);
                 }
             } else if constexpr (stable) {
+              if (!twofold) {
+                // h = normalize(l + v) rounded once (l + v does not nearly cancel here); 1 - n.h = |n - h|^2 / 2.
+                const vec3 sum = l + v;
+                const vec3 chord = n - sum * phong::rsqrt(phong::dot(sum, sum));
+                spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
+              } else {
                 // h = normalize(l + v) twofold from the twofold sum; 1 - n.h = |n - h|^2 / 2.
                 vec3 sum(T(0)), sum_lo(T(0));
                 for (int k = 0; k < 3; ++k) {
@@ -251,6 +303,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
                 }
                 const unit_twofold<T, Q> h = detail::unit_of(sum, sum_lo); // l = -v: h = 0, x = 1
                 spec = phong::pow_one_minus(phong::select(h.inv_scaled > T(0), detail::one_minus_nh(n, s.normal_lo, h.hi, h.lo), T(1)), m);
+              }
             } else {
                 const vec3 sum = l + v;
                 const T hh = phong::dot(sum, sum);
