@@ -136,6 +136,10 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     const vec3 zero(T(0));
     s.poison = phong::dot(position, zero) + phong::dot(normal, zero);
     if constexpr (F.view == view_model::eye_point) s.poison += phong::dot(glm::vec<4, T, Q>(env.eye), glm::vec<4, T, Q>(T(0)));
+    // Reading poison here ends the inputs' live ranges before the light loop (they otherwise stay in
+    // registers, spilled around every pow call: -10 instructions per pair, feature_cost.sh); a NaN
+    // point has every channel NaN either way.
+    s.defined = math_traits<T>::both(s.defined, s.poison == T(0));
     return s;
 }
 
