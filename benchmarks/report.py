@@ -60,8 +60,9 @@ def baseline_of(variant):
 
 def order(variant):
     path, mode, spec, typ = variant.split(".")
+    modes = ["exact", "stable_m256", "stable"]
     return (["float", "double"].index(typ), ["naive_glm", "scalar", "batch"].index(path) if path in
-            ("naive_glm", "scalar", "batch") else 9, ["exact", "stable"].index(mode), spec)
+            ("naive_glm", "scalar", "batch") else 9, modes.index(mode) if mode in modes else 9, spec)
 
 
 def main():
@@ -102,7 +103,11 @@ def main():
     for variant, limit, label in (("scalar.exact.phong.float", 1.0, "scalar exact float <= 1.0x GLM baseline"),
                                   ("scalar.exact.blinn.float", 1.0, "scalar exact float (Blinn) <= 1.0x GLM baseline"),
                                   ("scalar.stable.phong.float", 1.5, "scalar stable float <= 1.5x GLM baseline"),
-                                  ("scalar.stable.blinn.float", 1.5, "scalar stable float (Blinn) <= 1.5x GLM baseline")):
+                                  ("scalar.stable.blinn.float", 1.5, "scalar stable float (Blinn) <= 1.5x GLM baseline"),
+                                  ("scalar.stable_m256.phong.float", 1.5,
+                                   "scalar stable float, stable_twofold_above = 256 <= 1.5x GLM baseline"),
+                                  ("scalar.stable_m256.blinn.float", 1.5,
+                                   "scalar stable float (Blinn), stable_twofold_above = 256 <= 1.5x GLM baseline")):
         for K in (1, 4, 16):
             s = speedup(variant, "typical", K, n_cache)
             if s is None:
@@ -275,7 +280,7 @@ def plot(rows, variants, ks, n_cache, stiff_sets, out_dir):
     plots = []
     for i, v in enumerate(series):
         path, mode, spec, typ = v.split(".")
-        dt = 1 if mode == "exact" else 2
+        dt = {"exact": 1, "stable": 2}.get(mode, 3)
         pt = 7 if typ == "float" else 5
         lw = 2 if spec == "phong" else 1
         plots.append(f"'{dat}' index {i} using 1:2 with linespoints dt {dt} pt {pt} lw {lw} "

@@ -35,11 +35,12 @@ namespace {
 
 /// The model every row of this file computes: seed 003's phong.vert summed over positional lights
 /// (per-light ambient, diffuse, specular gated on n.l > 0, eye at the origin).
-constexpr phong::features model(phong::specular_model spec, phong::evaluation mode)
+constexpr phong::features model(phong::specular_model spec, phong::evaluation mode, unsigned twofold_above = 0)
 {
     phong::features f = phong::presets::seed003_ads;
     f.specular = spec;
     f.mode = mode;
+    f.stable_twofold_above = twofold_above; // stable_m256 rows: once-rounded components up to m = 256
     return f;
 }
 
@@ -161,11 +162,15 @@ std::vector<variant> variants_of()
         {"scalar.exact.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::exact)>},
         {"scalar.stable.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::stable)>},
         {"scalar.stable.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::stable)>},
+        {"scalar.stable_m256.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::stable, 256)>},
+        {"scalar.stable_m256.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::stable, 256)>},
 #if defined(PHONG_BENCH_BATCH)
         {"batch.exact.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::exact)>},
         {"batch.exact.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::exact)>},
         {"batch.stable.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::stable)>},
         {"batch.stable.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::stable)>},
+        {"batch.stable_m256.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::stable, 256)>},
+        {"batch.stable_m256.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::stable, 256)>},
 #endif
     };
 }
