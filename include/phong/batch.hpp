@@ -42,110 +42,12 @@ namespace phong {
 #endif
 
 
-namespace detail::lanes {
-
-// Float-lane kernels for the specular power, written for the lighting model's domain (base in
-// [0, 1], exponent m >= 0): no special-value branches beyond that domain, which makes them about
-// half the instructions of xsimd's general exp/log/pow (counted with callgrind: 43 against 86 per
-// lane-vector for pow). Polynomials: cephes' single-precision logf and expf.
-
-/// a * b + c: fused where the hardware has FMA (one instruction, one rounding), a multiply and an
-/// add elsewhere; the polynomials below need no exactness, only speed.
-template <class V> PHONG_LANES_INLINE V mul_add(const V& a, const V& b, const V& c)
-{
-#  if defined(__AVX512F__) || defined(__FMA__)
-    return phong::fma(a, b, c);
-#  else
-    return a * b + c;
-#  endif
-}
-
-/// Largest error, in ulp of the result, of log_normal on [2^-126, 2] and of exp_nonpositive on
-/// [-87.33, 0], measured against __float128 over the whole domain (tests/batch.test.cpp).
-inline constexpr double log_max_ulp = 1.0;
-inline constexpr double exp_max_ulp = 1.5;
-/// Bound, in ulp of the result, of pow_unit(b, m) and pow_one_minus(x, m) = e^y: the relative
-/// error of ln (log_max_ulp) and the rounding of y = m ln(.) are both multiplied by |y| in e^y;
-/// the constant covers exp (exp_max_ulp), the final product and log1p's correction term.
-constexpr double pow_max_ulp(double y) { return 2 * (y < 0 ? -y : y) + 6; }
-
-/// ln(u) for normal, finite u > 0: u = 2^e f with f in [sqrt(1/2), sqrt(2)) by integer
-/// arithmetic on the bits (subtracting the bits of sqrt(1/2) puts the exponent boundary there),
-/// then ln f = x - x^2/2 + x^3 P(x), x = f - 1. Pre: u normal, finite, > 0 (no checks).
-template <class V> PHONG_LANES_INLINE V log_normal(const V& u)
-{
-    using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
-    const IV bits = xsimd::bitwise_cast<IV>(u);
-    const IV e = (bits - IV(0x3f3504f3)) >> 23; // arithmetic shift: floor((bits - bits(sqrt 1/2)) / 2^23)
-    const V x = xsimd::bitwise_cast<V>(bits - (e << 23)) - V(1.0f);
-    const V ef = xsimd::batch_cast<float>(e);
-    const V z = x * x;
-    V p = V(7.0376836292e-2f);
-    p = mul_add(p, x, V(-1.1514610310e-1f));
-    p = mul_add(p, x, V(1.1676998740e-1f));
-    p = mul_add(p, x, V(-1.2420140846e-1f));
-    p = mul_add(p, x, V(1.4249322787e-1f));
-    p = mul_add(p, x, V(-1.6668057665e-1f));
-    p = mul_add(p, x, V(2.0000714765e-1f));
-    p = mul_add(p, x, V(-2.4999993993e-1f));
-    p = mul_add(p, x, V(3.3333331174e-1f));
-    V y = p * x * z;
-    y = mul_add(ef, V(-2.12194440e-4f), y);
-    y = mul_add(z, V(-0.5f), y);
-    return mul_add(ef, V(0.693359375f), x + y);
-}
-
-/// e^y for y <= 0 (y up to 88 also works). Results below the smallest normal float (y < -87.3365)
-/// are flushed to 0 (absolute error < 1.2e-38): subnormal arithmetic would slow the whole batch.
-template <class V> PHONG_LANES_INLINE V exp_nonpositive(const V& y)
-{
-    using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
-    const V yc = xsimd::max(y, V(-87.3365447505f));
-    const V k = xsimd::nearbyint(yc * V(1.44269504088896341f)); // in [-126, 127]
-    V r = mul_add(k, V(-0.693359375f), yc);
-    r = mul_add(k, V(2.12194440e-4f), r);
-    V p = V(1.9875691500e-4f);
-    p = mul_add(p, r, V(1.3981999507e-3f));
-    p = mul_add(p, r, V(8.3334519073e-3f));
-    p = mul_add(p, r, V(4.1665795894e-2f));
-    p = mul_add(p, r, V(1.6666665459e-1f));
-    p = mul_add(p, r, V(5.0000001201e-1f));
-    const V q = mul_add(p, r * r, r) + V(1.0f);
-    const V scale = xsimd::bitwise_cast<V>((xsimd::batch_cast<std::int32_t>(k) + IV(127)) << 23);
-    return xsimd::select(y < V(-87.3365447505f), V(0.0f), q * scale);
-}
-
-/// b^m for b in [0, 1], m >= 0, as exp(m ln b); subnormal b rescaled by 2^24 first;
-/// pow(0, 0) = 1, pow(0, m > 0) = 0.
-template <class V> PHONG_LANES_INLINE V pow_unit(const V& b, const V& m)
-{
-    const auto tiny = b < V(1.17549435e-38f);
-    const V scaled = xsimd::max(xsimd::select(tiny, b * V(16777216.0f), b), V(1.17549435e-38f));
-    const V lg = log_normal(scaled) - xsimd::select(tiny, V(16.6355323334f), V(0.0f)); // 24 ln 2
-    const V r = exp_nonpositive(m * lg);
-    return xsimd::select(b > V(0.0f), r, xsimd::select(m == V(0.0f), V(1.0f), V(0.0f)));
-}
-
-/// (1 - x)^m for x >= 0 (clamped to 1), m >= 0, as exp(m log1p(-x)) with
-/// log1p(-x) = ln(u) + ((-x) - (u - 1)) / u, u = 1 - x rounded: the second term restores the bits
-/// of x lost in 1 - x (exactly: u - 1 and the subtraction are exact by Sterbenz), and needs 1/u
-/// only to a few bits, so the hardware reciprocal estimate serves. x = 1 gives 0 (1 for m = 0).
-template <class V> PHONG_LANES_INLINE V pow_one_minus(const V& x, const V& m)
-{
-    const V xc = xsimd::min(x, V(1.0f));
-    const V u = V(1.0f) - xc;
-    const V safe_u = xsimd::max(u, V(1.17549435e-38f)); // u is 0 or >= 2^-24
-    const V lg = log_normal(safe_u) + ((-xc) - (u - V(1.0f))) * xsimd::reciprocal(safe_u);
-    const V r = exp_nonpositive(m * lg);
-    return xsimd::select(u > V(0.0f), r, xsimd::select(m == V(0.0f), V(1.0f), V(0.0f)));
-}
-
-} // namespace detail::lanes
 
 /// math_traits for xsimd batches: every kernel of math.hpp, lane-wise. exp, log and log1p are
-/// xsimd's (vectorized, within a few ulp; faster than the cephes-style kernels we measured
-/// against them); float rsqrt is the hardware estimate refined by one Newton step. pow is
-/// exp(y log x) restricted to x >= 0 with IEEE's pow(0, 0) = 1 (xsimd's own pow returns 0 there).
+/// xsimd's (vectorized, within a few ulp); float rsqrt is the hardware estimate refined by one
+/// Newton step; fma is the fused instruction. pow is exp(y log x) restricted to x >= 0 with IEEE's
+/// pow(0, 0) = 1 (xsimd's own pow returns 0 there). Domain-specific cephes-style exp/log kernels
+/// were tried: fewer instructions, but twice the time in the shading loop on this CPU.
 template <class T, class A>
 struct math_traits<xsimd::batch<T, A>> {
     using V = xsimd::batch<T, A>;
@@ -169,29 +71,22 @@ struct math_traits<xsimd::batch<T, A>> {
     PHONG_LANES_INLINE static V exp(const V& x) { return xsimd::exp(x); }
     PHONG_LANES_INLINE static V log(const V& x) { return xsimd::log(x); }
     PHONG_LANES_INLINE static V log1p(const V& x) { return xsimd::log1p(x); }
-    /// x^y for x in [0, 1], y >= 0 (the lighting model's domain): exp(y log x), pow(0, 0) = 1,
-    /// pow(0, y > 0) = 0. Float lanes: detail::lanes::pow_unit.
+    /// x^y for x in [0, 1], y >= 0 (the lighting model's domain): exp(y log x) with xsimd's
+    /// kernels, pow(0, 0) = 1, pow(0, y > 0) = 0 (xsimd's own pow returns 0 for pow(0, 0)).
     PHONG_LANES_INLINE static V pow(const V& x, const V& y)
     {
-        if constexpr (float_lanes) {
-            return detail::lanes::pow_unit(x, y);
-        } else {
-            const V p = exp(y * log(xsimd::select(x > V(T(0)), x, V(T(1)))));
-            return xsimd::select(x > V(T(0)), p, xsimd::select(y == V(T(0)), V(T(1)), V(T(0))));
-        }
+        const V p = xsimd::exp(y * xsimd::log(xsimd::select(x > V(T(0)), x, V(T(1)))));
+        return xsimd::select(x > V(T(0)), p, xsimd::select(y == V(T(0)), V(T(1)), V(T(0))));
     }
-    /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus). Float lanes:
-    /// detail::lanes::pow_one_minus; double lanes: exp(m log1p(-x)) with xsimd's kernels.
+    /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
+    /// xsimd's kernels; x >= 1 gives 0, and 1 for m = 0.
     PHONG_LANES_INLINE static V pow_one_minus(const V& x, const V& m)
     {
-        if constexpr (float_lanes) {
-            return detail::lanes::pow_one_minus(x, m);
-        } else {
-            const V u = V(T(1)) - xsimd::min(x, V(T(1)));
-            const V lg = xsimd::log1p(-xsimd::min(x, V(T(1))));
-            const V r = xsimd::exp(m * xsimd::select(u > V(T(0)), lg, V(T(0))));
-            return xsimd::select(u > V(T(0)), r, xsimd::select(m == V(T(0)), V(T(1)), V(T(0))));
-        }
+        const V xc = xsimd::min(x, V(T(1)));
+        const auto inside = xc < V(T(1));
+        const V lg = xsimd::log1p(-xsimd::select(inside, xc, V(T(0))));
+        const V r = xsimd::exp(m * lg);
+        return xsimd::select(inside, r, xsimd::select(m == V(T(0)), V(T(1)), V(T(0))));
     }
     /// a * b + c rounded once. xsimd 8.1's fma is a separate multiply and add on AVX-512 and on
     /// targets without FMA (found by the stable mode's error-free products losing their error

@@ -194,15 +194,15 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         if constexpr (F.specular == specular_model::none) twofold = false;
         else twofold = math_traits<T>::any(m > T(F.stable_twofold_above));
     }
-    [[maybe_unused]] const auto twofold_light = [&] {
-        const unit_twofold<T, Q> u = detail::unit_of(d, lo); // rescaled: any finite nonzero d
-        l = u.hi;
-        l_lo = u.lo;
-        inv = u.inv_scaled;
-        detail::dot_twofold(s.normal, s.normal_lo, l, l_lo, nl, nl_lo);
-        length_d = u.length;
-    };
     if constexpr (stable) {
+        const auto twofold_light = [&] {
+            const unit_twofold<T, Q> u = detail::unit_of(d, lo); // rescaled: any finite nonzero d
+            l = u.hi;
+            l_lo = u.lo;
+            inv = u.inv_scaled;
+            detail::dot_twofold(s.normal, s.normal_lo, l, l_lo, nl, nl_lo);
+            length_d = u.length;
+        };
         if (twofold) {
             twofold_light();
         } else {
