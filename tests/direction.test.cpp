@@ -73,9 +73,8 @@ TEST_CASE_TEMPLATE("direction: documented edges", T, float, double)
     // direction_and_distance says "+inf for a point at infinity (w = 0)".
     const auto none = phong::toward(vec4<T>(0, 0, 0, 0), vec3<T>(1, 2, 3));
     CHECK(none.direction == vec3<T>(0));
-    // FIXME core: toward() returns distance +inf here, its doc comment promises 0 (shade() does
-    // not read it: a directional light has no attenuation). Doc or code needs to change.
-    WARN(none.distance == T(0));
+    // w = 0 is a point at infinity even with xyz = 0: distance +inf (documented).
+    CHECK(none.distance == std::numeric_limits<T>::infinity());
     // Huge and tiny differences are rescaled: unit length, exact distance.
     const T big = std::numeric_limits<T>::max() / T(4);
     const auto huge = phong::toward(vec4<T>(-big, T(0), T(0), T(1)), vec3<T>(big, T(0), T(0)));

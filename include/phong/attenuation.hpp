@@ -32,7 +32,8 @@ struct falloff {
 ///   f = 1 / max(c0 + c1 d + c2 d^2, attenuation_denominator_min<T>)
 /// evaluated as c0 + d (c1 + c2 d), so c2 = 0 with a huge d gives no 0 * inf.
 /// Pre: c0, c1, c2 >= 0 and finite, d >= 0. Edge: d = 0 with c0 = 0 gives the cap
-/// 1 / attenuation_denominator_min<T>; d = inf gives 0 (if c1 + c2 > 0); NaN d gives NaN.
+/// 1 / attenuation_denominator_min<T>; d = inf is taken as the largest finite T, which gives 0
+/// when c2 > 0 and at most 1 / (c1 max) (2.9e-39 in float) when only c1 > 0; NaN d gives NaN.
 template <class T>
 PHONG_HD constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 {

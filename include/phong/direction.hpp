@@ -21,8 +21,9 @@ struct direction_and_distance {
 /// w = 1 is seed 000's positional light normalize(L.xyz - Q), w = 0 its directional light
 /// normalize(L.xyz); the same rule gives seed 001's e = normalize(eye - P) and the orthographic
 /// view vector. One rule, no branch on w for the direction.
-/// Pre: P.w >= 0 (a negative w flips the direction), finite. Edge: P at Q, or P.xyz = 0 with
-/// w = 0, gives direction 0 and distance 0; huge and tiny differences are rescaled (see normalize).
+/// Pre: P.w >= 0 (a negative w flips the direction), finite. Edge: P at Q (w > 0) gives
+/// direction 0 and distance 0; P.xyz = 0 with w = 0 gives direction 0 and distance +inf (still a
+/// point at infinity); huge and tiny differences are rescaled (see normalize).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& P, const glm::vec<3, T, Q>& point)
 {

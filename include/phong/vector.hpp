@@ -75,8 +75,9 @@ PHONG_HD constexpr T length(const glm::vec<L, T, Q>& v)
 }
 
 /// Unit vector along v: v / |v|. Scaled first (see `rescaled`), so every finite nonzero v gives
-/// a unit vector (error < 2 ulp per component), including |v| ~ 1e-40 or 1e30 in float.
-/// Edge: normalize(0) = 0 (zero in, zero out; GLM gives NaN). NaN in gives NaN out.
+/// a unit vector (error < 2 eps per component, i.e. < 3 ulp of the component; tests/vector.test.cpp), including |v| ~ 1e-40 or 1e30 in float.
+/// Edge: normalize(0) = 0 (zero in, zero out; GLM gives NaN). A NaN component stays NaN, the
+/// others become 0 (the NaN length takes the zero branch); an inf component gives NaN there.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
 {
