@@ -324,20 +324,13 @@ template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const surface_frame<T, Q>& s,
                                          const material<T, Q>& mat, const environment<T, Q>& env)
 {
-    // k * sum per channel, where a coefficient k = 0 removes its term exactly: a light sum that
-    // overflowed to inf (strengths near the top of T's range) would otherwise give 0 * inf = NaN.
-    const auto weighted = [](const glm::vec<3, T, Q>& k, const glm::vec<3, T, Q>& sum) {
-        glm::vec<3, T, Q> out(T(0));
-        for (int ch = 0; ch < 3; ++ch) out[ch] = phong::select(k[ch] == T(0), T(0), k[ch] * sum[ch]);
-        return out;
-    };
     glm::vec<3, T, Q> c(s.poison);
     if constexpr (F.emission) c += mat.emission;
-    if constexpr (F.scene_ambient && F.light_ambient) c += weighted(mat.ka, env.ambient + sums.ambient);
-    else if constexpr (F.scene_ambient) c += weighted(mat.ka, env.ambient);
-    else if constexpr (F.light_ambient) c += weighted(mat.ka, sums.ambient);
-    if constexpr (F.diffuse) c += weighted(mat.kd, sums.diffuse);
-    if constexpr (F.specular != specular_model::none) c += weighted(mat.ks, sums.specular);
+    if constexpr (F.scene_ambient && F.light_ambient) c += mat.ka * (env.ambient + sums.ambient);
+    else if constexpr (F.scene_ambient) c += mat.ka * env.ambient;
+    else if constexpr (F.light_ambient) c += mat.ka * sums.ambient;
+    if constexpr (F.diffuse) c += mat.kd * sums.diffuse;
+    if constexpr (F.specular != specular_model::none) c += mat.ks * sums.specular;
     if constexpr (F.alpha) return glm::vec<4, T, Q>(c, mat.alpha + s.poison);
     else return c;
 }

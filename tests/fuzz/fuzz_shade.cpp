@@ -363,8 +363,8 @@ void check(const scene<T>& s, bool params_valid)
     const bound3<T> b = upper_bound<F>(s);
     const bool may_overflow = b.largest_part > static_cast<wide>(std::numeric_limits<T>::max()) / 8;
 #ifndef FUZZ_SHADE_STRICT
-    // Where a sum of f_i L_i or a product k * sum overflows T the channel is legitimately inf
-    // (README); a channel whose k is 0 stays 0 (no 0 * inf). FUZZ_SHADE_STRICT checks those too.
+    // Known finding, reported (README): once a sum of f_i L_i or a product k * sum overflows T,
+    // a channel whose k is 0 gets 0 * inf = NaN. FUZZ_SHADE_STRICT keeps checking it.
     if (may_overflow) {
         for (int c = 0; c < 3; ++c) FUZZ_CHECK(!(out[c] < 0), "negative channel");
         return;
