@@ -94,9 +94,11 @@ struct spot_cone {
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
 {
+    const mask_t<T> no_cone = cos_cutoff <= T(-1);
+    if (math_traits<T>::all(no_cone)) return T(1); // 180 degrees: skip the power (every lane of a batch)
     const T c = -phong::dot(l, s);
     const T inside = phong::select(c >= cos_cutoff, phong::pow(phong::clamp(c, T(0), T(1)), exponent), T(0));
-    return phong::select(cos_cutoff <= T(-1), T(1), inside);
+    return phong::select(no_cone, T(1), inside);
 }
 
 /// Smooth spot factor: t = clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1),
