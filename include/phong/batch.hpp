@@ -109,7 +109,7 @@ struct math_traits<xsimd::batch<T, A>> {
             else return V(_mm_fmadd_pd(a, b, c));
         }
 #  endif
-        return dekker_fma(a, b, c);
+        return detail::dekker_fma<V, T>(a, b, c);
     }
     static V select(const mask& m, const V& a, const V& b) { return xsimd::select(m, a, b); }
     static bool any(const mask& m) { return xsimd::any(m); }
@@ -137,17 +137,6 @@ struct math_traits<xsimd::batch<T, A>> {
     }
 
 private:
-    // a*b + c with the product exact (Veltkamp split, Dekker's product), then two additions:
-    // exact whenever c = -fl(a*b) (the error-free products phong relies on), else within 1 ulp.
-    static V dekker_fma(const V& a, const V& b, const V& c)
-    {
-        const V split = V(T((1ull << ((std::numeric_limits<T>::digits + 1) / 2)) + 1));
-        const V ca = split * a, ah = ca - (ca - a), al = a - ah;
-        const V cb = split * b, bh = cb - (cb - b), bl = b - bh;
-        const V p = a * b;
-        const V e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-        return (p + c) + e;
-    }
     static V newton_rsqrt(const V& x, const V& estimate)
     {
         const V refined = estimate * xsimd::fma(V(T(-0.5)) * x, estimate * estimate, V(T(1.5)));

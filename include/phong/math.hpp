@@ -155,6 +155,24 @@ PHONG_HD constexpr wide pow(wide x, wide y)
 
 } // namespace detail::ce
 
+namespace detail {
+
+/// a*b + c with the product exact (Veltkamp split, Dekker's product), then two additions: exact
+/// whenever c = -fl(a*b) (the error-free products phong relies on), else within 1 ulp. For
+/// constant evaluation and for SIMD targets without an FMA instruction. S is the lane type of V.
+template <class V, class S = V>
+PHONG_HD constexpr V dekker_fma(const V& a, const V& b, const V& c)
+{
+    const V split = V(S((1ull << ((std::numeric_limits<S>::digits + 1) / 2)) + 1));
+    const V ca = split * a, ah = ca - (ca - a), al = a - ah;
+    const V cb = split * b, bh = cb - (cb - b), bl = b - bh;
+    const V p = a * b;
+    const V e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    return (p + c) + e;
+}
+
+} // namespace detail
+
 /// Customization point: how phong evaluates its scalar kernels on the number type V.
 /// The primary template serves float, double and long double (constexpr path + std:: path).
 /// phong/batch.hpp specializes it for SIMD batches.
@@ -204,7 +222,7 @@ struct math_traits {
             if constexpr (std::numeric_limits<V>::digits * 2 <= std::numeric_limits<detail::ce::wide>::digits) {
                 return static_cast<V>(static_cast<detail::ce::wide>(a) * b + c); // exact product
             } else {
-                return dekker_fma(a, b, c);
+                return detail::dekker_fma(a, b, c);
             }
         }
         return std::fma(a, b, c);
@@ -242,17 +260,6 @@ struct math_traits {
         }
     }
 
-private:
-    // a*b + c via Veltkamp splitting; exact product, one final rounding up to the sum's.
-    PHONG_HD static constexpr V dekker_fma(V a, V b, V c)
-    {
-        constexpr V split = V((1ull << ((std::numeric_limits<V>::digits + 1) / 2)) + 1);
-        const V ca = split * a, ah = ca - (ca - a), al = a - ah;
-        const V cb = split * b, bh = cb - (cb - b), bl = b - bh;
-        const V p = a * b;
-        const V e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-        return (p + c) + e;
-    }
 };
 
 /// Mask type of V: bool for scalars, a SIMD mask for batches.
