@@ -2,8 +2,10 @@
 // float and double, Phong and Blinn specular, against the __float128 reference, and prints the
 // Markdown table of README.md's "Accuracy" section. Not run by ctest (it takes a while).
 //
-//   phong_accuracy_table [samples per class = 20000] [seed = 1] [--bounds] [--code]
+//   phong_accuracy_table [samples per class = 20000] [seed = 1] [--bounds] [--code] [--twofold]
 //
+// --twofold: the stable columns use features::precision = twofold (float's other route, and the
+// SIMD batches'); by default float's stable mode is evaluated in double (precision = wider).
 // --bounds also prints, per mode, type and class, the worst figures over both specular models
 // next to the published bound (phong::accuracy::bounds), and flags any figure above it (exit 1).
 // --code prints candidate bounds (twice the worst figures, rounded up to one digit) as C++.
@@ -28,13 +30,17 @@ struct row {
     error_stats exact, stable;
 };
 
+bool twofold_columns = false; // --twofold
+
 template <class T, specular_model S>
 row measure_row(const std::vector<phong_test::stiff_scene<T>>& scenes)
 {
     constexpr phong::features exact = phong::accuracy::measured_features(evaluation::exact, S);
     constexpr phong::features stable = phong::accuracy::measured_features(evaluation::stable, S);
+    constexpr phong::features twofold = phong::accuracy::measured_features(evaluation::stable, S, phong::stable_precision::twofold);
     const std::vector<phong_test::wcolor> refs = phong_test::references(exact, scenes);
-    return {phong_test::measure<exact>(scenes, refs), phong_test::measure<stable>(scenes, refs)};
+    return {phong_test::measure<exact>(scenes, refs),
+            twofold_columns ? phong_test::measure<twofold>(scenes, refs) : phong_test::measure<stable>(scenes, refs)};
 }
 
 std::string fmt(double x)
@@ -69,7 +75,8 @@ struct worst {
 template <evaluation M, class T>
 bool print_bound(input_class c, const worst& w)
 {
-    const phong::accuracy::bound b = phong::accuracy::of<M, T>(c);
+    const phong::accuracy::bound b = twofold_columns ? phong::accuracy::of<M, T, phong::stable_precision::twofold>(c)
+                                                     : phong::accuracy::of<M, T>(c);
     const bool nan_policy = c == input_class::non_finite;
     const bool ok = nan_policy ? w.non_finite == w.channels
                                : (w.non_finite == 0 && w.p99 <= b.p99_ulp && w.max_ulp <= b.max_ulp && w.max_rel <= b.max_rel);
@@ -127,9 +134,12 @@ int main(int argc, char** argv)
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--bounds") == 0) bounds = true;
         else if (std::strcmp(argv[i], "--code") == 0) print_code = true;
+        else if (std::strcmp(argv[i], "--twofold") == 0) twofold_columns = true;
         else if (positional++ == 0) n = std::strtoull(argv[i], nullptr, 10);
         else seed = std::strtoull(argv[i], nullptr, 10);
     }
+    std::printf("Stable columns: %s.\n", twofold_columns ? "precision = twofold (float arithmetic, twofold unit vectors)"
+                                                        : "precision = wider (float evaluated in double; double twofold)");
     std::printf("Scenes per class: %zu, seed %llu; 3 channels per scene. Errors per channel against %s.\n"
                 "ulp: of the exact value in the type; rel: max |computed - exact| / |exact|; NaN/Inf: channels.\n\n",
                 n, static_cast<unsigned long long>(seed),
@@ -146,8 +156,8 @@ int main(int argc, char** argv)
     if (print_code) {
         for (int m = 0; m < 2; ++m)
             for (int t = 0; t < 2; ++t) {
-                std::printf("template <> inline constexpr detail::table bounds<evaluation::%s, %s>{{\n", m == 0 ? "exact" : "stable",
-                            t == 0 ? "float" : "double");
+                std::printf("template <> inline constexpr detail::table bounds<evaluation::%s, %s%s>{{\n", m == 0 ? "exact" : "stable",
+                            t == 0 ? "float" : "double", m == 1 && twofold_columns ? ", stable_precision::twofold" : "");
                 for (const std::string& line : code[m][t]) std::printf("%s\n", line.c_str());
                 std::printf("}};\n");
             }

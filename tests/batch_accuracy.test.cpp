@@ -56,7 +56,7 @@ template <class T, specular_model S> void check_batch_classes()
         const auto scenes = make_class<T>(cls, 300, 500 + c);
         std::size_t disagree = 0;
         const error_stats e = measure_batch<F>(scenes, disagree);
-        const phong::accuracy::bound bound = phong::accuracy::of<evaluation::stable, T>(cls);
+        const phong::accuracy::bound bound = phong::accuracy::of<evaluation::stable, T, phong::stable_precision::twofold>(cls);
         CAPTURE(std::string(phong::accuracy::name(cls)));
         CAPTURE(e.p99_ulp);
         CAPTURE(e.max_ulp);

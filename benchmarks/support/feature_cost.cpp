@@ -19,6 +19,7 @@
 
 #include <phong/phong.hpp>
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -79,8 +80,9 @@ constexpr features diffuse_directional{.scene_ambient = false, .light_ambient = 
                                        .specular = phong::specular_model::none, .lights = phong::light_kind::directional};
 constexpr features ads = phong::presets::seed003_ads;
 
-// x * 0: 0 for finite x, NaN for NaN or inf (the library's NaN policy, written directly).
-inline float poison(const vec3& q, const vec3& n)
+// x * 0: 0 for finite x, NaN for NaN or inf (the library's NaN policy, written directly; computed
+// only when a squared length is not finite, the one case where an input can be NaN or inf).
+inline float nan_poison(const vec3& q, const vec3& n)
 {
     return (q.x * 0.0f + q.y * 0.0f + q.z * 0.0f) + (n.x * 0.0f + n.y * 0.0f + n.z * 0.0f);
 }
@@ -104,18 +106,21 @@ FC_KERNEL fc_hand_diffuse_directional(const vec3* q, const vec3* n, std::size_t 
 {
     for (std::size_t i = 0; i < count; ++i) {
         const float nn = dot3(n[i], n[i]);
-        const vec3 nh = n[i] * (nn >= tiny ? 1 / std::sqrt(nn) : 0.0f);
-        const float qq = dot3(q[i], q[i]); // Q at the eye (|Q|^2 subnormal or overflowed): no diffuse
-        const bool defined = nn >= tiny && nn < INFINITY && qq >= tiny && qq < INFINITY;
+        const float in = nn >= tiny ? 1 / std::sqrt(nn) : 0.0f;
+        const vec3 nh = n[i] * in;
+        const float qq = dot3(q[i], q[i]); // Q at the eye (|Q|^2 not a normal number): no diffuse
+        float poison = 0;
+        if (!(nn <= FLT_MAX && qq <= FLT_MAX)) poison = nan_poison(q[i], n[i]);
+        const bool defined = in > 0 && qq >= tiny && qq <= FLT_MAX && poison == 0;
         vec3 sum(0);
         for (std::size_t j = 0; j < k; ++j) {
             const vec3 d(L[j].position.x, L[j].position.y, L[j].position.z);
             const float dd = dot3(d, d);
             const float inv = dd >= tiny ? 1 / std::sqrt(dd) : 0.0f;
             const float nl = dot3(nh, d * inv);
-            sum += L[j].diffuse * ((defined && inv > 0) ? (nl < 0 ? 0.0f : nl) : 0.0f);
+            if (defined && inv > 0 && nl > 0) sum += L[j].diffuse * nl;
         }
-        out[i] = vec3(poison(q[i], n[i])) + mat.kd * sum;
+        out[i] = vec3(poison) + mat.kd * sum;
     }
 }
 
@@ -126,36 +131,36 @@ FC_KERNEL fc_phong_ads(const vec3* q, const vec3* n, std::size_t count, const li
 }
 
 /// Hand-written seed 003 phong.vert summed over positional lights, with phong's edges:
-/// I = ka sum La_i + kd sum Ld_i max(n.l, 0) + ks sum [n.l > 0] Ls_i clamp(r.v, 0, 1)^m.
+/// I = ka sum La_i + kd sum Ld_i max(n.l, 0) + ks sum [n.l > 0] Ls_i clamp(r.v, 0, 1)^m,
+/// the power by phong::pow_unit (the scalar kernel a hand-written shader would call instead of pow).
 FC_KERNEL fc_hand_ads(const vec3* q, const vec3* n, std::size_t count, const light* L, std::size_t k,
                       const phong::material<float>& mat, const phong::environment<float>&, vec3* out)
 {
     for (std::size_t i = 0; i < count; ++i) {
-        const float qq = dot3(q[i], q[i]);
-        const vec3 v = -q[i] * (qq >= tiny ? 1 / std::sqrt(qq) : 0.0f);
-        const float nn = dot3(n[i], n[i]);
-        const vec3 nh = n[i] * (nn >= tiny ? 1 / std::sqrt(nn) : 0.0f);
-        const bool defined = dot3(nh, nh) > 0 && dot3(v, v) > 0;
+        const float nn = dot3(n[i], n[i]), qq = dot3(q[i], q[i]);
+        const float in = nn >= tiny ? 1 / std::sqrt(nn) : 0.0f;
+        const float iv = qq >= tiny ? 1 / std::sqrt(qq) : 0.0f;
+        const vec3 nh = n[i] * in, v = -q[i] * iv;
+        float poison = 0;
+        if (!(nn <= FLT_MAX && qq <= FLT_MAX)) poison = nan_poison(q[i], n[i]);
+        const bool defined = in > 0 && iv > 0 && poison == 0;
         vec3 ambient(0), diffuse(0), specular(0);
         for (std::size_t j = 0; j < k; ++j) {
+            ambient += L[j].ambient;
             const vec3 d = vec3(L[j].position.x, L[j].position.y, L[j].position.z) - q[i];
             const float dd = dot3(d, d);
             const float inv = dd >= tiny ? 1 / std::sqrt(dd) : 0.0f;
             const vec3 l = d * inv;
             const float nl = dot3(nh, l);
-            const bool lit = defined && inv > 0;
-            ambient += L[j].ambient;
-            diffuse += L[j].diffuse * (lit ? (nl < 0 ? 0.0f : nl) : 0.0f);
-            float s = 0;
-            if (lit && nl > 0) {
+            if (defined && inv > 0 && nl > 0) {
+                diffuse += L[j].diffuse * nl;
                 const vec3 r = nh * (2 * nl) - l;
                 float rv = dot3(r, v);
                 rv = rv < 0 ? 0.0f : (rv > 1 ? 1.0f : rv);
-                s = std::pow(rv, mat.shininess);
+                specular += L[j].specular * phong::pow_unit(rv, mat.shininess);
             }
-            specular += L[j].specular * s;
         }
-        out[i] = vec3(poison(q[i], n[i])) + mat.ka * ambient + mat.kd * diffuse + mat.ks * specular;
+        out[i] = vec3(poison) + mat.ka * ambient + mat.kd * diffuse + mat.ks * specular;
     }
 }
 

@@ -97,7 +97,7 @@ PHONG_HD constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T
     const mask_t<T> no_cone = cos_cutoff <= T(-1);
     if (math_traits<T>::all(no_cone)) return T(1); // 180 degrees: skip the power (every lane of a batch)
     const T c = -phong::dot(l, s);
-    const T inside = phong::select(c >= cos_cutoff, phong::pow(phong::clamp(c, T(0), T(1)), exponent), T(0));
+    const T inside = phong::select(c >= cos_cutoff, phong::pow_unit(phong::clamp(c, T(0), T(1)), exponent), T(0));
     return phong::select(no_cone, T(1), inside);
 }
 

@@ -275,7 +275,7 @@ void shade_step(std::size_t i, std::size_t count, const soa3<T>& positions, cons
     if constexpr (per_point_material) gathered = gather<V>(materials.data() + i, count);
     const material<V, Q>& mat = per_point_material ? gathered : shared_mat;
 
-    const surface_frame<V, Q> s = prepare<F>(glm::vec<3, V, Q>(lanes[0], lanes[1], lanes[2]),
+    const frame_t<F, V, Q> s = prepare<F>(glm::vec<3, V, Q>(lanes[0], lanes[1], lanes[2]),
                                              glm::vec<3, V, Q>(lanes[3], lanes[4], lanes[5]), env, front);
     light_sums<V, Q> sums{};
     for (const light<V, Q>& L : lights) add_light<F>(sums, s, L, mat.shininess);

@@ -44,10 +44,21 @@ enum class view_model : unsigned char { perspective, orthographic, eye_point };
 
 /// How the terms are evaluated (accuracy against speed; bounds in phong/accuracy.hpp).
 /// `exact`: the formulas as written, guarded so they never give NaN/Inf for finite input.
-/// `stable`: power-of-two rescaled vectors; the unit vectors n, l, v (h), n.l and the chords r - v,
-/// n - h carried twofold (to ~eps^2, from the exact L - Q; detail/twofold.hpp); half-chord exponent
-/// exp(m log1p(-|r - v|^2/2)); a few ulp on stiff and extreme inputs (phong/accuracy.hpp).
+/// `stable`: a few ulp or better on stiff and extreme inputs (phong/accuracy.hpp), by one of two
+/// routes (features::precision): float evaluated in double, or power-of-two rescaled vectors with
+/// the unit vectors n, l, v (h), n.l and the chords r - v, n - h carried twofold (to ~eps^2, from the
+/// exact L - Q; detail/twofold.hpp) and the half-chord exponent exp(m log1p(-|r - v|^2/2)).
 enum class evaluation : unsigned char { exact, stable };
+
+/// Where the stable mode's extra precision comes from (phong/accuracy.hpp has the bounds).
+/// `wider`: float is evaluated in double with the exact mode's formulas and rounded once. Every
+/// float input is exact in double, no square of a float overflows or underflows there, and double
+/// carries 29 more bits than float, so the colour is float's correct rounding of the model but for
+/// near-ties (about 0.5 ulp). The default: on CPUs it is the fastest and most accurate choice.
+/// T without a wider hardware type (double, SIMD batches) takes `twofold`. `twofold`: T arithmetic
+/// with power-of-two rescaled vectors and twofold unit vectors, n.l and chords (detail/twofold.hpp);
+/// for GPU code, where double runs at a fraction of float's rate.
+enum class stable_precision : unsigned char { wider, twofold };
 
 /// Everything shade<F> can compute. Defaults: seed 000's classic model with one ambient term,
 /// reflection-based specular gated on n.l > 0, perspective view, exact evaluation.
@@ -66,7 +77,8 @@ struct features {
     bool emission = false;       ///< material emission added
     bool alpha = false;          ///< return rgba with the material's alpha appended
     evaluation mode = evaluation::exact;
-    /// Stable mode only: 0 (the default) carries every pair twofold, the accuracy that
+    stable_precision precision = stable_precision::wider; ///< stable mode only: wider (float in double) or twofold
+    /// Stable mode with twofold precision only: 0 (the default) carries every pair twofold, the accuracy that
     /// phong/accuracy.hpp publishes. M > 0 rounds each component once for pairs with shininess
     /// m <= M (Blinn: unless l + v nearly cancels), less than half the cost, at an error that
     /// grows like sqrt(m) eps. With M = 256, float, 2000 scenes per input class against __float128

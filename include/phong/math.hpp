@@ -11,6 +11,8 @@
 #pragma once
 
 #include "detail/config.hpp"
+#include "detail/constexpr_math.hpp"
+#include "detail/power.hpp"
 
 #include <bit>
 #include <cmath>
@@ -32,128 +34,6 @@ namespace phong {
 /// log, log1p and pow on finite arguments whose result is a normal number.
 inline constexpr int constexpr_tolerance_ulp = 2;
 
-namespace detail::ce {
-
-// Constant-evaluation kernels. All work in long double and round once at the end, so for float
-// and double they are nearly correctly rounded. Loop counts are capped.
-using wide = long double;
-
-inline constexpr wide ln2 = 0.693147180559945309417232121458176568L;
-
-template <class T> PHONG_HD constexpr bool is_nan(T x) { return x != x; }
-template <class T> PHONG_HD constexpr T inf() { return std::numeric_limits<T>::infinity(); }
-template <class T> PHONG_HD constexpr T qnan() { return std::numeric_limits<T>::quiet_NaN(); }
-
-// x = m * 2^k with m in [sqrt(1/2), sqrt(2)); x finite and > 0.
-PHONG_HD constexpr wide reduce_pow2(wide x, int& k)
-{
-    k = 0;
-    constexpr wide two32 = 4294967296.0L;
-    for (int i = 0; i < 600 && x >= two32; ++i) { x /= two32; k += 32; }
-    for (int i = 0; i < 600 && x < 1 / two32; ++i) { x *= two32; k -= 32; }
-    for (int i = 0; i < 64 && x >= 1.41421356237309504880L; ++i) { x /= 2; ++k; }
-    for (int i = 0; i < 64 && x < 0.70710678118654752440L; ++i) { x *= 2; --k; }
-    return x;
-}
-
-// 2^k as a long double, by repeated squaring.
-PHONG_HD constexpr wide pow2(int k)
-{
-    wide base = k < 0 ? 0.5L : 2.0L;
-    unsigned n = static_cast<unsigned>(k < 0 ? -k : k);
-    wide r = 1;
-    for (int i = 0; i < 32 && n != 0; ++i, n >>= 1) {
-        if (n & 1u) r *= base;
-        base *= base;
-    }
-    return r;
-}
-
-PHONG_HD constexpr wide sqrt(wide x)
-{
-    if (is_nan(x) || x == 0 || x == inf<wide>()) return x;
-    if (x < 0) return qnan<wide>();
-    int k = 0;
-    wide m = reduce_pow2(x, k);
-    if (k % 2 != 0) { m *= 2; --k; } // m in [0.7, 2.9), k even
-    wide y = (1 + m) / 2;
-    for (int i = 0; i < 16; ++i) {
-        const wide next = (y + m / y) / 2;
-        if (next == y) break;
-        y = next;
-    }
-    return y * pow2(k / 2);
-}
-
-PHONG_HD constexpr wide exp(wide x)
-{
-    if (is_nan(x)) return x;
-    if (x > 11357.3L) return inf<wide>();
-    if (x < -11400.0L) return 0;
-    const wide kf = x / ln2;
-    const int k = static_cast<int>(kf < 0 ? kf - 0.5L : kf + 0.5L);
-    const wide r = x - static_cast<wide>(k) * ln2; // |r| <= ln2 / 2
-    wide term = 1, sum = 1;
-    for (int i = 1; i < 40; ++i) {
-        term *= r / static_cast<wide>(i);
-        const wide next = sum + term;
-        if (next == sum) break;
-        sum = next;
-    }
-    // Split the scaling so intermediate powers of two stay finite near the ends of the range.
-    return sum * pow2(k / 2) * pow2(k - k / 2);
-}
-
-// 2 atanh(t) = log((1 + t) / (1 - t)), |t| < 1/2.
-PHONG_HD constexpr wide two_atanh(wide t)
-{
-    const wide t2 = t * t;
-    wide power = t, sum = t;
-    for (int i = 1; i < 200; ++i) {
-        power *= t2;
-        const wide next = sum + power / static_cast<wide>(2 * i + 1);
-        if (next == sum) break;
-        sum = next;
-    }
-    return 2 * sum;
-}
-
-PHONG_HD constexpr wide log(wide x)
-{
-    if (is_nan(x) || x == inf<wide>()) return x;
-    if (x < 0) return qnan<wide>();
-    if (x == 0) return -inf<wide>();
-    int k = 0;
-    const wide m = reduce_pow2(x, k);
-    return two_atanh((m - 1) / (m + 1)) + static_cast<wide>(k) * ln2;
-}
-
-PHONG_HD constexpr wide log1p(wide x)
-{
-    if (is_nan(x) || x == inf<wide>()) return x;
-    if (x < -1) return qnan<wide>();
-    if (x == -1) return -inf<wide>();
-    // log1p(x) = 2 atanh(x / (2 + x)) has no cancellation for small |x|.
-    if (x > -0.25L && x < 0.5L) return two_atanh(x / (2 + x));
-    return log(1 + x);
-}
-
-PHONG_HD constexpr wide pow(wide x, wide y)
-{
-    if (y == 0 || x == 1) return 1; // IEEE: pow(x, 0) = 1 even for NaN x; pow(1, y) = 1
-    if (is_nan(x) || is_nan(y)) return qnan<wide>();
-    if (x == 0) return y > 0 ? wide(0) : inf<wide>();
-    if (x < 0) {
-        // Integer exponents only (the lighting model never needs this; kept for completeness).
-        const auto n = static_cast<long long>(y);
-        if (static_cast<wide>(n) != y) return qnan<wide>();
-        const wide r = exp(y * log(-x));
-        return (n % 2 != 0) ? -r : r;
-    }
-    return exp(y * log(x));
-}
-
-} // namespace detail::ce
 
 namespace detail {
 
@@ -214,6 +94,21 @@ struct math_traits {
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::pow(x, y));
         return std::pow(x, y);
+    }
+    /// x^m for x in [0, 1], m >= 0: float and double through detail/power.hpp (inline, no libm
+    /// call, the same bits in constant evaluation); long double through pow; CUDA device code
+    /// through CUDA's pow.
+    PHONG_HD static constexpr V pow_unit(V x, V m)
+    {
+        if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
+#if defined(__CUDA_ARCH__)
+            return (x == V(0) && m == V(0)) ? V(1) : ::pow(x, m);
+#else
+            return static_cast<V>(detail::power::pow_unit(static_cast<double>(x), static_cast<double>(m)));
+#endif
+        } else {
+            return pow(x, m);
+        }
     }
     /// a * b + c with one rounding. Constant evaluation: exact through Dekker's product.
     PHONG_HD static constexpr V fma(V a, V b, V c)
@@ -282,6 +177,17 @@ template <class V> PHONG_HD constexpr V log(V x) { return math_traits<V>::log(x)
 template <class V> PHONG_HD constexpr V log1p(V x) { return math_traits<V>::log1p(x); }
 /// x^y (IEEE pow: pow(0, 0) = 1, pow(0, y > 0) = 0).
 template <class V> PHONG_HD constexpr V pow(V x, V y) { return math_traits<V>::pow(x, y); }
+/// x^m for a base x in [0, 1] and an exponent m >= 0: the specular and spot powers.
+/// pow_unit(0, 0) = 1, pow_unit(0, m > 0) = 0. Float and double: an inline kernel in double
+/// arithmetic (detail/power.hpp), relative error below (|m log2 x| + m + 4) 2^-53 (a float
+/// result is correctly rounded but for near-ties), results below 2^-1022 flushed to 0; identical
+/// in constant evaluation. Outside the domain (x > 1, x < 0, m < 0, NaN, inf): IEEE pow's value.
+/// SIMD batches: their pow (batch.hpp).
+template <class V> PHONG_HD constexpr V pow_unit(V x, V m)
+{
+    if constexpr (requires { math_traits<V>::pow_unit(x, m); }) return math_traits<V>::pow_unit(x, m);
+    else return math_traits<V>::pow(x, m);
+}
 /// a * b + c rounded once.
 template <class V> PHONG_HD constexpr V fma(V a, V b, V c) { return math_traits<V>::fma(a, b, c); }
 /// |x|.

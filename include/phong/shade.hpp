@@ -35,19 +35,28 @@ using color = std::conditional_t<F.alpha, glm::vec<4, T, Q>, glm::vec<3, T, Q>>;
 
 namespace detail {
 
-/// Per-point quantities, computed once and shared by every light.
+/// Per-point quantities, computed once and shared by every light. The stable mode's twofold
+/// extras live in a derived struct, so the exact mode's frame is five fields a compiler keeps in
+/// registers (a larger frame was built on the stack and copied: +10 instructions per pair).
 template <class T, glm::qualifier Q>
 struct surface_frame {
-    glm::vec<3, T, Q> position;      ///< Q
-    glm::vec<3, T, Q> normal;        ///< unit normal after two-sided negation (0 if undefined)
-    glm::vec<3, T, Q> normal_scaled; ///< stable: the same normal before its last rounding, rescaled exactly
-    T inv_normal_length;             ///< stable: 1 / |normal_scaled|
-    glm::vec<3, T, Q> view;          ///< unit view vector v (0 if undefined; exact mode without a term reading v: 1 or 0)
-    glm::vec<3, T, Q> normal_lo{T(0)}; ///< stable: rounding error of normal (normal + normal_lo to O(eps^2))
-    glm::vec<3, T, Q> view_lo{T(0)};   ///< stable: rounding error of view
-    mask_t<T> defined;               ///< normal and view both nonzero
-    T poison;                        ///< 0, or NaN when the point's inputs are not finite
+    glm::vec<3, T, Q> position; ///< Q
+    glm::vec<3, T, Q> normal;   ///< unit normal after two-sided negation (0 if undefined)
+    glm::vec<3, T, Q> view;     ///< unit view vector v (0 if undefined; exact mode without a term reading v: 1 or 0)
+    mask_t<T> defined;          ///< normal and view both nonzero, inputs finite
+    T poison;                   ///< 0, or NaN when the point's inputs are not finite
 };
+
+template <class T, glm::qualifier Q>
+struct surface_frame_twofold : surface_frame<T, Q> {
+    glm::vec<3, T, Q> normal_scaled;   ///< the normal before its last rounding, rescaled exactly
+    T inv_normal_length;               ///< 1 / |normal_scaled|
+    glm::vec<3, T, Q> normal_lo{T(0)}; ///< rounding error of normal (normal + normal_lo to O(eps^2))
+    glm::vec<3, T, Q> view_lo{T(0)};   ///< rounding error of view
+};
+
+template <features F, class T, glm::qualifier Q>
+using frame_t = std::conditional_t<F.mode == evaluation::stable, surface_frame_twofold<T, Q>, surface_frame<T, Q>>;
 
 /// Per-light sums, weighted by attenuation; the material multiplies them once at the end.
 template <class T, glm::qualifier Q>
@@ -74,14 +83,114 @@ PHONG_HD constexpr glm::vec<3, T, Q> unit(const glm::vec<3, T, Q>& v)
     }
 }
 
+/// The exact mode's unit vector with its squared length: v / |v|, or 0 when |v|^2 is not a
+/// normal number (dd < min: lost to underflow; dd = inf: overflowed; NaN).
+template <class T, glm::qualifier Q>
+struct exact_unit {
+    glm::vec<3, T, Q> unit;
+    T square;    ///< |v|^2 as computed (inf or NaN when v is not finite or overflows)
+    mask_t<T> ok; ///< unit is a unit vector
+};
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr exact_unit<T, Q> exact_unit_of(const glm::vec<3, T, Q>& v, T sign = T(1))
+{
+    const T dd = phong::dot(v, v);
+    const T inv = phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0)); // rsqrt(inf) = 0
+    return {v * (inv * sign), dd, inv > T(0)};
+}
+
+/// x * 0 is 0 for finite x and NaN for NaN or inf: the NaN policy's poison of a point.
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
-                                               const environment<T, Q>& env, mask_t<T> front_facing)
+PHONG_HD constexpr T poison_of(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal, const environment<T, Q>& env)
+{
+    const glm::vec<3, T, Q> zero(T(0));
+    T poison = phong::dot(position, zero) + phong::dot(normal, zero);
+    if constexpr (F.view == view_model::eye_point) poison += phong::dot(glm::vec<4, T, Q>(env.eye), glm::vec<4, T, Q>(T(0)));
+    return poison;
+}
+
+/// Two-sided lighting: the sign that faces the normal n toward the viewer (or the caller's flag).
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v, mask_t<T> front_facing)
+{
+    if constexpr (F.two_sided == facing::view) return phong::select(phong::dot(n, v) < T(0), T(-1), T(1));
+    else return phong::select(front_facing, T(1), T(-1));
+}
+
+/// The exact mode's per-point frame. Built from locals and returned as one aggregate: assigning
+/// vectors into a frame object made g++ build it on the stack through integer moves (+5
+/// instructions per pair at K = 4, feature_cost.sh).
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr surface_frame<T, Q> prepare_exact(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                                     const environment<T, Q>& env, mask_t<T> front_facing)
 {
     using vec3 = glm::vec<3, T, Q>;
-    surface_frame<T, Q> s{};
-    s.position = position;
-    if constexpr (F.mode == evaluation::stable) {
+    // Each unit vector comes with its squared length, which says whether it exists and, for
+    // scalars, whether the inputs can be NaN or inf at all (a finite square: no).
+    const exact_unit<T, Q> n = exact_unit_of(normal);
+    vec3 unit_normal = n.unit, view;
+    mask_t<T> view_ok;
+    T view_square; // |Q|^2 (perspective) or |E - wQ|^2: not finite only if the inputs may not be
+    if constexpr (F.view == view_model::orthographic) {
+        view = phong::normalize(vec3(env.eye.x, env.eye.y, env.eye.z));
+        view_ok = phong::dot(view, view) > T(0);
+        view_square = phong::dot(position, position);
+    } else {
+        // v = unit(e), e = E.xyz - E.w Q; perspective: e = -Q, taken as Q times -1/|Q| (no copy
+        // and no negation of the vector).
+        const auto view_of = [&](const vec3& e, T sign) {
+            if constexpr (F.specular == specular_model::none && F.two_sided != facing::view) {
+                // No term reads v, only whether it exists (exactly when its square is a normal
+                // number): a removed specular term leaves no normalization of v behind (feature_cost.sh).
+                view_square = phong::dot(e, e);
+                view_ok = math_traits<T>::both(view_square >= exact_min_square<T>(), view_square <= largest<T>());
+                view = vec3(phong::select(view_ok, T(1), T(0)));
+            } else {
+                const exact_unit<T, Q> v = exact_unit_of(e, sign);
+                view_ok = v.ok;
+                view_square = v.square;
+                view = v.unit;
+            }
+        };
+        if constexpr (F.view == view_model::perspective) view_of(position, T(-1));
+        else view_of(vec3(env.eye.x, env.eye.y, env.eye.z) - position * env.eye.w, T(1));
+    }
+    T poison;
+    if constexpr (std::is_floating_point_v<T>) {
+        // Finite squares: finite inputs, poison 0. Else (rare: NaN, inf, or a square that
+        // overflowed) the exact test; a branch, so the common case pays two compares.
+        poison = T(0);
+        if (!(n.square <= largest<T>() && view_square <= largest<T>())) [[unlikely]]
+            poison = poison_of<F>(position, normal, env);
+    } else {
+        poison = poison_of<F>(position, normal, env);
+    }
+    if constexpr (F.two_sided != facing::none) unit_normal = unit_normal * facing_sign<F>(unit_normal, view, front_facing);
+    else (void)front_facing;
+    // A NaN point has every channel NaN through poison; its terms are switched off so that no
+    // garbage (or a NaN power) is computed for it.
+    const mask_t<T> defined = math_traits<T>::both(math_traits<T>::both(n.ok, view_ok), poison == T(0));
+    surface_frame<T, Q> s;
+    for (int k = 0; k < 3; ++k) { // component by component: g++ copies whole vectors through the stack
+        s.position[k] = position[k];
+        s.normal[k] = unit_normal[k];
+        s.view[k] = view[k];
+    }
+    s.defined = defined;
+    s.poison = poison;
+    return s;
+}
+
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                            const environment<T, Q>& env, mask_t<T> front_facing)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    if constexpr (F.mode != evaluation::stable) {
+        return prepare_exact<F>(position, normal, env, front_facing);
+    } else {
+        frame_t<F, T, Q> s{};
+        s.position = position;
         // v and n twofold (detail/twofold.hpp), from the exact E.xyz - E.w Q and the exact normal.
         vec3 e(T(0)), e_lo(T(0));
         if constexpr (F.view == view_model::perspective) {
@@ -103,44 +212,19 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
         s.normal_lo = un.lo;
         s.normal_scaled = phong::rescaled(normal);
         s.inv_normal_length = un.inv_scaled;
-    } else if constexpr (F.view == view_model::perspective) {
-        if constexpr (F.specular == specular_model::none && F.two_sided != facing::view) {
-            // No term reads v, only `defined` (Q not at the eye): unit<F>(-Q) is nonzero exactly when
-            // exact_min_square <= |Q|^2 <= max, so test that (a removed specular term then leaves no
-            // normalization of v behind; checked by benchmarks/feature_cost.sh).
-            const T qq = phong::dot(position, position);
-            s.view = vec3(phong::select(math_traits<T>::both(qq >= exact_min_square<T>(), qq <= largest<T>()), T(1), T(0)));
-        } else {
-            s.view = unit<F>(-position);
-        }
-    } else if constexpr (F.view == view_model::orthographic) {
-        s.view = phong::normalize(vec3(env.eye.x, env.eye.y, env.eye.z));
-    } else {
-        s.view = unit<F>(vec3(env.eye.x, env.eye.y, env.eye.z) - position * env.eye.w);
-    }
-    if constexpr (F.mode != evaluation::stable) s.normal = unit<F>(normal);
-    if constexpr (F.two_sided != facing::none) {
-        T sign;
-        if constexpr (F.two_sided == facing::view) sign = phong::select(phong::dot(s.normal, s.view) < T(0), T(-1), T(1));
-        else sign = phong::select(front_facing, T(1), T(-1));
-        s.normal = s.normal * sign;
-        if constexpr (F.mode == evaluation::stable) {
+        s.defined = math_traits<T>::both(phong::dot(s.normal, s.normal) > T(0), phong::dot(s.view, s.view) > T(0));
+        s.poison = poison_of<F>(position, normal, env);
+        if constexpr (F.two_sided != facing::none) {
+            const T sign = facing_sign<F>(s.normal, s.view, front_facing);
+            s.normal = s.normal * sign;
             s.normal_scaled = s.normal_scaled * sign;
             s.normal_lo = s.normal_lo * sign;
+        } else {
+            (void)front_facing;
         }
-    } else {
-        (void)front_facing;
+        s.defined = math_traits<T>::both(s.defined, s.poison == T(0));
+        return s;
     }
-    s.defined = math_traits<T>::both(phong::dot(s.normal, s.normal) > T(0), phong::dot(s.view, s.view) > T(0));
-    // x * 0 is 0 for finite x and NaN for NaN or inf: NaN/inf geometry gives NaN out, not garbage.
-    const vec3 zero(T(0));
-    s.poison = phong::dot(position, zero) + phong::dot(normal, zero);
-    if constexpr (F.view == view_model::eye_point) s.poison += phong::dot(glm::vec<4, T, Q>(env.eye), glm::vec<4, T, Q>(T(0)));
-    // Reading poison here ends the inputs' live ranges before the light loop (they otherwise stay in
-    // registers, spilled around every pow call: -10 instructions per pair, feature_cost.sh); a NaN
-    // point has every channel NaN either way.
-    s.defined = math_traits<T>::both(s.defined, s.poison == T(0));
-    return s;
 }
 
 /// a - b = hi + lo exactly (Knuth's TwoSum on a + (-b)); returns lo.
@@ -151,12 +235,37 @@ PHONG_HD constexpr T difference_error(T a, T b, T hi)
     return (a - (hi - bb)) - (b + bb);
 }
 
-template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<T, Q>& L, T m)
+/// A light's vector in the arithmetic type T: the vector itself when it already is (a reference,
+/// so no copy), else widened exactly (the stable mode's wider path).
+template <class T, int N, class U, glm::qualifier Q>
+PHONG_HD constexpr decltype(auto) in_type(const glm::vec<N, U, Q>& v)
+{
+    if constexpr (std::is_same_v<U, T>) return (v);
+    else return glm::vec<N, T, Q>(v);
+}
+
+/// max(c, 0)^m for a cosine c, clamped to [0, 1] first (pow(0, 0) = 1). A scalar branches past
+/// the power where c <= 0 (about half the lit pairs of a typical scene); a SIMD batch clamps.
+template <class T>
+PHONG_HD constexpr T power_of_cosine(T c, T m)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+        if (!(c > T(0))) return m == T(0) ? T(1) : T(0); // NaN c: 0 (c comes from finite unit vectors)
+        return phong::pow_unit(phong::min(c, T(1)), m);
+    } else {
+        return phong::pow_unit(phong::clamp(c, T(0), T(1)), m);
+    }
+}
+
+/// One light's terms added to the sums. T is the arithmetic type; U the light's scalar type (U = T,
+/// or float lights in the double arithmetic of the stable mode's wider path: fields are widened
+/// where they are read, exactly).
+template <features F, class T, glm::qualifier Q, class U>
+PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, T m)
 {
     using vec3 = glm::vec<3, T, Q>;
     constexpr bool stable = F.mode == evaluation::stable;
-    const vec3 Lxyz(L.position.x, L.position.y, L.position.z);
+    const vec3 Lxyz(T(L.position.x), T(L.position.y), T(L.position.z));
 
     // d = L.xyz - L.w Q (the homogeneous rule; w is known at compile time for one kind of light).
     // The stable mode also keeps lo, the rounding error of d, so n.l is computed on the exact d.
@@ -170,7 +279,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         if constexpr (stable)
             for (int k = 0; k < 3; ++k) lo[k] = difference_error(Lxyz[k], s.position[k], d[k]);
     } else {
-        w = L.position.w;
+        w = T(L.position.w);
         vec3 p = s.position * w;
         if constexpr (stable) // a product the compiler may not fuse into L - p (twofold.hpp)
             for (int k = 0; k < 3; ++k) p[k] = detail::rounded_product(s.position[k], w);
@@ -181,7 +290,8 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
     }
 
     vec3 l;
-    T nl, length_d, inv;
+    T nl, inv;
+    [[maybe_unused]] T length_d = T(0);
     [[maybe_unused]] vec3 l_lo(T(0)); // stable: l + l_lo and nl + nl_lo to O(eps^2) (detail/twofold.hpp)
     [[maybe_unused]] T nl_lo = T(0);
     // Stable mode, two depths. Twofold (the default): l, n.l and the specular chords to about
@@ -236,9 +346,13 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         const T dd = phong::dot(d, d);
         inv = phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
         l = d * inv;
-        for (int k = 0; k < 3; ++k) l[k] = phong::select(inv > T(0), l[k], T(0)); // overflowed d: inf * 0
+        // An overflowed d gives l = inf * 0 = NaN: harmless where only lit pairs read l, but the
+        // spot factor reads it for every pair.
+        if constexpr (F.spot != spot_model::none)
+            for (int k = 0; k < 3; ++k) l[k] = phong::select(inv > T(0), l[k], T(0));
         nl = phong::dot(s.normal, l);
-        length_d = phong::sqrt(dd);
+        if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional)
+            length_d = phong::sqrt(dd); // only attenuation reads the distance
     }
     // The light has a direction (not at Q, not a zero directional vector, no overflow) and the
     // point has a normal and a view vector: otherwise only the light's ambient term is added.
@@ -251,49 +365,57 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         if constexpr (F.lights == light_kind::any) dist = length_d / phong::select(w > T(0), w, T(1));
         T fa;
         if constexpr (F.attenuation == attenuation_model::polynomial)
-            fa = phong::attenuation_polynomial(dist, L.attenuation.constant, L.attenuation.linear, L.attenuation.quadratic);
+            fa = phong::attenuation_polynomial(dist, T(L.attenuation.constant), T(L.attenuation.linear), T(L.attenuation.quadratic));
         else
-            fa = phong::attenuation_windowed(dist, L.attenuation.range);
+            fa = phong::attenuation_windowed(dist, T(L.attenuation.range));
+        // The wider path keeps the user type's cap on f (attenuation.hpp), so a light at Q gives
+        // the same large finite value as in U's own arithmetic.
+        if constexpr (!std::is_same_v<U, T>) fa = phong::min(fa, T(1 / attenuation_denominator_min<U>));
         if constexpr (F.lights == light_kind::any) f = phong::select(w > T(0), fa, T(1));
         else f = fa;
     }
-    if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, L.spot.direction, L.spot.exponent, L.spot.cos_cutoff);
-    if constexpr (F.spot == spot_model::smooth) f = f * phong::spot_smooth(l, L.spot.direction, L.spot.cos_inner, L.spot.cos_outer);
+    if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, in_type<T>(L.spot.direction), T(L.spot.exponent), T(L.spot.cos_cutoff));
+    if constexpr (F.spot == spot_model::smooth) f = f * phong::spot_smooth(l, in_type<T>(L.spot.direction), T(L.spot.cos_inner), T(L.spot.cos_outer));
 
     if constexpr (F.light_ambient) {
-        if constexpr (F.attenuate_ambient) sums.ambient += L.ambient * f;
-        else sums.ambient += L.ambient;
+        if constexpr (F.attenuate_ambient) sums.ambient += in_type<T>(L.ambient) * f;
+        else sums.ambient += in_type<T>(L.ambient);
     }
-    if constexpr (F.diffuse) sums.diffuse += L.diffuse * (f * phong::select(lit, phong::max(nl, T(0)), T(0)));
+    // The diffuse and specular terms only where they can be nonzero: a lit pair, and with the
+    // gate (or without a specular term, where max(n.l, 0) says the same) n.l > 0. A scalar branches
+    // (no power computed for unlit pairs), a SIMD batch skips when no lane is on.
+    mask_t<T> on = lit;
+    if constexpr (F.specular_gate || F.specular == specular_model::none) on = math_traits<T>::both(lit, nl > T(0));
+    if (!math_traits<T>::any(on)) return;
+    const auto add_diffuse = [&] {
+        constexpr bool positive = F.specular_gate || F.specular == specular_model::none; // on implies n.l > 0
+        const T lambert = positive ? nl : phong::max(nl, T(0));
+        sums.diffuse += in_type<T>(L.diffuse) * (f * (std::is_floating_point_v<T> ? lambert : phong::select(on, lambert, T(0))));
+    };
     if constexpr (F.specular != specular_model::none) {
         const vec3& n = s.normal;
         const vec3& v = s.view;
-        mask_t<T> on = lit;
-        if constexpr (F.specular_gate) on = math_traits<T>::both(lit, nl > T(0));
-        // Only where the term is on: a scalar skips pow (and the register spills around the call) on
-        // unlit pairs, a SIMD batch when no lane is lit (its off lanes are zeroed below).
         T spec = T(0);
-        if (math_traits<T>::any(on)) {
-            if constexpr (F.specular == specular_model::phong) {
-                if constexpr (stable) {
-                    // 1 - r.v = |r - v|^2 / 2, the chord r - v = 2 (n.l) n - l - v (twofold by default).
-                    if (twofold) {
-                        spec = phong::pow_one_minus(detail::one_minus_rv(n, s.normal_lo, nl, nl_lo, l, l_lo, v, s.view_lo), m);
-                    } else {
-                        const vec3 chord = n * (T(2) * nl) - l - v;
-                        spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
-                    }
+        if constexpr (F.specular == specular_model::phong) {
+            if constexpr (stable) {
+                // 1 - r.v = |r - v|^2 / 2, the chord r - v = 2 (n.l) n - l - v (twofold by default).
+                if (twofold) {
+                    spec = phong::pow_one_minus(detail::one_minus_rv(n, s.normal_lo, nl, nl_lo, l, l_lo, v, s.view_lo), m);
                 } else {
-                    const vec3 r = n * (T(2) * nl) - l; // phong::reflect(-l, n)
-                    spec = phong::pow(phong::clamp(phong::dot(r, v), T(0), T(1)), m);
+                    const vec3 chord = n * (T(2) * nl) - l - v;
+                    spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
                 }
-            } else if constexpr (stable) {
-              if (!twofold) {
+            } else {
+                const vec3 r = n * (T(2) * nl) - l; // phong::reflect(-l, n)
+                spec = detail::power_of_cosine(phong::dot(r, v), m);
+            }
+        } else if constexpr (stable) {
+            if (!twofold) {
                 // h = normalize(l + v) rounded once (l + v does not nearly cancel here); 1 - n.h = |n - h|^2 / 2.
                 const vec3 sum = l + v;
                 const vec3 chord = n - sum * phong::rsqrt(phong::dot(sum, sum));
                 spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
-              } else {
+            } else {
                 // h = normalize(l + v) twofold from the twofold sum; 1 - n.h = |n - h|^2 / 2.
                 vec3 sum(T(0)), sum_lo(T(0));
                 for (int k = 0; k < 3; ++k) {
@@ -307,21 +429,23 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
                 }
                 const unit_twofold<T, Q> h = detail::unit_of(sum, sum_lo); // l = -v: h = 0, x = 1
                 spec = phong::pow_one_minus(phong::select(h.inv_scaled > T(0), detail::one_minus_nh(n, s.normal_lo, h.hi, h.lo), T(1)), m);
-              }
-            } else {
-                const vec3 sum = l + v;
-                const T hh = phong::dot(sum, sum);
-                const vec3 h = sum * phong::select(hh >= exact_min_square<T>(), phong::rsqrt(hh), T(0)); // l = -v: h = 0
-                spec = phong::pow(phong::clamp(phong::dot(n, h), T(0), T(1)), m);
             }
+        } else {
+            const vec3 sum = l + v;
+            const T hh = phong::dot(sum, sum);
+            const vec3 h = sum * phong::select(hh >= exact_min_square<T>(), phong::rsqrt(hh), T(0)); // l = -v: h = 0
+            spec = detail::power_of_cosine(phong::dot(n, h), m);
         }
         if constexpr (!std::is_floating_point_v<T>) spec = phong::select(on, spec, T(0)); // lanes computed but off
-        sums.specular += L.specular * (f * spec);
+        if constexpr (F.diffuse) add_diffuse();
+        sums.specular += in_type<T>(L.specular) * (f * spec);
+    } else if constexpr (F.diffuse) {
+        add_diffuse();
     }
 }
 
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const surface_frame<T, Q>& s,
+PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const frame_t<F, T, Q>& s,
                                          const material<T, Q>& mat, const environment<T, Q>& env)
 {
     glm::vec<3, T, Q> c(s.poison);
@@ -355,6 +479,56 @@ PHONG_HD constexpr void check_parameters([[maybe_unused]] const material<T, Q>& 
 
 template <class R> struct is_std_array : std::false_type {};
 template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::true_type {};
+
+/// The stable mode's wider path applies: float arithmetic carried out in double.
+template <features F, class T>
+inline constexpr bool widened = F.mode == evaluation::stable && F.precision == stable_precision::wider && std::is_same_v<T, float>;
+
+/// F as the wider path runs it: the exact mode's formulas (in double, on float inputs).
+template <features F>
+inline constexpr features exact_of = [] {
+    features e = F;
+    e.mode = evaluation::exact;
+    return e;
+}();
+
+template <class W, class T, glm::qualifier Q>
+PHONG_HD constexpr material<W, Q> widen(const material<T, Q>& m)
+{
+    return {glm::vec<3, W, Q>(m.ka), glm::vec<3, W, Q>(m.kd), glm::vec<3, W, Q>(m.ks), glm::vec<3, W, Q>(m.emission), W(m.shininess), W(m.alpha)};
+}
+template <class W, class T, glm::qualifier Q>
+PHONG_HD constexpr environment<W, Q> widen(const environment<T, Q>& e)
+{
+    return {glm::vec<3, W, Q>(e.ambient), glm::vec<4, W, Q>(e.eye)};
+}
+
+/// prepare, every light, finish: the whole model at one point in arithmetic type T (the lights'
+/// scalar type may be narrower: the wider path).
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr color<F, T, Q> evaluate(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                           const material<T, Q>& mat, const Lights& lights,
+                                           const environment<T, Q>& env, bool front_facing)
+{
+    const frame_t<F, T, Q> s = prepare<F>(position, normal, env, front_facing);
+    light_sums<T, Q> sums{};
+    if constexpr (is_std_array<Lights>::value) {
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (add_light<F>(sums, s, lights[I], mat.shininess), ...);
+        }(std::make_index_sequence<std::tuple_size_v<Lights>>{});
+    } else {
+        if constexpr (std::is_floating_point_v<T>) {
+            // The same loop twice, so each copy is compiled knowing whether the point has a
+            // normal and a view vector (g++ does not unswitch it by itself).
+            if (s.defined) for (const auto& L : lights) add_light<F>(sums, s, L, mat.shininess);
+            else for (const auto& L : lights) add_light<F>(sums, s, L, mat.shininess);
+        } else {
+            for (const auto& L : lights) add_light<F>(sums, s, L, mat.shininess);
+        }
+    }
+    return finish<F>(sums, s, mat, env);
+}
+
 
 } // namespace detail
 
@@ -390,16 +564,13 @@ PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const
                                         const environment<T, Q>& env = {}, bool front_facing = true)
 {
     detail::check_parameters(mat, lights);
-    const detail::surface_frame<T, Q> s = detail::prepare<F>(position, normal, env, front_facing);
-    detail::light_sums<T, Q> sums{};
-    if constexpr (detail::is_std_array<Lights>::value) {
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (detail::add_light<F>(sums, s, lights[I], mat.shininess), ...);
-        }(std::make_index_sequence<std::tuple_size_v<Lights>>{});
+    if constexpr (detail::widened<F, T>) {
+        using W = double;
+        return color<F, T, Q>(detail::evaluate<detail::exact_of<F>>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal),
+                                                                     detail::widen<W>(mat), lights, detail::widen<W>(env), front_facing));
     } else {
-        for (const light<T, Q>& L : lights) detail::add_light<F>(sums, s, L, mat.shininess);
+        return detail::evaluate<F>(position, normal, mat, lights, env, front_facing);
     }
-    return detail::finish<F>(sums, s, mat, env);
 }
 
 /// Seed 003's per-vertex pipeline (phong.vert, diffuse.vert): object-space position and normal,

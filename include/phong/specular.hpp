@@ -37,7 +37,7 @@ PHONG_HD constexpr T specular_reflection(const glm::vec<3, T, Q>& n, const glm::
 {
     const T nl = phong::dot(n, l);
     const glm::vec<3, T, Q> r = phong::reflect(-l, n);
-    const T s = phong::pow(phong::clamp(phong::dot(r, v), T(0), T(1)), m);
+    const T s = phong::pow_unit(phong::clamp(phong::dot(r, v), T(0), T(1)), m);
     return phong::select(nl > T(0), s, T(0));
 }
 
@@ -51,7 +51,7 @@ PHONG_HD constexpr T specular_halfway(const glm::vec<3, T, Q>& n, const glm::vec
 {
     const T nl = phong::dot(n, l);
     const glm::vec<3, T, Q> h = phong::normalize_unscaled(l + v);
-    const T s = phong::pow(phong::clamp(phong::dot(n, h), T(0), T(1)), m);
+    const T s = phong::pow_unit(phong::clamp(phong::dot(n, h), T(0), T(1)), m);
     return phong::select(nl > T(0), s, T(0));
 }
 

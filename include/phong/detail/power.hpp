@@ -1,0 +1,132 @@
+// phong: x^m for a base in [0, 1] and an exponent m >= 0, in double arithmetic, inline.
+// SPDX-License-Identifier: MIT
+//
+// The specular and spot powers are the one transcendental every lit pair needs. A call to libm's
+// pow costs more than the call itself: every vector register is caller-saved, so a light loop
+// spills its sums and unit vectors around each call. This kernel is straight-line code with two
+// small tables (2 KiB + 512 B), the same in constant evaluation and at run time (so a constexpr
+// colour equals the run-time one bit for bit):
+//   x = 2^k z, z in [0.6875, 1.375)  (offset so that x near 1 has k = 0 and no cancellation)
+//   log2 x = k + log2(c_i) + log2(1 + r),  r = z / c_i - 1,  |r| < 2^-8,  c_i: 128 table points
+//   2^y = 2^(n/64) 2^t,  n = round(64 y),  |t| <= 2^-7,  2^(j/64): 64 table entries
+// with Taylor polynomials of degree 7 and 5 (truncation below 1e-17). The tables are computed at
+// compile time by the long-double kernels of math.hpp, so no magic constants are copied in.
+//
+// Accuracy (tested in tests/math.test.cpp against a __float128 or long double pow): relative error
+// at most about (|y| + m |log2 c_i| + 4) * 2^-53 with y = m log2 x, i.e. 1e-14 for m <= 100 and
+// 1e-11 at m = 1e5: far inside half an ulp of float (a float result is correctly rounded in all but
+// near-tie cases) and of the order of the rounding that pow already amplifies in a double dot product.
+#pragma once
+
+#include "config.hpp"
+#include "constexpr_math.hpp"
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+
+namespace phong::detail::power {
+
+using u64 = std::uint64_t;
+
+inline constexpr int log_table_bits = 7; // 128 points c_i
+inline constexpr int exp_table_bits = 6; // 2^(j/64), j = 0..63
+inline constexpr u64 log_offset = 0x3fe6000000000000ull; // bits of 0.6875
+
+struct log2_point {
+    double inv_c;  // 1 / c_i rounded to double (exactly 1 for the interval that holds 1)
+    double log2_c; // log2(1 / inv_c) to within half an ulp: the identity holds for the rounded inv_c
+};
+
+inline constexpr long double wide_ln2 = ce::ln2;
+
+PHONG_HD constexpr std::array<log2_point, (1 << log_table_bits)> make_log2_table()
+{
+    std::array<log2_point, (1 << log_table_bits)> t{};
+    for (int i = 0; i < (1 << log_table_bits); ++i) {
+        // The z that land on index i: bits log_offset + (i << 45) up to the next index.
+        const double lo = std::bit_cast<double>(log_offset + (u64(i) << (52 - log_table_bits)));
+        const double hi = std::bit_cast<double>(log_offset + (u64(i + 1) << (52 - log_table_bits)));
+        const double inv_c = (lo <= 1.0 && 1.0 < hi) ? 1.0 : 2.0 / (lo + hi);
+        t[i] = {inv_c, static_cast<double>(-ce::log(inv_c) / wide_ln2)};
+    }
+    return t;
+}
+
+// Entry j holds bits(2^(j/64)) - (j << 46): adding (round(64 y) << 46) then gives 2^(round(64 y)/64).
+PHONG_HD constexpr std::array<u64, (1 << exp_table_bits)> make_exp2_table()
+{
+    std::array<u64, (1 << exp_table_bits)> t{};
+    for (int j = 0; j < (1 << exp_table_bits); ++j) {
+        const double v = static_cast<double>(ce::exp(static_cast<long double>(j) / (1 << exp_table_bits) * wide_ln2));
+        t[j] = std::bit_cast<u64>(v) - (u64(j) << (52 - exp_table_bits));
+    }
+    return t;
+}
+
+#if !defined(__CUDA_ARCH__) // device code uses CUDA's pow (math.hpp); host tables are not visible there
+inline constexpr std::array<log2_point, (1 << log_table_bits)> log2_table = make_log2_table();
+inline constexpr std::array<u64, (1 << exp_table_bits)> exp2_table = make_exp2_table();
+
+// Taylor coefficients: log2(1 + r) = sum_n (-1)^(n+1) r^n / (n ln 2);  2^t = sum_n (t ln 2)^n / n!.
+inline constexpr long double inv_ln2 = 1 / wide_ln2;
+inline constexpr double a1 = double(inv_ln2), a2 = double(-inv_ln2 / 2), a3 = double(inv_ln2 / 3),
+                        a4 = double(-inv_ln2 / 4), a5 = double(inv_ln2 / 5), a6 = double(-inv_ln2 / 6),
+                        a7 = double(inv_ln2 / 7);
+inline constexpr double b1 = double(wide_ln2), b2 = double(wide_ln2 * wide_ln2 / 2),
+                        b3 = double(wide_ln2 * wide_ln2 * wide_ln2 / 6),
+                        b4 = double(wide_ln2 * wide_ln2 * wide_ln2 * wide_ln2 / 24),
+                        b5 = double(wide_ln2 * wide_ln2 * wide_ln2 * wide_ln2 * wide_ln2 / 120);
+
+/// log2 x for a positive normal double x (absolute error about 2^-53 (|log2 c_i| + 1)).
+PHONG_HD constexpr double log2_normal(double x)
+{
+    const u64 u = std::bit_cast<u64>(x);
+    const u64 tmp = u - log_offset;
+    const int i = static_cast<int>((tmp >> (52 - log_table_bits)) % (1u << log_table_bits));
+    const double k = static_cast<double>(static_cast<std::int64_t>(tmp) >> 52); // arithmetic shift (C++20)
+    const double z = std::bit_cast<double>(u - (tmp & (u64(0xfff) << 52)));
+    const double r = z * log2_table[i].inv_c - 1.0; // exact for the interval holding 1 (inv_c = 1)
+    const double r2 = r * r;
+    const double p = r * (a1 + r * a2) + r2 * r * ((a3 + r * a4) + r2 * ((a5 + r * a6) + r2 * a7));
+    return (k + log2_table[i].log2_c) + p;
+}
+
+/// 2^y for y in (-1022, 0] (a normal result).
+PHONG_HD constexpr double exp2_nonpositive(double y)
+{
+    constexpr double shift = 0x1.8p52 / (1 << exp_table_bits); // ulp 1/64 around it: y + shift rounds 64 y
+    const double shifted = y + shift;
+    const u64 n = std::bit_cast<u64>(shifted); // low bits: round(64 y), two's complement
+    const double t = y - (shifted - shift);    // |t| <= 1/128
+    const double scale = std::bit_cast<double>(exp2_table[n % (1u << exp_table_bits)] + (n << (52 - exp_table_bits)));
+    const double t2 = t * t;
+    const double p = t * b1 + t2 * ((b2 + t * b3) + t2 * (b4 + t * b5));
+    return scale + scale * p;
+}
+
+/// x^m for x in [0, 1] and m >= 0 (the kernel of phong::pow_unit). Bits for bits the same in
+/// constant evaluation and at run time. Edges: pow_unit(0, 0) = 1, pow_unit(0, m > 0) = 0,
+/// results below 2^-1022 are 0. Outside the domain (x > 1, x < 0, m < 0, NaN, inf) it returns
+/// IEEE pow's value (std::pow at run time, the long-double kernel in constant evaluation).
+PHONG_HD constexpr double pow_unit(double x, double m)
+{
+    if (x >= 0x1p-1022) [[likely]] {
+        const double y = m * log2_normal(x);
+        if (y > -1022.0 && y <= 0.0) [[likely]] return exp2_nonpositive(y);
+        if (y <= -1022.0) return 0.0;
+    } else if (x == 0.0 && m >= 0.0) {
+        return m == 0.0 ? 1.0 : 0.0;
+    } else if (x > 0.0) { // subnormal: scaled into the normal range
+        const double y = m * (log2_normal(x * 0x1p64) - 64.0);
+        if (y > -1022.0 && y <= 0.0) return exp2_nonpositive(y);
+        if (y <= -1022.0) return 0.0;
+    }
+    if (std::is_constant_evaluated()) return static_cast<double>(ce::pow(x, m));
+    return std::pow(x, m);
+}
+#endif
+
+} // namespace phong::detail::power
