@@ -60,7 +60,7 @@ def baseline_of(variant):
 
 def order(variant):
     path, mode, spec, typ = variant.split(".")
-    modes = ["exact", "stable_m256", "stable"]
+    modes = ["exact", "stable", "stable_twofold", "stable_m256"]
     return (["float", "double"].index(typ), ["naive_glm", "scalar", "batch"].index(path) if path in
             ("naive_glm", "scalar", "batch") else 9, modes.index(mode) if mode in modes else 9, spec)
 
@@ -104,10 +104,10 @@ def main():
                                   ("scalar.exact.blinn.float", 1.0, "scalar exact float (Blinn) <= 1.0x GLM baseline"),
                                   ("scalar.stable.phong.float", 1.5, "scalar stable float <= 1.5x GLM baseline"),
                                   ("scalar.stable.blinn.float", 1.5, "scalar stable float (Blinn) <= 1.5x GLM baseline"),
-                                  ("scalar.stable_m256.phong.float", 1.5,
-                                   "scalar stable float, stable_twofold_above = 256 <= 1.5x GLM baseline"),
-                                  ("scalar.stable_m256.blinn.float", 1.5,
-                                   "scalar stable float (Blinn), stable_twofold_above = 256 <= 1.5x GLM baseline")):
+                                  ("scalar.stable_twofold.phong.float", 1.5,
+                                   "scalar stable float, precision = twofold (GPU route) <= 1.5x GLM baseline"),
+                                  ("scalar.stable_twofold.blinn.float", 1.5,
+                                   "scalar stable float (Blinn), precision = twofold <= 1.5x GLM baseline")):
         for K in (1, 4, 16):
             s = speedup(variant, "typical", K, n_cache)
             if s is None:

@@ -3,7 +3,10 @@
 // Phong / Blinn-Phong), K = 1, 4, 16, 64 lights, a cache-sized and a DRAM-sized N, and two stiff
 // input classes (m = 1e4 near the highlight, grazing n.l ~ 1e-6).
 //
-// Row names: <path>.<mode>.<specular>.<type>/<input set>/K:<K>/N:<N>, path = naive_glm | scalar.
+// Row names: <path>.<mode>.<specular>.<type>/<input set>/K:<K>/N:<N>, path = naive_glm | scalar |
+// batch; mode = exact | stable (float: evaluated in double) | stable_twofold (float arithmetic with
+// twofold vectors, features::precision = twofold: the GPU route, and what batches and double run) |
+// stable_m256 (batch: twofold only above m = 256).
 // g++ 12 flags the _mm512_undefined_* placeholders inside its own AVX-512 intrinsics as
 // uninitialized once xsimd's kernels are inlined (batch.hpp). The diagnostic state that counts is
 // the one at the intrinsics header's lines, which may be included before batch.hpp's own pragma:
@@ -35,11 +38,13 @@ namespace {
 
 /// The model every row of this file computes: seed 003's phong.vert summed over positional lights
 /// (per-light ambient, diffuse, specular gated on n.l > 0, eye at the origin).
-constexpr phong::features model(phong::specular_model spec, phong::evaluation mode, unsigned twofold_above = 0)
+constexpr phong::features model(phong::specular_model spec, phong::evaluation mode,
+                                phong::stable_precision precision = phong::stable_precision::wider, unsigned twofold_above = 0)
 {
     phong::features f = phong::presets::seed003_ads;
     f.specular = spec;
     f.mode = mode;
+    f.precision = precision;                // stable_twofold rows: float arithmetic with twofold vectors
     f.stable_twofold_above = twofold_above; // stable_m256 rows: once-rounded components up to m = 256
     return f;
 }
@@ -135,7 +140,7 @@ void batch_row(benchmark::State& state, input_set set, std::size_t N, std::size_
     }
     std::vector<glm::vec<3, T>> rgb(N);
     for (std::size_t i = 0; i < N; ++i) rgb[i] = {r[i], g[i], b[i]};
-    report(state, N, K, rgb, cached_reference(F, set, N, K), published_bound<T>(F, set));
+    report(state, N, K, rgb, cached_reference(F, set, N, K), published_bound<T>(F, set, true));
 }
 #endif
 
@@ -154,6 +159,7 @@ std::vector<variant> variants_of()
 {
     using phong::evaluation;
     using phong::specular_model;
+    constexpr phong::stable_precision twofold = phong::stable_precision::twofold;
     const std::string t = type_name<T>();
     return {
         {"naive_glm.exact.phong." + t, &naive_row<T, false>},
@@ -162,15 +168,15 @@ std::vector<variant> variants_of()
         {"scalar.exact.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::exact)>},
         {"scalar.stable.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::stable)>},
         {"scalar.stable.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::stable)>},
-        {"scalar.stable_m256.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::stable, 256)>},
-        {"scalar.stable_m256.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::stable, 256)>},
+        {"scalar.stable_twofold.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::stable, twofold)>},
+        {"scalar.stable_twofold.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::stable, twofold)>},
 #if defined(PHONG_BENCH_BATCH)
         {"batch.exact.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::exact)>},
         {"batch.exact.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::exact)>},
         {"batch.stable.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::stable)>},
         {"batch.stable.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::stable)>},
-        {"batch.stable_m256.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::stable, 256)>},
-        {"batch.stable_m256.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::stable, 256)>},
+        {"batch.stable_m256.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::stable, twofold, 256)>},
+        {"batch.stable_m256.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::stable, twofold, 256)>},
 #endif
     };
 }

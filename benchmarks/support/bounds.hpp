@@ -13,16 +13,21 @@
 
 namespace phong_bench {
 
+/// batch_row: SIMD batches run the stable mode twofold whatever features::precision says.
 template <class T>
-double published_bound([[maybe_unused]] const phong::features& F, [[maybe_unused]] input_set set)
+double published_bound([[maybe_unused]] const phong::features& F, [[maybe_unused]] input_set set, [[maybe_unused]] bool batch_row = false)
 {
 #if defined(PHONG_BENCH_HAVE_ACCURACY)
     using phong::accuracy::input_class;
     const input_class c = set == input_set::highlight ? input_class::shininess_1e4
                         : set == input_set::grazing   ? input_class::grazing
                                                       : input_class::well_conditioned;
-    const phong::accuracy::bound b = F.mode == phong::evaluation::stable ? phong::accuracy::of<phong::evaluation::stable, T>(c)
-                                                                         : phong::accuracy::of<phong::evaluation::exact, T>(c);
+    using phong::evaluation;
+    using phong::stable_precision;
+    const bool twofold = F.precision == stable_precision::twofold || batch_row;
+    const phong::accuracy::bound b = F.mode == evaluation::exact ? phong::accuracy::of<evaluation::exact, T>(c)
+                                   : twofold ? phong::accuracy::of<evaluation::stable, T, stable_precision::twofold>(c)
+                                             : phong::accuracy::of<evaluation::stable, T>(c);
     if (b.max_rel == 0 && b.p99_ulp == 0 && b.max_ulp == 0) return -1; // not published yet
     return b.max_rel;
 #else

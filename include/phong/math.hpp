@@ -104,7 +104,7 @@ struct math_traits {
 #if defined(__CUDA_ARCH__)
             return (x == V(0) && m == V(0)) ? V(1) : ::pow(x, m);
 #else
-            return static_cast<V>(detail::power::pow_unit(static_cast<double>(x), static_cast<double>(m)));
+            return detail::power::pow_unit(x, m); // float: shorter polynomials; double: the full kernel
 #endif
         } else {
             return pow(x, m);
@@ -179,9 +179,10 @@ template <class V> PHONG_HD constexpr V log1p(V x) { return math_traits<V>::log1
 template <class V> PHONG_HD constexpr V pow(V x, V y) { return math_traits<V>::pow(x, y); }
 /// x^m for a base x in [0, 1] and an exponent m >= 0: the specular and spot powers.
 /// pow_unit(0, 0) = 1, pow_unit(0, m > 0) = 0. Float and double: an inline kernel in double
-/// arithmetic (detail/power.hpp), relative error below (|m log2 x| + m + 4) 2^-53 (a float
-/// result is correctly rounded but for near-ties), results below 2^-1022 flushed to 0; identical
-/// in constant evaluation. Outside the domain (x > 1, x < 0, m < 0, NaN, inf): IEEE pow's value.
+/// arithmetic (detail/power.hpp), identical in constant evaluation. Double: relative error below
+/// (|m log2 x| + m + 4) 2^-53, results below 2^-1022 flushed to 0. Float: shorter polynomials,
+/// relative error below 1e-8 before the final rounding (within 1 ulp, correctly rounded but for
+/// near-ties). Outside the domain (x > 1, x < 0, m < 0, NaN, inf): IEEE pow's value.
 /// SIMD batches: their pow (batch.hpp).
 template <class V> PHONG_HD constexpr V pow_unit(V x, V m)
 {

@@ -170,15 +170,9 @@ PHONG_HD constexpr surface_frame<T, Q> prepare_exact(const glm::vec<3, T, Q>& po
     // A NaN point has every channel NaN through poison; its terms are switched off so that no
     // garbage (or a NaN power) is computed for it.
     const mask_t<T> defined = math_traits<T>::both(math_traits<T>::both(n.ok, view_ok), poison == T(0));
-    surface_frame<T, Q> s;
-    for (int k = 0; k < 3; ++k) { // component by component: g++ copies whole vectors through the stack
-        s.position[k] = position[k];
-        s.normal[k] = unit_normal[k];
-        s.view[k] = view[k];
-    }
-    s.defined = defined;
-    s.poison = poison;
-    return s;
+    // Vectors rebuilt from their components: copied whole, g++ moved them through the stack.
+    return {vec3(position.x, position.y, position.z), vec3(unit_normal.x, unit_normal.y, unit_normal.z),
+            vec3(view.x, view.y, view.z), defined, poison};
 }
 
 template <features F, class T, glm::qualifier Q>

@@ -107,6 +107,38 @@ PHONG_HD constexpr double exp2_nonpositive(double y)
     return scale + scale * p;
 }
 
+/// float's kernel: the same tables with shorter polynomials (degree 5 and 3), enough for a float
+/// result. log2's truncation is below r^6/6 < 2^-50 absolute and only matters times m where
+/// m |log2 x| < 150 (else the float result is 0); exp2's is below 4e-11 relative.
+PHONG_HD constexpr float pow_unit(float xf, float mf)
+{
+    const double x = xf, m = mf;
+    if (x > 0.0) [[likely]] { // every positive float is a normal double
+        const u64 u = std::bit_cast<u64>(x);
+        const u64 tmp = u - log_offset;
+        const int i = static_cast<int>((tmp >> (52 - log_table_bits)) % (1u << log_table_bits));
+        const double k = static_cast<double>(static_cast<std::int64_t>(tmp) >> 52);
+        const double z = std::bit_cast<double>(u - (tmp & (u64(0xfff) << 52)));
+        const double r = z * log2_table[i].inv_c - 1.0;
+        const double r2 = r * r;
+        const double log2x = (k + log2_table[i].log2_c) + (r * (a1 + r * a2) + r2 * r * (a3 + r * a4 + r2 * a5));
+        const double y = m * log2x;
+        if (y > -1022.0 && y <= 0.0) [[likely]] {
+            constexpr double shift = 0x1.8p52 / (1 << exp_table_bits);
+            const double shifted = y + shift;
+            const u64 n = std::bit_cast<u64>(shifted);
+            const double t = y - (shifted - shift);
+            const double scale = std::bit_cast<double>(exp2_table[n % (1u << exp_table_bits)] + (n << (52 - exp_table_bits)));
+            return static_cast<float>(scale + scale * (t * (b1 + t * (b2 + t * b3))));
+        }
+        if (y <= -1022.0) return 0.0f;
+    } else if (x == 0.0 && m >= 0.0) {
+        return m == 0.0 ? 1.0f : 0.0f;
+    }
+    if (std::is_constant_evaluated()) return static_cast<float>(ce::pow(x, m));
+    return std::pow(xf, mf);
+}
+
 /// x^m for x in [0, 1] and m >= 0 (the kernel of phong::pow_unit). Bits for bits the same in
 /// constant evaluation and at run time. Edges: pow_unit(0, 0) = 1, pow_unit(0, m > 0) = 0,
 /// results below 2^-1022 are 0. Outside the domain (x > 1, x < 0, m < 0, NaN, inf) it returns
