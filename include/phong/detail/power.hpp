@@ -27,6 +27,13 @@
 #include <cstdint>
 #include <type_traits>
 
+#if defined(__NVCC__)
+// The tables are built in long double on the host; nvcc warns (#20208) that device code would see
+// double. Device code does not use them (math.hpp calls CUDA's pow there).
+#  pragma nv_diagnostic push
+#  pragma nv_diag_suppress 20208
+#endif
+
 namespace phong::detail::power {
 
 using u64 = std::uint64_t;
@@ -162,3 +169,7 @@ PHONG_HD constexpr double pow_unit(double x, double m)
 #endif
 
 } // namespace phong::detail::power
+
+#if defined(__NVCC__)
+#  pragma nv_diagnostic pop
+#endif
