@@ -4,18 +4,20 @@
 // The specular and spot powers are the one transcendental every lit pair needs. A call to libm's
 // pow costs more than the call itself: every vector register is caller-saved, so a light loop
 // spills its sums and unit vectors around each call. This kernel is straight-line code with two
-// small tables (2 KiB + 512 B), the same in constant evaluation and at run time (so a constexpr
-// colour equals the run-time one bit for bit):
-//   x = 2^k z, z in [0.6875, 1.375)  (offset so that x near 1 has k = 0 and no cancellation)
-//   log2 x = k + log2(c_i) + log2(1 + r),  r = z / c_i - 1,  |r| < 2^-8,  c_i: 128 table points
+// small tables (2 KiB + 512 B), usable in constant evaluation:
+//   x = 2^k z, z in [0.6875, 1.375)  (offset so that x near 1 has k = 0: no cancellation with k)
+//   log2 x = k + log2(c_i) + log2(1 + r),  r = z / c_i - 1,  |r| <= 2^-7,  c_i: 128 table points
 //   2^y = 2^(n/64) 2^t,  n = round(64 y),  |t| <= 2^-7,  2^(j/64): 64 table entries
 // with Taylor polynomials of degree 7 and 5 (truncation below 1e-17). The tables are computed at
-// compile time by the long-double kernels of math.hpp, so no magic constants are copied in.
+// compile time by the long-double kernels of constexpr_math.hpp, so no magic constants are copied in.
 //
-// Accuracy (tested in tests/math.test.cpp against a __float128 or long double pow): relative error
-// at most about (|y| + m |log2 c_i| + 4) * 2^-53 with y = m log2 x, i.e. 1e-14 for m <= 100 and
-// 1e-11 at m = 1e5: far inside half an ulp of float (a float result is correctly rounded in all but
-// near-tie cases) and of the order of the rounding that pow already amplifies in a double dot product.
+// Accuracy (tests/power.test.cpp, against __float128): double relative error below
+// 3 (|y| + m + 4) 2^-53 with y = m log2 x (measured worst 2.0 times (|y| + m + 4) 2^-53, near
+// |y| = 512; the m term is the rounding of r = z / c_i - 1, which is not exact for x just below 1):
+// 1e-14 for m <= 100, 1e-11 at m = 1e5. Float: 99.99 % correctly rounded, worst 0.5005 ulp.
+// Constant evaluation and run time give the same bits unless the compiler contracts the
+// polynomials' multiply-adds into FMA instructions (g++ and clang do with -march=native: then they
+// differ by rounding, within the same bound).
 #pragma once
 
 #include "config.hpp"
@@ -101,7 +103,7 @@ PHONG_HD constexpr double log2_normal(double x)
     return (k + log2_table[i].log2_c) + p;
 }
 
-/// 2^y for y in (-1022, 0] (a normal result).
+/// 2^y for y in [-1022, 0] (a normal result).
 PHONG_HD constexpr double exp2_nonpositive(double y)
 {
     constexpr double shift = 0x1.8p52 / (1 << exp_table_bits); // ulp 1/64 around it: y + shift rounds 64 y
@@ -130,7 +132,7 @@ PHONG_HD constexpr float pow_unit(float xf, float mf)
         const double r2 = r * r;
         const double log2x = (k + log2_table[i].log2_c) + (r * (a1 + r * a2) + r2 * r * (a3 + r * a4 + r2 * a5));
         const double y = m * log2x;
-        if (y > -1022.0 && y <= 0.0) [[likely]] {
+        if (y >= -1022.0 && y <= 0.0) [[likely]] {
             constexpr double shift = 0x1.8p52 / (1 << exp_table_bits);
             const double shifted = y + shift;
             const u64 n = std::bit_cast<u64>(shifted);
@@ -138,7 +140,7 @@ PHONG_HD constexpr float pow_unit(float xf, float mf)
             const double scale = std::bit_cast<double>(exp2_table[n % (1u << exp_table_bits)] + (n << (52 - exp_table_bits)));
             return static_cast<float>(scale + scale * (t * (b1 + t * (b2 + t * b3))));
         }
-        if (y <= -1022.0) return 0.0f;
+        if (y < -1022.0) return 0.0f;
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0f : 0.0f;
     }
@@ -146,22 +148,23 @@ PHONG_HD constexpr float pow_unit(float xf, float mf)
     return std::pow(xf, mf);
 }
 
-/// x^m for x in [0, 1] and m >= 0 (the kernel of phong::pow_unit). Bits for bits the same in
-/// constant evaluation and at run time. Edges: pow_unit(0, 0) = 1, pow_unit(0, m > 0) = 0,
-/// results below 2^-1022 are 0. Outside the domain (x > 1, x < 0, m < 0, NaN, inf) it returns
-/// IEEE pow's value (std::pow at run time, the long-double kernel in constant evaluation).
+/// x^m for x in [0, 1] and m >= 0 (the kernel of phong::pow_unit). Edges: pow_unit(0, 0) = 1,
+/// pow_unit(+-0, m > 0) = +0, results below 2^-1022 are 0 (y = m log2 x < -1022). Outside the
+/// domain: x > 1 with m < 0 (a result <= 1) runs the same kernel, with the same accuracy and flush;
+/// everything else (x > 1 with m > 0, x < 0, NaN, inf) returns IEEE pow's value (std::pow at run
+/// time, the long-double kernel in constant evaluation).
 PHONG_HD constexpr double pow_unit(double x, double m)
 {
     if (x >= 0x1p-1022) [[likely]] {
         const double y = m * log2_normal(x);
-        if (y > -1022.0 && y <= 0.0) [[likely]] return exp2_nonpositive(y);
-        if (y <= -1022.0) return 0.0;
+        if (y >= -1022.0 && y <= 0.0) [[likely]] return exp2_nonpositive(y);
+        if (y < -1022.0) return 0.0;
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0 : 0.0;
     } else if (x > 0.0) { // subnormal: scaled into the normal range
         const double y = m * (log2_normal(x * 0x1p64) - 64.0);
-        if (y > -1022.0 && y <= 0.0) return exp2_nonpositive(y);
-        if (y <= -1022.0) return 0.0;
+        if (y >= -1022.0 && y <= 0.0) return exp2_nonpositive(y);
+        if (y < -1022.0) return 0.0;
     }
     if (std::is_constant_evaluated()) return static_cast<double>(ce::pow(x, m));
     return std::pow(x, m);
