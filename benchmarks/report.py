@@ -103,11 +103,7 @@ def main():
     for variant, limit, label in (("scalar.exact.phong.float", 1.0, "scalar exact float <= 1.0x GLM baseline"),
                                   ("scalar.exact.blinn.float", 1.0, "scalar exact float (Blinn) <= 1.0x GLM baseline"),
                                   ("scalar.stable.phong.float", 1.5, "scalar stable float <= 1.5x GLM baseline"),
-                                  ("scalar.stable.blinn.float", 1.5, "scalar stable float (Blinn) <= 1.5x GLM baseline"),
-                                  ("scalar.stable_twofold.phong.float", 1.5,
-                                   "scalar stable float, precision = twofold (GPU route) <= 1.5x GLM baseline"),
-                                  ("scalar.stable_twofold.blinn.float", 1.5,
-                                   "scalar stable float (Blinn), precision = twofold <= 1.5x GLM baseline")):
+                                  ("scalar.stable.blinn.float", 1.5, "scalar stable float (Blinn) <= 1.5x GLM baseline")):
         for K in (1, 4, 16):
             s = speedup(variant, "typical", K, n_cache)
             if s is None:

@@ -7,7 +7,7 @@
 # Usage: benchmarks/report.sh [--docs] [extra Google Benchmark flags, e.g. --benchmark_filter=K:1/]
 #   --docs  also copy the report and the plot to docs/benchmarks/ (what README.md shows)
 # Output: build/bench/report/{report.md,error_vs_time.png,results.json}; the report is printed.
-# Takes about 3-4 minutes on 2 cores (build ~1 min, suite ~2 min, callgrind ~15 s).
+# Takes about 5 minutes on 2 cores (build ~1 min, suite ~4 min, callgrind ~15 s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 docs=0
@@ -19,8 +19,11 @@ mkdir -p "$out"
 cmake --preset bench >/dev/null
 cmake --build --preset bench -j 2 --target phong_bench phong_feature_cost
 
-echo "Running the suite (3 repetitions per row, medians; load average: $(cut -d' ' -f1-3 /proc/loadavg))"
-"$build/benchmarks/phong_bench" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+echo "Running the suite (5 repetitions per row in random order, medians; load average: $(cut -d' ' -f1-3 /proc/loadavg))"
+# Random interleaving: the repetitions of all rows run in a shuffled order, so a slow spell of this
+# shared machine spreads over every row instead of biasing the ones that ran during it.
+"$build/benchmarks/phong_bench" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
+  --benchmark_report_aggregates_only=true \
   --benchmark_min_time=0.1 --benchmark_out="$out/results.json" --benchmark_out_format=json "$@" >"$out/console.txt"
 
 benchmarks/feature_cost.sh "$build" | tee "$out/feature_cost.txt" || true

@@ -66,7 +66,8 @@ void naive_row(benchmark::State& state, input_set set, std::size_t N, std::size_
     const scene sc = make_scene(set, K);
     const points<T>& pts = cached_points<T>(set, N, K);
     const std::vector<naive::LightInfo<T>> lights = naive_lights<T>(sc);
-    const naive::MaterialInfo<T> mat{glm::vec<3, T>(sc.ka), glm::vec<3, T>(sc.kd), glm::vec<3, T>(sc.ks), T(sc.shininess)};
+    const phong::material<T> m = material_of<T>(sc); // the same numbers as every other row
+    const naive::MaterialInfo<T> mat{m.ka, m.kd, m.ks, m.shininess};
     std::vector<glm::vec<3, T>> out(N);
     for (auto _ : state) {
         for (std::size_t i = 0; i < N; ++i)

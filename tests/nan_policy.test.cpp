@@ -208,6 +208,35 @@ template <class X> void expect_rejected(const X& x, const char* field)
 
 } // namespace
 
+// README's overflow example: c0 = 1e-3 at distance 1 (f = 1000), Ld = 1e36, kd = (0, 0.5, 0.5).
+// The light sum f Ld = 1e39 overflows float: the exact mode gives inf, and 0 * inf = NaN in the
+// channel whose coefficient is 0; the stable mode sums in double, where nothing overflows, and only
+// the final rounding to float is inf: (0, inf, inf).
+TEST_CASE("NaN policy: an overflowing light sum, exact against stable float")
+{
+    constexpr features exact{.scene_ambient = false, .specular = specular_model::none, .lights = light_kind::positional,
+                             .attenuation = attenuation_model::polynomial};
+    constexpr features stable = presets::with_mode(exact, evaluation::stable);
+    light<float> L = light<float>::seed000({0, 0, -3, 1}, glm::vec3(1e36f), {1e-3f, 0, 0, std::numeric_limits<float>::infinity()});
+    const std::array<light<float>, 1> lights{L};
+    const material<float> mat{.ka = glm::vec3(0), .kd = glm::vec3(0, 0.5f, 0.5f), .ks = glm::vec3(0)};
+    const glm::vec3 q(0, 0, -4), n(0, 0, 1); // the light 1 above Q: n.l = 1, f = 1 / 1e-3
+    REQUIRE(validate(L));
+    const glm::vec3 e = shade<exact>(q, n, mat, lights), s = shade<stable>(q, n, mat, lights);
+    CHECK(std::isnan(e.x));
+    CHECK(std::isinf(e.y));
+    CHECK(std::isinf(e.z));
+    CHECK(s.x == 0.0f);
+    CHECK(std::isinf(s.y));
+    CHECK(std::isinf(s.z));
+    // Just below float's range the stable mode is finite and correctly rounded: 1e35 * 1000 * 0.5.
+    L.diffuse = glm::vec3(1e35f);
+    const std::array<light<float>, 1> smaller{L};
+    const glm::vec3 f = shade<stable>(q, n, mat, smaller);
+    CHECK(f.x == 0.0f);
+    CHECK(f.y == float(double(1e35f) * (1.0 / double(1e-3f)) * 0.5));
+}
+
 TEST_CASE_TEMPLATE("NaN policy: validate(material) rejects NaN, inf and out-of-range parameters", T, float, double)
 {
     const material<T> ok{};

@@ -122,7 +122,7 @@ inline void make_lights(scene& s, input_set set, std::size_t K)
         const dvec3 tint(uniform(stream, i, 5, 0.8, 1), uniform(stream, i, 6, 0.8, 1), uniform(stream, i, 7, 0.8, 1));
         s.light_diffuse.push_back(to_float_grid(tint * strength));
         s.light_specular.push_back(to_float_grid(tint * strength));
-        s.light_ambient.push_back(dvec3(set == input_set::typical ? 0.04 : 0.0));
+        s.light_ambient.push_back(to_float_grid(dvec3(set == input_set::typical ? 0.04 : 0.0)));
         // A spot axis from the light toward the sphere's centre (used by the feature presets).
         s.spot_axis.push_back(glm::normalize(centre - p));
     }
@@ -181,9 +181,10 @@ template <class T>
 phong::material<T> material_of(const scene& s)
 {
     phong::material<T> m;
-    m.ka = glm::vec<3, T>(s.ka);
-    m.kd = glm::vec<3, T>(s.kd);
-    m.ks = glm::vec<3, T>(s.ks);
+    // On the float grid, like every other input: float and double rows see the same numbers.
+    m.ka = glm::vec<3, T>(to_float_grid(s.ka));
+    m.kd = glm::vec<3, T>(to_float_grid(s.kd));
+    m.ks = glm::vec<3, T>(to_float_grid(s.ks));
     m.shininess = T(s.shininess);
     return m;
 }
@@ -223,7 +224,7 @@ template <class T>
 phong::environment<T> environment_of(const scene& s)
 {
     phong::environment<T> env;
-    env.ambient = glm::vec<3, T>(s.scene_ambient);
+    env.ambient = glm::vec<3, T>(to_float_grid(s.scene_ambient));
     return env;
 }
 
