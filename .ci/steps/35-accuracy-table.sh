@@ -1,24 +1,27 @@
 #!/usr/bin/env bash
 # The README's accuracy table on a fresh seed and a sample larger than the test's: every class,
-# both modes, float and double, must stay within the published bounds of phong/accuracy.hpp
+# both modes (and both stable routes of float), float and double, must stay within the published
+# bounds of phong/accuracy.hpp
 # (--bounds flags a row "ABOVE BOUND" and exits 1). Uses the Release build of step 10 (~30 s).
 # Then the same with FMA instructions enabled (GCC fuses products into sums under its default
 # -ffp-contract=fast; the stable mode's error-free transformations must survive that).
 set -euo pipefail
 cmake --preset gcc-release >/dev/null
 cmake --build build/gcc-release --target phong_accuracy_table
-check() { # binary seed
+check() { # binary seed [--twofold]
   local out
   out=$(mktemp)
-  if ! "$1" 20000 "$2" --bounds >"$out"; then
+  if ! "$1" 20000 "$2" --bounds ${3:-} >"$out"; then
     grep "ABOVE BOUND" "$out"
     exit 1
   fi
-  echo "accuracy table ($1): every class within its published bound (20000 scenes per class, seed $2)"
+  echo "accuracy table ($1 ${3:-}): every class within its published bound (20000 scenes per class, seed $2)"
 }
 check build/gcc-release/tests/phong_accuracy_table 3
+check build/gcc-release/tests/phong_accuracy_table 5 --twofold # float's twofold route (GPU code, SIMD batches)
 if grep -qw fma /proc/cpuinfo; then
   g++ -std=gnu++20 -O2 -mfma -DNDEBUG -DPHONG_HAVE_QUADMATH=1 -Iinclude -Itests tests/accuracy_table.cpp \
       -o build/phong_accuracy_table_fma -lquadmath
   check build/phong_accuracy_table_fma 4
+  check build/phong_accuracy_table_fma 6 --twofold
 fi
