@@ -14,6 +14,13 @@
 #include "detail/constexpr_math.hpp"
 #include "detail/power.hpp"
 
+// g++ and clang++ on x86-64 with SSE2: sqrt through the instruction (math_traits::sqrt).
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__) && !defined(__CUDA_ARCH__) && !defined(PHONG_NO_X86_SQRT)
+#  define PHONG_X86_SQRT 1
+#else
+#  define PHONG_X86_SQRT 0
+#endif
+
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -65,6 +72,24 @@ struct math_traits {
     PHONG_HD static constexpr V sqrt(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::sqrt(x));
+#if PHONG_X86_SQRT
+        // The instruction itself: IEEE's correctly rounded square root, the value std::sqrt gives.
+        // std::sqrt must set errno for x < 0, so compilers guard it with a compare and a libm call
+        // on a cold path, whose clobbered registers cost moves in every light loop (intrinsics
+        // add an instruction to clear the upper lanes).
+        if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
+            V r;
+#  if defined(__AVX__) // three operands: the upper lanes come from x itself, no false dependency
+            if constexpr (std::is_same_v<V, float>) __asm__("vsqrtss %1, %1, %0" : "=x"(r) : "x"(x));
+            else __asm__("vsqrtsd %1, %1, %0" : "=x"(r) : "x"(x));
+#  else // in place: no dependency on an unrelated register's upper lanes
+            r = x;
+            if constexpr (std::is_same_v<V, float>) __asm__("sqrtss %0, %0" : "+x"(r));
+            else __asm__("sqrtsd %0, %0" : "+x"(r));
+#  endif
+            return r;
+        }
+#endif
         return std::sqrt(x);
     }
     /// 1/sqrt(x), correctly rounded twice (a division of a square root).

@@ -45,6 +45,7 @@ struct surface_frame {
     glm::vec<3, T, Q> view;     ///< unit view vector v (0 if undefined; exact mode without a term reading v: 1 or 0)
     mask_t<T> defined;          ///< normal and view both nonzero, inputs finite
     T poison;                   ///< 0, or NaN when the point's inputs are not finite
+    T nv = T(0);                ///< exact mode, reflection-based specular: n.v
 };
 
 template <class T, glm::qualifier Q>
@@ -171,8 +172,10 @@ PHONG_HD constexpr surface_frame<T, Q> prepare_exact(const glm::vec<3, T, Q>& po
     // garbage (or a NaN power) is computed for it.
     const mask_t<T> defined = math_traits<T>::both(math_traits<T>::both(n.ok, view_ok), poison == T(0));
     // Vectors rebuilt from their components: copied whole, g++ moved them through the stack.
+    T nv = T(0);
+    if constexpr (F.specular == specular_model::phong) nv = phong::dot(unit_normal, view);
     return {vec3(position.x, position.y, position.z), vec3(unit_normal.x, unit_normal.y, unit_normal.z),
-            vec3(view.x, view.y, view.z), defined, poison};
+            vec3(view.x, view.y, view.z), defined, poison, nv};
 }
 
 template <features F, class T, glm::qualifier Q>
@@ -400,8 +403,8 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
                     spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
                 }
             } else {
-                const vec3 r = n * (T(2) * nl) - l; // phong::reflect(-l, n)
-                spec = detail::power_of_cosine(phong::dot(r, v), m);
+                // r.v = (2 (n.l) n - l).v = 2 (n.l)(n.v) - l.v (r = reflect(-l, n)), n.v once per point.
+                spec = detail::power_of_cosine(T(2) * nl * s.nv - phong::dot(l, v), m);
             }
         } else if constexpr (stable) {
             if (!twofold) {
@@ -425,10 +428,11 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
                 spec = phong::pow_one_minus(phong::select(h.inv_scaled > T(0), detail::one_minus_nh(n, s.normal_lo, h.hi, h.lo), T(1)), m);
             }
         } else {
+            // n.h = n.(l + v) / |l + v|: the dot product runs beside the square root instead of
+            // after it (a shorter dependency chain than normalizing h first; l = -v: 0).
             const vec3 sum = l + v;
             const T hh = phong::dot(sum, sum);
-            const vec3 h = sum * phong::select(hh >= exact_min_square<T>(), phong::rsqrt(hh), T(0)); // l = -v: h = 0
-            spec = detail::power_of_cosine(phong::dot(n, h), m);
+            spec = detail::power_of_cosine(phong::dot(n, sum) * phong::select(hh >= exact_min_square<T>(), phong::rsqrt(hh), T(0)), m);
         }
         if constexpr (!std::is_floating_point_v<T>) spec = phong::select(on, spec, T(0)); // lanes computed but off
         if constexpr (F.diffuse) add_diffuse();
