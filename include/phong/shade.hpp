@@ -550,12 +550,15 @@ PHONG_HD constexpr color<F, T, Q> evaluate(const glm::vec<3, T, Q>& position, co
 ///  * m = 0: the specular base^0 = 1 wherever the specular term is on (pow(0, 0) = 1);
 ///  * c0 = 0 and d -> 0: f capped at 1 / attenuation_denominator_min<T>;
 ///  * NaN or inf in position, normal or (eye_point) eye: every channel is NaN.
-/// Accuracy: per F.mode and input class, the constants phong::accuracy::bounds<M, T> (tested in
+/// Accuracy: per F.mode and input class, the constants phong::accuracy::bounds<M, T, P> (tested in
 /// tests/accuracy.test.cpp, table in README.md). exact: a vector whose squared length is not a
 /// normal number (|L - Q|, |n| or |Q| below ~1.1e-19 or above ~1.8e19 in float, 1.5e-154 and
 /// 1.3e154 in double) is dropped: its light gives 0 (relative error 1), never NaN. stable: every
-/// finite input; unit vectors, n.l and the specular chords carried twofold (detail/twofold.hpp),
-/// float stays within a few ulp up to m = 1e5 near the peak and at n.l ~ 1e-6.
+/// finite input. Float with F.precision = wider (the default): the exact formulas evaluated in
+/// double (every float input is exact there and no square of one overflows or underflows) and
+/// rounded once: within 1 ulp, correctly rounded but for near-ties, m = 1e5 and n.l ~ 1e-6
+/// included. Double, and float with F.precision = twofold: unit vectors, n.l and the specular
+/// chords carried twofold (detail/twofold.hpp), within a few ulp on the same classes.
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                         const material<T, Q>& mat, const Lights& lights,
