@@ -52,6 +52,12 @@ def fmt_bound(x):
     return "–" if x < 0 else fmt_err(x)
 
 
+def error_cells(r):
+    """The error columns of a row: max_rel_err | p99_ulp | max_ulp | NaN | bound."""
+    return (f"{fmt_err(r['max_rel'])} | {r['p99_ulp']:.1f} | {r['max_ulp']:.1f} | {r['nan']} | "
+            f"{fmt_bound(r['bound'])}")
+
+
 def baseline_of(variant):
     """The naive GLM row a variant is compared with: same specular model and type."""
     _, _, spec, typ = variant.split(".")
@@ -73,9 +79,9 @@ def main():
     md = []
     w = md.append
 
-    variants = sorted({k[0] for k in rows if not k[0].startswith(("feature.", "class."))}, key=order)
+    variants = sorted({k[0] for k in rows if not k[0].startswith(("feature.", "class.", "kernel."))}, key=order)
     n_cache = 65536
-    ks = sorted({k[2] for k in rows if k[1] == "typical" and k[3] == n_cache and not k[0].startswith("feature.")})
+    ks = sorted({k[2] for k in rows if k[1] == "typical" and k[3] == n_cache and not k[0].startswith(("feature.", "kernel."))})
 
     def get(v, s="typical", K=1, N=n_cache):
         return rows.get((v, s, K, N))
@@ -130,9 +136,22 @@ def main():
             if not r:
                 continue
             s = speedup(v, "typical", K, n_cache)
-            w(f"| {v} | {K} | {r['ns']:.2f} | {s:.2f}x | {fmt_err(r['max_rel'])} | {r['p99_ulp']:.1f} | "
-              f"{r['max_ulp']:.1f} | {r['nan']} | {fmt_bound(r['bound'])} |")
+            w(f"| {v} | {K} | {r['ns']:.2f} | {s:.2f}x | {error_cells(r)} |")
     w("")
+
+    # Scalar kernels beside what a user would call instead.
+    kernels = sorted({k[0] for k in rows if k[0].startswith("kernel.")}, key=lambda v: (v.split(".")[2], v))
+    if kernels:
+        w("## Scalar kernels (65536 calls over the model's range of x and m)\n")
+        w("`phong::pow_unit` against `std::pow` (`benchmarks/kernels.bench.cpp`); errors against pow in "
+          "__float128 over every result.\n")
+        w("| kernel | ns / call | max_rel_err | p99_ulp | max_ulp | NaN |")
+        w("|---|---:|---:|---:|---:|---:|")
+        for v in kernels:
+            r = get(v, "typical", 1)
+            if r:
+                w(f"| {v} | {r['ns']:.2f} | {fmt_err(r['max_rel'])} | {r['p99_ulp']:.2f} | {r['max_ulp']:.2f} | {r['nan']} |")
+        w("")
 
     # Stiff inputs.
     stiff_sets = sorted({k[1] for k in rows if k[1].startswith("stiff")})
@@ -144,8 +163,7 @@ def main():
             for v in variants:
                 r = get(v, st, 4)
                 if r:
-                    w(f"| {v} | {st} | {r['ns']:.2f} | {fmt_err(r['max_rel'])} | {r['p99_ulp']:.1f} | "
-                      f"{r['max_ulp']:.1f} | {r['nan']} | {fmt_bound(r['bound'])} |")
+                    w(f"| {v} | {st} | {r['ns']:.2f} | {error_cells(r)} |")
         w("")
 
     # Accuracy classes of phong/accuracy.hpp.

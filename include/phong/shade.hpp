@@ -73,15 +73,11 @@ struct light_sums {
 /// or view is dropped (its terms give 0, a relative error of at most 1, never garbage or NaN).
 template <class T> PHONG_HD constexpr T exact_min_square() { return T(std::numeric_limits<scalar_t<T>>::min()); }
 
-template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> unit(const glm::vec<3, T, Q>& v)
+/// The exact mode's 1/|v| from dd = |v|^2: 0 when dd is not a normal number (rsqrt(inf) = 0 too).
+template <class T>
+PHONG_HD constexpr T exact_inverse_length(T dd)
 {
-    if constexpr (F.mode == evaluation::stable) {
-        return phong::normalize(v);
-    } else {
-        const T dd = phong::dot(v, v);
-        return v * phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
-    }
+    return phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
 }
 
 /// The exact mode's unit vector with its squared length: v / |v|, or 0 when |v|^2 is not a
@@ -96,7 +92,7 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr exact_unit<T, Q> exact_unit_of(const glm::vec<3, T, Q>& v, T sign = T(1))
 {
     const T dd = phong::dot(v, v);
-    const T inv = phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0)); // rsqrt(inf) = 0
+    const T inv = exact_inverse_length(dd);
     return {v * (inv * sign), dd, inv > T(0)};
 }
 
@@ -341,7 +337,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
         }
     } else {
         const T dd = phong::dot(d, d);
-        inv = phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
+        inv = exact_inverse_length(dd);
         l = d * inv;
         // An overflowed d gives l = inf * 0 = NaN: harmless where only lit pairs read l, but the
         // spot factor reads it for every pair.
@@ -432,7 +428,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
             // after it (a shorter dependency chain than normalizing h first; l = -v: 0).
             const vec3 sum = l + v;
             const T hh = phong::dot(sum, sum);
-            spec = detail::power_of_cosine(phong::dot(n, sum) * phong::select(hh >= exact_min_square<T>(), phong::rsqrt(hh), T(0)), m);
+            spec = detail::power_of_cosine(phong::dot(n, sum) * exact_inverse_length(hh), m);
         }
         if constexpr (!std::is_floating_point_v<T>) spec = phong::select(on, spec, T(0)); // lanes computed but off
         if constexpr (F.diffuse) add_diffuse();

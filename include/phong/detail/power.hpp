@@ -89,7 +89,10 @@ inline constexpr double b1 = double(wide_ln2), b2 = double(wide_ln2 * wide_ln2 /
                         b4 = double(wide_ln2 * wide_ln2 * wide_ln2 * wide_ln2 / 24),
                         b5 = double(wide_ln2 * wide_ln2 * wide_ln2 * wide_ln2 * wide_ln2 / 120);
 
-/// log2 x for a positive normal double x (absolute error about 2^-53 (|log2 c_i| + 1)).
+/// log2 x for a positive normal double x (absolute error about 2^-53 (|log2 c_i| + 1)). Short:
+/// float's degree-5 polynomial (truncation below r^6/6 < 2^-50 absolute, which only matters times
+/// m where m |log2 x| < 150, else the float result is 0) instead of degree 7.
+template <bool Short = false>
 PHONG_HD constexpr double log2_normal(double x)
 {
     const u64 u = std::bit_cast<u64>(x);
@@ -99,11 +102,15 @@ PHONG_HD constexpr double log2_normal(double x)
     const double z = std::bit_cast<double>(u - (tmp & (u64(0xfff) << 52)));
     const double r = z * log2_table[i].inv_c - 1.0; // exact for the interval holding 1 (inv_c = 1)
     const double r2 = r * r;
-    const double p = r * (a1 + r * a2) + r2 * r * ((a3 + r * a4) + r2 * ((a5 + r * a6) + r2 * a7));
+    double p;
+    if constexpr (Short) p = r * (a1 + r * a2) + r2 * r * (a3 + r * a4 + r2 * a5);
+    else p = r * (a1 + r * a2) + r2 * r * ((a3 + r * a4) + r2 * ((a5 + r * a6) + r2 * a7));
     return (k + log2_table[i].log2_c) + p;
 }
 
-/// 2^y for y in [-1022, 0] (a normal result).
+/// 2^y for y in [-1022, 0] (a normal result). Short: float's degree-3 polynomial (truncation below
+/// 4e-11 relative) instead of degree 5.
+template <bool Short = false>
 PHONG_HD constexpr double exp2_nonpositive(double y)
 {
     constexpr double shift = 0x1.8p52 / (1 << exp_table_bits); // ulp 1/64 around it: y + shift rounds 64 y
@@ -111,35 +118,21 @@ PHONG_HD constexpr double exp2_nonpositive(double y)
     const u64 n = std::bit_cast<u64>(shifted); // low bits: round(64 y), two's complement
     const double t = y - (shifted - shift);    // |t| <= 1/128
     const double scale = std::bit_cast<double>(exp2_table[n % (1u << exp_table_bits)] + (n << (52 - exp_table_bits)));
-    const double t2 = t * t;
-    const double p = t * b1 + t2 * ((b2 + t * b3) + t2 * (b4 + t * b5));
-    return scale + scale * p;
+    if constexpr (Short) {
+        return scale + scale * (t * (b1 + t * (b2 + t * b3)));
+    } else {
+        const double t2 = t * t;
+        return scale + scale * (t * b1 + t2 * ((b2 + t * b3) + t2 * (b4 + t * b5)));
+    }
 }
 
-/// float's kernel: the same tables with shorter polynomials (degree 5 and 3), enough for a float
-/// result. log2's truncation is below r^6/6 < 2^-50 absolute and only matters times m where
-/// m |log2 x| < 150 (else the float result is 0); exp2's is below 4e-11 relative.
+/// float's kernel: the same tables with the short polynomials, enough for a float result.
 PHONG_HD constexpr float pow_unit(float xf, float mf)
 {
     const double x = xf, m = mf;
     if (x > 0.0) [[likely]] { // every positive float is a normal double
-        const u64 u = std::bit_cast<u64>(x);
-        const u64 tmp = u - log_offset;
-        const int i = static_cast<int>((tmp >> (52 - log_table_bits)) % (1u << log_table_bits));
-        const double k = static_cast<double>(static_cast<std::int64_t>(tmp) >> 52);
-        const double z = std::bit_cast<double>(u - (tmp & (u64(0xfff) << 52)));
-        const double r = z * log2_table[i].inv_c - 1.0;
-        const double r2 = r * r;
-        const double log2x = (k + log2_table[i].log2_c) + (r * (a1 + r * a2) + r2 * r * (a3 + r * a4 + r2 * a5));
-        const double y = m * log2x;
-        if (y >= -1022.0 && y <= 0.0) [[likely]] {
-            constexpr double shift = 0x1.8p52 / (1 << exp_table_bits);
-            const double shifted = y + shift;
-            const u64 n = std::bit_cast<u64>(shifted);
-            const double t = y - (shifted - shift);
-            const double scale = std::bit_cast<double>(exp2_table[n % (1u << exp_table_bits)] + (n << (52 - exp_table_bits)));
-            return static_cast<float>(scale + scale * (t * (b1 + t * (b2 + t * b3))));
-        }
+        const double y = m * log2_normal<true>(x);
+        if (y >= -1022.0 && y <= 0.0) [[likely]] return static_cast<float>(exp2_nonpositive<true>(y));
         if (y < -1022.0) return 0.0f;
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0f : 0.0f;
