@@ -226,6 +226,25 @@ TEST_CASE_TEMPLATE("properties: reflect keeps length and is an involution", T, f
     });
 }
 
+TEST_CASE_TEMPLATE("properties: pow_unit is a power, x^(a+b) = x^a x^b, in [0, 1] and non-increasing in m", T, float, double)
+{
+    check_property("pow_unit(x, a + b) = pow_unit(x, a) pow_unit(x, b), 0 <= x^m <= 1, a <= b gives x^a >= x^b", [] {
+        const T x = T(*rc::gen::inRange(1, 257)) / T(256); // (0, 1] on a grid
+        const T a = T(*rc::gen::inRange(0, 513)) / T(8);   // [0, 64]
+        const T b = T(*rc::gen::inRange(0, 513)) / T(8);
+        const T xa = phong::pow_unit(x, a), xb = phong::pow_unit(x, b), xab = phong::pow_unit(x, a + b);
+        for (const T r : {xa, xb, xab}) RC_ASSERT(r >= T(0) && r <= T(1));
+        RC_ASSERT(phong::pow_unit(x, T(0)) == T(1)); // x^0 = 1, 0^0 included
+        // Each result within its documented bound, the product rounded once more: a relative
+        // tolerance of a few ulp (float: 1 ulp each) or 3 (|y| + m + 4) 2^-53 each (double).
+        const double y = double(a + b) * std::abs(std::log2(double(x)));
+        const double tol = sizeof(T) == 4 ? 4 * double(eps<T>) : 9 * (y + double(a + b) + 4) * 0x1p-53 + 2 * double(eps<T>);
+        if (double(xab) > 1e-30) RC_ASSERT(std::abs(double(xa) * double(xb) - double(xab)) <= tol * double(xab));
+        // Monotone in m for x < 1 (a few ulp of slack: the kernel is monotone only up to rounding).
+        if (a <= b) RC_ASSERT(double(xa) >= double(xb) * (1 - 4 * double(eps<T>)));
+    });
+}
+
 TEST_CASE_TEMPLATE("properties: a directional light is the limit of a far positional one", T, float, double)
 {
     auto property = [](auto f_constant) {

@@ -1,0 +1,94 @@
+// The scalar kernels behind the model, each beside what a user would call instead: phong::pow_unit
+// (the specular and spot power, inline, detail/power.hpp) against std::pow, float and double.
+// Time per call over 65536 (x, m) pairs of the lighting model's range (x in (0, 1], a third of them
+// within 1e-3 of 1 as near a highlight; m in [1, 200] and up to 1e4), and the error of every result
+// against pow in the __float128 reference type (tests/support/wide.hpp).
+//
+// Row names: kernel.<function>.<type>/typical/K:1/N:65536 (the report's naming; K = 1: one call per item).
+#include "support/inputs.hpp" // uniform(): counter-based, reproducible
+
+#include "support/numeric.hpp"
+#include "support/wide.hpp"
+
+#include <phong/math.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace phong_bench {
+namespace {
+
+constexpr std::size_t n_pairs = 65536;
+
+template <class T>
+struct power_inputs {
+    std::vector<T> x, m;
+};
+
+template <class T>
+const power_inputs<T>& inputs()
+{
+    static const power_inputs<T> in = [] {
+        power_inputs<T> p;
+        for (std::size_t i = 0; i < n_pairs; ++i) {
+            const double u = uniform(3000, i, 0);
+            const double x = i % 3 == 0 ? 1 - 1e-3 * u : std::max(u, 1e-6); // near the peak, or anywhere
+            const double m = i % 7 == 0 ? std::pow(10.0, 2 + 2 * uniform(3000, i, 1)) : 1 + 199 * uniform(3000, i, 1);
+            p.x.push_back(T(x));
+            p.m.push_back(T(m));
+        }
+        return p;
+    }();
+    return in;
+}
+
+template <class T, bool Phong>
+void power_row(benchmark::State& state)
+{
+    const power_inputs<T>& in = inputs<T>();
+    std::vector<T> out(n_pairs);
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < n_pairs; ++i)
+            out[i] = Phong ? phong::pow_unit(in.x[i], in.m[i]) : T(std::pow(in.x[i], in.m[i]));
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    // Errors against pow in the wide type, over every result (outside the timed loop).
+    double max_rel = 0, max_ulp = 0, nan = 0;
+    std::vector<double> ulps;
+    for (std::size_t i = 0; i < n_pairs; ++i) {
+        if (!std::isfinite(out[i])) nan += 1;
+        const phong_test::wide ref = phong_test::wpow(phong_test::wide(in.x[i]), phong_test::wide(in.m[i]));
+        max_rel = std::max(max_rel, phong_test::error_rel(out[i], ref));
+        ulps.push_back(phong_test::error_ulp(out[i], ref));
+    }
+    std::nth_element(ulps.begin(), ulps.begin() + std::ptrdiff_t(ulps.size() * 99 / 100), ulps.end());
+    const double p99 = ulps[ulps.size() * 99 / 100];
+    max_ulp = *std::max_element(ulps.begin(), ulps.end());
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(n_pairs));
+    state.counters["ns_per_pair"] = benchmark::Counter(double(state.iterations()) * double(n_pairs) * 1e-9,
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["max_rel_err"] = max_rel;
+    state.counters["p99_ulp"] = p99;
+    state.counters["max_ulp"] = max_ulp;
+    state.counters["nan_count"] = nan;
+    state.counters["bound"] = -1;
+    state.counters["K"] = 1;
+    state.counters["N"] = double(n_pairs);
+}
+
+const bool registered = [] {
+    const std::string tail = "/typical/K:1/N:" + std::to_string(n_pairs);
+    benchmark::RegisterBenchmark(("kernel.pow_unit.float" + tail).c_str(), power_row<float, true>);
+    benchmark::RegisterBenchmark(("kernel.std_pow.float" + tail).c_str(), power_row<float, false>);
+    benchmark::RegisterBenchmark(("kernel.pow_unit.double" + tail).c_str(), power_row<double, true>);
+    benchmark::RegisterBenchmark(("kernel.std_pow.double" + tail).c_str(), power_row<double, false>);
+    return true;
+}();
+
+} // namespace
+} // namespace phong_bench
