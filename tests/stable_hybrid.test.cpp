@@ -22,6 +22,7 @@ namespace {
 constexpr features hybrid(specular_model S)
 {
     features f = phong::accuracy::measured_features(evaluation::stable, S);
+    f.precision = phong::stable_precision::twofold; // the knob belongs to the twofold route (float's default is wider)
     f.stable_twofold_above = 256;
     return f;
 }

@@ -414,7 +414,8 @@ constexpr features feature_table[] = {
              .spot = spot_model::smooth, .attenuate_ambient = false, .two_sided = facing::flag,
              .view = view_model::orthographic, .emission = true, .alpha = true, .mode = evaluation::stable},
     features{.specular = specular_model::phong, .lights = light_kind::positional, .attenuation = attenuation_model::polynomial,
-             .spot = spot_model::opengl, .two_sided = facing::view, .emission = true, .mode = evaluation::stable},
+             .spot = spot_model::opengl, .two_sided = facing::view, .emission = true, .mode = evaluation::stable,
+             .precision = stable_precision::twofold}, // float's twofold route (float's default is wider)
     features{.specular = specular_model::phong, .lights = light_kind::directional, .attenuation = attenuation_model::windowed,
              .spot = spot_model::opengl, .view = view_model::orthographic, .mode = evaluation::exact},
     features{.specular = specular_model::blinn, .specular_gate = false, .attenuation = attenuation_model::polynomial,
@@ -423,7 +424,7 @@ constexpr features feature_table[] = {
              .spot = spot_model::opengl, .attenuate_ambient = true, .mode = evaluation::exact},
     features{.light_ambient = true, .specular = specular_model::blinn, .attenuation = attenuation_model::polynomial,
              .spot = spot_model::opengl, .two_sided = facing::view, .view = view_model::eye_point, .emission = true,
-             .alpha = true, .mode = evaluation::stable},
+             .alpha = true, .mode = evaluation::stable, .precision = stable_precision::twofold},
     features{.specular = specular_model::phong, .specular_gate = false, .attenuation = attenuation_model::windowed,
              .spot = spot_model::smooth, .two_sided = facing::flag, .mode = evaluation::stable},
     features{.scene_ambient = false, .specular = specular_model::none, .lights = light_kind::positional,
