@@ -4,17 +4,16 @@
 # of each feature. The kernels are in benchmarks/support/feature_cost.cpp (1024 points x 4 lights,
 # extern "C" noinline functions; --toggle-collect counts one kernel and the libm calls it makes).
 #
-# Usage: benchmarks/feature_cost.sh [build-dir]     (default build/bench; built if missing)
+# Usage: benchmarks/feature_cost.sh [build-dir]     (default build/bench; configured and built as needed)
 # Writes <build-dir>/feature_cost.tsv (kernel, instructions, per pair) for benchmarks/report.py.
 # Exit status 1 when a pair differs by more than 2 % or the pair's outputs are not bit for bit equal.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/bench}
 exe=$build/benchmarks/phong_feature_cost
-if [[ ! -x $exe ]]; then
-  [[ -f $build/build.ninja ]] || cmake --preset bench -B "$build" >/dev/null
-  cmake --build "$build" --target phong_feature_cost -j2 >/dev/null
-fi
+# Configured if missing, and always brought up to date (a stale binary would count old headers).
+[[ -f $build/CMakeCache.txt ]] || cmake --preset bench -B "$build" >/dev/null
+cmake --build "$build" --target phong_feature_cost -j2 >/dev/null
 command -v valgrind >/dev/null || { echo "feature_cost.sh: valgrind not found (apt-get install valgrind)"; exit 2; }
 
 pairs=4096 # 1024 points x 4 lights

@@ -457,6 +457,44 @@ TEST_CASE_TEMPLATE("pow_unit: NaN and out-of-domain inputs give std::pow's value
     CHECK(std::isnan(phong::pow_unit(launder(T(-0.5)), launder(T(0.5)))));
 }
 
+TEST_CASE_TEMPLATE("pow_unit_in_domain: pow_unit's bits for x in 0..1 and m >= 0, NaN outside, no libm fallback", T, float, double)
+{
+    // The shading loop's entry point: the same arithmetic as pow_unit inside the domain (so the
+    // accuracy tests above cover it), and NaN instead of std::pow's value outside it.
+    using bits_t = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    std::mt19937_64 g(20261122);
+    long compared = 0;
+    for (int cls = 0; cls < 3; ++cls)
+        for (long i = 0; i < 20000; ++i) {
+            const T x = pick_x<T>(g, cls, i), m = pick_m<T>(g, i);
+            const T a = phong::detail::pow_unit_in_domain(launder(x), launder(m)), b = phong::pow_unit(launder(x), launder(m));
+            if (std::bit_cast<bits_t>(a) != std::bit_cast<bits_t>(b)) {
+                CAPTURE(class_names[cls]);
+                CAPTURE(hex(x));
+                CAPTURE(hex(m));
+                FAIL_CHECK("pow_unit_in_domain differs from pow_unit");
+            }
+            ++compared;
+        }
+    CHECK(compared == 60000);
+    // Edges by hand: 0^0 = 1, 0^m = 0, 1^m = 1, x^0 = 1, and the flush below 2^-1022 (0.5^1100).
+    CHECK(phong::detail::pow_unit_in_domain(launder(T(0)), launder(T(0))) == T(1));
+    CHECK(phong::detail::pow_unit_in_domain(launder(T(0)), launder(T(3))) == T(0));
+    CHECK(phong::detail::pow_unit_in_domain(launder(T(1)), launder(T(1e5))) == T(1));
+    CHECK(phong::detail::pow_unit_in_domain(launder(T(0.3)), launder(T(0))) == T(1));
+    CHECK(phong::detail::pow_unit_in_domain(launder(T(0.5)), launder(T(1100))) == T(0));
+    // Outside the domain (a shininess validate() rejects, or a NaN cosine): NaN.
+    constexpr T nan = std::numeric_limits<T>::quiet_NaN();
+    for (T x : {T(0), T(0.5), T(1)}) {
+        CAPTURE(x);
+        CHECK(std::isnan(phong::detail::pow_unit_in_domain(launder(x), launder(nan))));
+        if (x < T(1)) CHECK(std::isnan(phong::detail::pow_unit_in_domain(launder(x), launder(T(-1)))));
+        else CHECK(phong::detail::pow_unit_in_domain(launder(x), launder(T(-1))) == T(1)); // 1^m = 1 exactly
+    }
+    CHECK(std::isnan(phong::detail::pow_unit_in_domain(launder(nan), launder(T(2)))));
+    CHECK(std::isnan(phong::detail::pow_unit_in_domain(launder(T(-0.5)), launder(T(2)))));
+}
+
 // ---------------------------------------------------------------------------------------------
 // 3. Constant evaluation.
 

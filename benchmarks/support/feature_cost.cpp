@@ -8,9 +8,11 @@
 //                                                                   two-sided, emission, alpha)
 // The hand-written kernels implement the same documented model, edge cases included (a zero
 // normal, Q at the eye, a light at Q give no diffuse or specular; NaN/inf geometry gives NaN), the
-// most direct way, with the same scalar kernels (phong::sqrt, phong::pow_unit), so the counts
-// measure what shade<F>'s generic machinery adds; this program checks that each pair's outputs
-// agree bit for bit, so the counts compare two computations of the same thing.
+// leanest direct way, with the same scalar kernels (phong::sqrt, phong::pow_unit) and the same
+// formulas (dot products with d = L - Q, scaled by 1/|d| only for pairs that are on; the cheap
+// sign test first), so the counts measure what shade<F>'s generic machinery adds; this program
+// checks that each pair's outputs agree bit for bit, so the counts compare two computations of
+// the same thing.
 // The other kernels give the instruction cost of each feature (the script prints the differences).
 //
 // Usage: phong_feature_cost <kernel> [repeat]   runs <kernel> `repeat` times (default 1)
@@ -20,6 +22,7 @@
 
 #include <phong/phong.hpp>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -117,9 +120,8 @@ FC_KERNEL fc_hand_diffuse_directional(const vec3* q, const vec3* n, std::size_t 
         for (std::size_t j = 0; j < k; ++j) {
             const vec3 d(L[j].position.x, L[j].position.y, L[j].position.z);
             const float dd = dot3(d, d);
-            const float inv = dd >= tiny ? 1 / phong::sqrt(dd) : 0.0f;
-            const float nl = dot3(nh, d * inv);
-            if (defined && inv > 0 && nl > 0) sum += L[j].diffuse * nl;
+            const float nd = dot3(nh, d); // |d| (n.l): its sign is known before the square root
+            if (defined && nd > 0 && dd >= tiny && dd <= FLT_MAX) sum += L[j].diffuse * (nd / phong::sqrt(dd));
         }
         out[i] = vec3(poison) + mat.kd * sum;
     }
@@ -133,7 +135,7 @@ FC_KERNEL fc_phong_ads(const vec3* q, const vec3* n, std::size_t count, const li
 
 /// Hand-written seed 003 phong.vert summed over positional lights, with phong's edges:
 /// I = ka sum La_i + kd sum Ld_i max(n.l, 0) + ks sum [n.l > 0] Ls_i clamp(r.v, 0, 1)^m with
-/// r.v = 2 (n.l)(n.v) - l.v (r = reflect(-l, n), n.v once per point, as phong computes it),
+/// |d| r.v = 2 (n.d)(n.v) - d.v (r = reflect(-l, n), n.v once per point, as phong computes it),
 /// the power by phong::pow_unit (the scalar kernel a hand-written shader would call instead of pow).
 FC_KERNEL fc_hand_ads(const vec3* q, const vec3* n, std::size_t count, const light* L, std::size_t k,
                       const phong::material<float>& mat, const phong::environment<float>&, vec3* out)
@@ -146,20 +148,20 @@ FC_KERNEL fc_hand_ads(const vec3* q, const vec3* n, std::size_t count, const lig
         float poison = 0;
         if (!(nn <= FLT_MAX && qq <= FLT_MAX)) poison = nan_poison(q[i], n[i]);
         const bool defined = in > 0 && iv > 0 && poison == 0;
-        const float nv = dot3(nh, v); // r.v = 2 (n.l)(n.v) - l.v
+        const float nv = dot3(nh, v);
         vec3 ambient(0), diffuse(0), specular(0);
         for (std::size_t j = 0; j < k; ++j) {
             ambient += L[j].ambient;
             const vec3 d = vec3(L[j].position.x, L[j].position.y, L[j].position.z) - q[i];
             const float dd = dot3(d, d);
-            const float inv = dd >= tiny ? 1 / phong::sqrt(dd) : 0.0f;
-            const vec3 l = d * inv;
-            const float nl = dot3(nh, l);
-            if (defined && inv > 0 && nl > 0) {
-                diffuse += L[j].diffuse * nl;
-                float rv = 2 * nl * nv - dot3(l, v);
-                rv = rv < 0 ? 0.0f : (rv > 1 ? 1.0f : rv);
-                specular += L[j].specular * phong::pow_unit(rv, mat.shininess);
+            // Dot products with d, scaled by 1/|d| afterwards: their signs decide the branches
+            // before the square root and the division are done.
+            const float nd = dot3(nh, d), rvd = 2 * nd * nv - dot3(d, v); // |d| (n.l), |d| (r.v)
+            if (defined && nd > 0 && dd >= tiny && dd <= FLT_MAX) {
+                const float inv = 1 / phong::sqrt(dd);
+                diffuse += L[j].diffuse * (nd * inv);
+                if (rvd > 0) specular += L[j].specular * phong::pow_unit(std::min(rvd * inv, 1.0f), mat.shininess);
+                else if (mat.shininess == 0) specular += L[j].specular;
             }
         }
         out[i] = vec3(poison) + mat.ka * ambient + mat.kd * diffuse + mat.ks * specular;

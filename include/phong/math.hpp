@@ -216,6 +216,18 @@ template <class V> PHONG_HD constexpr V pow_unit(V x, V m)
     if constexpr (requires { math_traits<V>::pow_unit(x, m); }) return math_traits<V>::pow_unit(x, m);
     else return math_traits<V>::pow(x, m);
 }
+namespace detail {
+/// pow_unit for x in [0, 1] and a finite m >= 0 only (NaN outside but for 1^m = 1), without pow_unit's libm
+/// fallback (detail/power.hpp): the shading loop's power, whose m validate() has checked.
+template <class V> PHONG_HD constexpr V pow_unit_in_domain(V x, V m)
+{
+#if !defined(__CUDA_ARCH__)
+    if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) return power::pow_unit_in_domain(x, m);
+    else
+#endif
+        return phong::pow_unit(x, m);
+}
+} // namespace detail
 /// a * b + c rounded once.
 template <class V> PHONG_HD constexpr V fma(V a, V b, V c) { return math_traits<V>::fma(a, b, c); }
 /// |x|.

@@ -169,7 +169,7 @@ PHONG_HD constexpr surface_frame<T, Q> prepare_exact(const glm::vec<3, T, Q>& po
     const mask_t<T> defined = math_traits<T>::both(math_traits<T>::both(n.ok, view_ok), poison == T(0));
     // Vectors rebuilt from their components: copied whole, g++ moved them through the stack.
     T nv = T(0);
-    if constexpr (F.specular == specular_model::phong) nv = phong::dot(unit_normal, view);
+    if constexpr (F.specular != specular_model::none) nv = phong::dot(unit_normal, view);
     return {vec3(position.x, position.y, position.z), vec3(unit_normal.x, unit_normal.y, unit_normal.z),
             vec3(view.x, view.y, view.z), defined, poison, nv};
 }
@@ -237,19 +237,6 @@ PHONG_HD constexpr decltype(auto) in_type(const glm::vec<N, U, Q>& v)
     else return glm::vec<N, T, Q>(v);
 }
 
-/// max(c, 0)^m for a cosine c, clamped to [0, 1] first (pow(0, 0) = 1). A scalar branches past
-/// the power where c <= 0 (about half the lit pairs of a typical scene); a SIMD batch clamps.
-template <class T>
-PHONG_HD constexpr T power_of_cosine(T c, T m)
-{
-    if constexpr (std::is_floating_point_v<T>) {
-        if (!(c > T(0))) return m == T(0) ? T(1) : T(0); // NaN c: 0 (c comes from finite unit vectors)
-        return phong::pow_unit(phong::min(c, T(1)), m);
-    } else {
-        return phong::pow_unit(phong::clamp(c, T(0), T(1)), m);
-    }
-}
-
 /// One light's terms added to the sums. T is the arithmetic type; U the light's scalar type (U = T,
 /// or float lights in the double arithmetic of the stable mode's wider path: fields are widened
 /// where they are read, exactly).
@@ -285,6 +272,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
     vec3 l;
     T nl, inv;
     [[maybe_unused]] T length_d = T(0);
+    [[maybe_unused]] T dd = T(0), nd = T(0); // exact mode: |d|^2 and n.d = |d| (n.l)
     [[maybe_unused]] vec3 l_lo(T(0)); // stable: l + l_lo and nl + nl_lo to O(eps^2) (detail/twofold.hpp)
     [[maybe_unused]] T nl_lo = T(0);
     // Stable mode, two depths. Twofold (the default): l, n.l and the specular chords to about
@@ -319,13 +307,13 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
                 hs[k] = phong::select(in_range, d[k] * scale, T(0));
                 ls[k] = phong::select(in_range, lo[k] * scale, T(0)); // lo is NaN when d overflowed
             }
-            const T dd = phong::dot(hs, hs);
-            inv = phong::select(dd > T(0), phong::rsqrt(phong::select(dd > T(0), dd, T(1))), T(0));
+            const T hh = phong::dot(hs, hs);
+            inv = phong::select(hh > T(0), phong::rsqrt(phong::select(hh > T(0), hh, T(1))), T(0));
             l = hs * inv;
             T nh, nlo;
             detail::dot_twofold(s.normal_scaled, vec3(T(0)), hs, ls, nh, nlo);
             nl = (nh + nlo) * (s.inv_normal_length * inv);
-            length_d = phong::select(in_range, phong::sqrt(dd) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
+            length_d = phong::select(in_range, phong::sqrt(hh) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
             if constexpr (F.specular == specular_model::blinn) {
                 // l + v nearly cancels (|l + v| < 2^-10): h from once-rounded l and v is noise there.
                 const vec3 lv = l + s.view;
@@ -336,20 +324,25 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
             }
         }
     } else {
-        const T dd = phong::dot(d, d);
-        inv = exact_inverse_length(dd);
-        l = d * inv;
-        // An overflowed d gives l = inf * 0 = NaN: harmless where only lit pairs read l, but the
-        // spot factor reads it for every pair.
-        if constexpr (F.spot != spot_model::none)
+        // Dot products with d itself, scaled by 1/|d| once the pair is known to be on: the signs
+        // that decide the branches below do not wait for a square root and a division (a scalar
+        // light loop stalls on every mispredicted branch until its condition is known).
+        dd = phong::dot(d, d);
+        nd = phong::dot(s.normal, d);
+        if constexpr (F.spot != spot_model::none) {
+            // The spot factor reads l for every pair. An overflowed d gives l = inf * 0 = NaN there.
+            inv = exact_inverse_length(dd);
+            l = d * inv;
             for (int k = 0; k < 3; ++k) l[k] = phong::select(inv > T(0), l[k], T(0));
-        nl = phong::dot(s.normal, l);
+        }
         if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional)
             length_d = phong::sqrt(dd); // only attenuation reads the distance
     }
     // The light has a direction (not at Q, not a zero directional vector, no overflow) and the
     // point has a normal and a view vector: otherwise only the light's ambient term is added.
-    const mask_t<T> lit = math_traits<T>::both(s.defined, inv > T(0));
+    mask_t<T> lit;
+    if constexpr (stable) lit = math_traits<T>::both(s.defined, inv > T(0));
+    else lit = math_traits<T>::both(s.defined, math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>()));
 
     // f_i(Q): distance attenuation (positional lights only) times the spot factor.
     T f = T(1);
@@ -377,32 +370,74 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
     // The diffuse and specular terms only where they can be nonzero: a lit pair, and with the
     // gate (or without a specular term, where max(n.l, 0) says the same) n.l > 0. A scalar branches
     // (no power computed for unlit pairs), a SIMD batch skips when no lane is on.
+    constexpr bool gated = F.specular_gate || F.specular == specular_model::none;
     mask_t<T> on = lit;
-    if constexpr (F.specular_gate || F.specular == specular_model::none) on = math_traits<T>::both(lit, nl > T(0));
-    if (!math_traits<T>::any(on)) return;
+    if constexpr (gated && stable) on = math_traits<T>::both(lit, nl > T(0));
+    else if constexpr (gated) on = math_traits<T>::both(lit, nd > T(0));
+    if constexpr (std::is_floating_point_v<T> && !stable) {
+        // The same test as one condition, the sign of n.d first (it rejects about a third of a
+        // typical scene's pairs): g++ then branches on each compare instead of combining flags.
+        if (!(s.defined && (!gated || nd > T(0)) && dd >= exact_min_square<T>() && dd <= largest<T>())) return;
+    } else {
+        if (!math_traits<T>::any(on)) return;
+    }
+    if constexpr (!stable) {
+        if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
+            // Only n.l is needed: n.d / |d|, one rounding (a SIMD batch's lanes that are off may
+            // divide by 0 here; they are not selected).
+            nl = nd / phong::sqrt(dd);
+        } else {
+            if constexpr (F.spot == spot_model::none) {
+                // A scalar gets here only with |d|^2 a normal number, where 1/|d| needs no test.
+                if constexpr (std::is_floating_point_v<T>) inv = phong::rsqrt(dd);
+                else inv = exact_inverse_length(dd);
+                if constexpr (F.specular == specular_model::blinn) l = d * inv;
+            }
+            nl = nd * inv;
+        }
+    }
     const auto add_diffuse = [&] {
         constexpr bool positive = F.specular_gate || F.specular == specular_model::none; // on implies n.l > 0
         const T lambert = positive ? nl : phong::max(nl, T(0));
         sums.diffuse += in_type<T>(L.diffuse) * (f * (std::is_floating_point_v<T> ? lambert : phong::select(on, lambert, T(0))));
     };
-    if constexpr (F.specular != specular_model::none) {
+    // The exact mode's specular term Ls f max(c, 0)^m for the cosine c = x * scale (scale >= 0; c
+    // clamped to 1, pow(0, 0) = 1). A scalar branches on the sign of x, known a square root and a
+    // division before c, and adds nothing where the power is 0; a SIMD batch clamps.
+    [[maybe_unused]] const auto add_specular_power = [&](T x, T scale) {
+        if constexpr (std::is_floating_point_v<T>) {
+            if (x > T(0)) sums.specular += in_type<T>(L.specular) * (f * detail::pow_unit_in_domain(phong::min(x * scale, T(1)), m));
+            else if (m == T(0)) sums.specular += in_type<T>(L.specular) * f;
+        } else {
+            const T spec = phong::select(on, phong::pow_unit(phong::clamp(x * scale, T(0), T(1)), m), T(0));
+            sums.specular += in_type<T>(L.specular) * (f * spec);
+        }
+    };
+    if constexpr (F.specular != specular_model::none && !stable) {
+        if constexpr (F.diffuse) add_diffuse();
+        if constexpr (F.specular == specular_model::phong) {
+            // |d| r.v = 2 (n.d)(n.v) - d.v (r = reflect(-l, n), l = d / |d|), n.v once per point.
+            add_specular_power(T(2) * nd * s.nv - phong::dot(d, s.view), inv);
+        } else {
+            // n.h = n.(l + v) / |l + v| = (n.l + n.v) / |l + v|: no wait for the second square root
+            // before the sign is known (l = -v: 0).
+            const vec3 sum = l + s.view;
+            add_specular_power(nl + s.nv, exact_inverse_length(phong::dot(sum, sum)));
+        }
+    } else if constexpr (F.specular != specular_model::none) {
         const vec3& n = s.normal;
         const vec3& v = s.view;
         T spec = T(0);
+        // The stable mode: 1 - cosine from a chord, the power as (1 - x)^m.
         if constexpr (F.specular == specular_model::phong) {
-            if constexpr (stable) {
-                // 1 - r.v = |r - v|^2 / 2, the chord r - v = 2 (n.l) n - l - v (twofold by default).
-                if (twofold) {
-                    spec = phong::pow_one_minus(detail::one_minus_rv(n, s.normal_lo, nl, nl_lo, l, l_lo, v, s.view_lo), m);
-                } else {
-                    const vec3 chord = n * (T(2) * nl) - l - v;
-                    spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
-                }
+            // 1 - r.v = |r - v|^2 / 2, the chord r - v = 2 (n.l) n - l - v (twofold by default).
+            if (twofold) {
+                spec = phong::pow_one_minus(detail::one_minus_rv(n, s.normal_lo, nl, nl_lo, l, l_lo, v, s.view_lo), m);
             } else {
-                // r.v = (2 (n.l) n - l).v = 2 (n.l)(n.v) - l.v (r = reflect(-l, n)), n.v once per point.
-                spec = detail::power_of_cosine(T(2) * nl * s.nv - phong::dot(l, v), m);
+                const vec3 chord = n * (T(2) * nl) - l - v;
+                spec = phong::pow_one_minus(phong::dot(chord, chord) * T(0.5), m);
             }
-        } else if constexpr (stable) {
+        } else {
             if (!twofold) {
                 // h = normalize(l + v) rounded once (l + v does not nearly cancel here); 1 - n.h = |n - h|^2 / 2.
                 const vec3 sum = l + v;
@@ -423,12 +458,6 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
                 const unit_twofold<T, Q> h = detail::unit_of(sum, sum_lo); // l = -v: h = 0, x = 1
                 spec = phong::pow_one_minus(phong::select(h.inv_scaled > T(0), detail::one_minus_nh(n, s.normal_lo, h.hi, h.lo), T(1)), m);
             }
-        } else {
-            // n.h = n.(l + v) / |l + v|: the dot product runs beside the square root instead of
-            // after it (a shorter dependency chain than normalizing h first; l = -v: 0).
-            const vec3 sum = l + v;
-            const T hh = phong::dot(sum, sum);
-            spec = detail::power_of_cosine(phong::dot(n, sum) * exact_inverse_length(hh), m);
         }
         if constexpr (!std::is_floating_point_v<T>) spec = phong::select(on, spec, T(0)); // lanes computed but off
         if constexpr (F.diffuse) add_diffuse();

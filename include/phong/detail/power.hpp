@@ -27,6 +27,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 #if defined(__NVCC__)
@@ -161,6 +162,35 @@ PHONG_HD constexpr double pow_unit(double x, double m)
     }
     if (std::is_constant_evaluated()) return static_cast<double>(ce::pow(x, m));
     return std::pow(x, m);
+}
+
+/// x^m for x in [0, 1] and a finite m >= 0 (a validated shininess): pow_unit's value there, with
+/// no fallback to libm's pow outside that domain. NaN x, NaN m, x < 0, or m < 0 with x < 1: NaN
+/// (x = 1 gives 1 for every non-NaN m, the exact value). Why a second entry
+/// point: the mere presence of a call (all vector registers caller-saved) made g++ keep a light
+/// loop's sums in memory in every iteration, and the shading loop never needs the fallback.
+PHONG_HD constexpr float pow_unit_in_domain(float xf, float mf)
+{
+    const double x = xf, m = mf;
+    if (x > 0.0) [[likely]] {
+        const double y = m * log2_normal<true>(x);
+        if (y >= -1022.0 && y <= 0.0) [[likely]] return static_cast<float>(exp2_nonpositive<true>(y));
+        return y < -1022.0 ? 0.0f : std::numeric_limits<float>::quiet_NaN();
+    }
+    if (x == 0.0 && m >= 0.0) return m == 0.0 ? 1.0f : 0.0f;
+    return std::numeric_limits<float>::quiet_NaN();
+}
+
+/// The same for double: results below 2^-1022 are 0, a subnormal x is scaled as in pow_unit.
+PHONG_HD constexpr double pow_unit_in_domain(double x, double m)
+{
+    if (x > 0.0) [[likely]] {
+        const double y = x >= 0x1p-1022 ? m * log2_normal(x) : m * (log2_normal(x * 0x1p64) - 64.0);
+        if (y >= -1022.0 && y <= 0.0) [[likely]] return exp2_nonpositive(y);
+        return y < -1022.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+    }
+    if (x == 0.0 && m >= 0.0) return m == 0.0 ? 1.0 : 0.0;
+    return std::numeric_limits<double>::quiet_NaN();
 }
 #endif
 
