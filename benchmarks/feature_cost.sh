@@ -46,7 +46,7 @@ for pair in "fc_phong_diffuse_directional fc_hand_diffuse_directional" "fc_phong
   verdict=PASS
   if (( $(echo "$diff > 2 || $diff < -2" | bc -l) )); then verdict=FAIL; status=1; fi
   printf '  %-30s %-30s %12d %12d %+7.1f%%  %s\n' "$1" "$2" "${ir[$1]}" "${ir[$2]}" "$diff" "$verdict"
-  printf 'pair\t%s\t%s\t%.2f\t%s\n' "$1" "$2" "$diff" "$verdict" >>"$tsv"
+  printf 'pair\t%s\t%s\t%.6f\t%s\n' "$1" "$2" "$diff" "$verdict" >>"$tsv" # full digits: the report rounds once
 done
 
 echo
