@@ -391,7 +391,10 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
                 // A scalar gets here only with |d|^2 a normal number, where 1/|d| needs no test.
                 if constexpr (std::is_floating_point_v<T>) inv = phong::rsqrt(dd);
                 else inv = exact_inverse_length(dd);
-                if constexpr (F.specular == specular_model::blinn) l = d * inv;
+                // Rounded products: contracted into l + v below (an fma), l = -v would no longer
+                // cancel exactly and h = normalize(l + v) would be noise (blinn_opposite).
+                if constexpr (F.specular == specular_model::blinn)
+                    for (int k = 0; k < 3; ++k) l[k] = detail::rounded_product(d[k], inv);
             }
             nl = nd * inv;
         }
