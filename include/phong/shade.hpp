@@ -393,8 +393,8 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
                 else inv = exact_inverse_length(dd);
                 // Rounded products: contracted into l + v below (an fma), l = -v would no longer
                 // cancel exactly and h = normalize(l + v) would be noise (blinn_opposite).
-                if constexpr (F.specular == specular_model::blinn)
-                    for (int k = 0; k < 3; ++k) l[k] = detail::rounded_product(d[k], inv);
+                if constexpr (F.specular == specular_model::blinn) // (whole: constexpr, l has no active member yet)
+                    l = vec3(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
             }
             nl = nd * inv;
         }
