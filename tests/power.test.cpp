@@ -493,7 +493,18 @@ TEST_CASE_TEMPLATE("pow_unit_in_domain: pow_unit's bits for x in 0..1 and m >= 0
     }
     CHECK(std::isnan(phong::detail::pow_unit_in_domain(launder(nan), launder(T(2)))));
     CHECK(std::isnan(phong::detail::pow_unit_in_domain(launder(T(-0.5)), launder(T(2)))));
+    CHECK(std::isnan(phong::detail::pow_unit_in_domain(launder(T(2)), launder(T(2))))); // x > 1
+    // m = +inf: the limit 0 below 1; 1^inf = inf * 0 in the exponent: NaN.
+    constexpr T inf = std::numeric_limits<T>::infinity();
+    CHECK(phong::detail::pow_unit_in_domain(launder(T(0.5)), launder(inf)) == T(0));
+    CHECK(std::isnan(phong::detail::pow_unit_in_domain(launder(T(1)), launder(inf))));
 }
+
+// The in-domain entry point in constant evaluation: exact powers of two.
+static_assert(phong::detail::pow_unit_in_domain(0.5, 2.0) == 0.25);
+static_assert(phong::detail::pow_unit_in_domain(0.25f, 0.5f) == 0.5f);
+static_assert(phong::detail::pow_unit_in_domain(0.0, 0.0) == 1.0);
+static_assert(phong::detail::pow_unit_in_domain(0x1p-600, 2.0) == 0.0); // 2^-1200: flushed
 
 // ---------------------------------------------------------------------------------------------
 // 3. Constant evaluation.

@@ -45,7 +45,7 @@ struct surface_frame {
     glm::vec<3, T, Q> view;     ///< unit view vector v (0 if undefined; exact mode without a term reading v: 1 or 0)
     mask_t<T> defined;          ///< normal and view both nonzero, inputs finite
     T poison;                   ///< 0, or NaN when the point's inputs are not finite
-    T nv = T(0);                ///< exact mode, reflection-based specular: n.v
+    T nv = T(0);                ///< exact mode with a specular term: n.v
 };
 
 template <class T, glm::qualifier Q>
@@ -338,12 +338,6 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
         if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional)
             length_d = phong::sqrt(dd); // only attenuation reads the distance
     }
-    // The light has a direction (not at Q, not a zero directional vector, no overflow) and the
-    // point has a normal and a view vector: otherwise only the light's ambient term is added.
-    mask_t<T> lit;
-    if constexpr (stable) lit = math_traits<T>::both(s.defined, inv > T(0));
-    else lit = math_traits<T>::both(s.defined, math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>()));
-
     // f_i(Q): distance attenuation (positional lights only) times the spot factor.
     T f = T(1);
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) {
@@ -367,20 +361,25 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
         if constexpr (F.attenuate_ambient) sums.ambient += in_type<T>(L.ambient) * f;
         else sums.ambient += in_type<T>(L.ambient);
     }
-    // The diffuse and specular terms only where they can be nonzero: a lit pair, and with the
-    // gate (or without a specular term, where max(n.l, 0) says the same) n.l > 0. A scalar branches
-    // (no power computed for unlit pairs), a SIMD batch skips when no lane is on.
+    // The diffuse and specular terms only where they can be nonzero: a lit pair (the light has a
+    // direction: not at Q, not a zero directional vector, no overflow; the point has a normal and
+    // a view vector) and, with the gate (or without a specular term, where max(n.l, 0) says the
+    // same), n.l > 0. Otherwise only the light's ambient term is added. A scalar branches (no
+    // power computed for pairs that are off), a SIMD batch skips when no lane is on.
     constexpr bool gated = F.specular_gate || F.specular == specular_model::none;
-    mask_t<T> on = lit;
-    if constexpr (gated && stable) on = math_traits<T>::both(lit, nl > T(0));
-    else if constexpr (gated) on = math_traits<T>::both(lit, nd > T(0));
-    if constexpr (std::is_floating_point_v<T> && !stable) {
-        // The same test as one condition, the sign of n.d first (it rejects about a third of a
+    mask_t<T> on;
+    if constexpr (stable) {
+        on = math_traits<T>::both(s.defined, inv > T(0));
+        if constexpr (gated) on = math_traits<T>::both(on, nl > T(0));
+    } else if constexpr (std::is_floating_point_v<T>) {
+        // One short-circuit condition, the sign of n.d first (it rejects about a third of a
         // typical scene's pairs): g++ then branches on each compare instead of combining flags.
-        if (!(s.defined && (!gated || nd > T(0)) && dd >= exact_min_square<T>() && dd <= largest<T>())) return;
+        on = s.defined && (!gated || nd > T(0)) && dd >= exact_min_square<T>() && dd <= largest<T>();
     } else {
-        if (!math_traits<T>::any(on)) return;
+        on = math_traits<T>::both(s.defined, math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>()));
+        if constexpr (gated) on = math_traits<T>::both(on, nd > T(0));
     }
+    if (!math_traits<T>::any(on)) return;
     if constexpr (!stable) {
         if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
             // Only n.l is needed: n.d / |d|, one rounding (a SIMD batch's lanes that are off may
@@ -400,8 +399,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>
         }
     }
     const auto add_diffuse = [&] {
-        constexpr bool positive = F.specular_gate || F.specular == specular_model::none; // on implies n.l > 0
-        const T lambert = positive ? nl : phong::max(nl, T(0));
+        const T lambert = gated ? nl : phong::max(nl, T(0)); // gated: on implies n.l > 0
         sums.diffuse += in_type<T>(L.diffuse) * (f * (std::is_floating_point_v<T> ? lambert : phong::select(on, lambert, T(0))));
     };
     // The exact mode's specular term Ls f max(c, 0)^m for the cosine c = x * scale (scale >= 0; c

@@ -127,8 +127,22 @@ PHONG_HD constexpr double exp2_nonpositive(double y)
     }
 }
 
+/// The kernels' value outside their domain: IEEE pow's (Ieee: std::pow at run time, the
+/// long-double kernel in constant evaluation), or NaN without any call to libm.
+template <bool Ieee, class F>
+PHONG_HD constexpr F outside_domain(F x, F m)
+{
+    if constexpr (!Ieee) {
+        return std::numeric_limits<F>::quiet_NaN();
+    } else {
+        if (std::is_constant_evaluated()) return static_cast<F>(ce::pow(x, m));
+        return std::pow(x, m);
+    }
+}
+
 /// float's kernel: the same tables with the short polynomials, enough for a float result.
-PHONG_HD constexpr float pow_unit(float xf, float mf)
+template <bool Ieee>
+PHONG_HD constexpr float pow_unit_kernel(float xf, float mf)
 {
     const double x = xf, m = mf;
     if (x > 0.0) [[likely]] { // every positive float is a normal double
@@ -138,8 +152,21 @@ PHONG_HD constexpr float pow_unit(float xf, float mf)
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0f : 0.0f;
     }
-    if (std::is_constant_evaluated()) return static_cast<float>(ce::pow(x, m));
-    return std::pow(xf, mf);
+    return outside_domain<Ieee>(xf, mf);
+}
+
+/// double's kernel; a subnormal x is scaled into the normal range.
+template <bool Ieee>
+PHONG_HD constexpr double pow_unit_kernel(double x, double m)
+{
+    if (x > 0.0) [[likely]] {
+        const double y = x >= 0x1p-1022 ? m * log2_normal(x) : m * (log2_normal(x * 0x1p64) - 64.0);
+        if (y >= -1022.0 && y <= 0.0) [[likely]] return exp2_nonpositive(y);
+        if (y < -1022.0) return 0.0;
+    } else if (x == 0.0 && m >= 0.0) {
+        return m == 0.0 ? 1.0 : 0.0;
+    }
+    return outside_domain<Ieee>(x, m);
 }
 
 /// x^m for x in [0, 1] and m >= 0 (the kernel of phong::pow_unit). Edges: pow_unit(0, 0) = 1,
@@ -147,51 +174,17 @@ PHONG_HD constexpr float pow_unit(float xf, float mf)
 /// domain: x > 1 with m < 0 (a result <= 1) runs the same kernel, with the same accuracy and flush;
 /// everything else (x > 1 with m > 0, x < 0, NaN, inf) returns IEEE pow's value (std::pow at run
 /// time, the long-double kernel in constant evaluation).
-PHONG_HD constexpr double pow_unit(double x, double m)
-{
-    if (x >= 0x1p-1022) [[likely]] {
-        const double y = m * log2_normal(x);
-        if (y >= -1022.0 && y <= 0.0) [[likely]] return exp2_nonpositive(y);
-        if (y < -1022.0) return 0.0;
-    } else if (x == 0.0 && m >= 0.0) {
-        return m == 0.0 ? 1.0 : 0.0;
-    } else if (x > 0.0) { // subnormal: scaled into the normal range
-        const double y = m * (log2_normal(x * 0x1p64) - 64.0);
-        if (y >= -1022.0 && y <= 0.0) return exp2_nonpositive(y);
-        if (y < -1022.0) return 0.0;
-    }
-    if (std::is_constant_evaluated()) return static_cast<double>(ce::pow(x, m));
-    return std::pow(x, m);
-}
+PHONG_HD constexpr float pow_unit(float x, float m) { return pow_unit_kernel<true>(x, m); }
+PHONG_HD constexpr double pow_unit(double x, double m) { return pow_unit_kernel<true>(x, m); }
 
 /// x^m for x in [0, 1] and a finite m >= 0 (a validated shininess): pow_unit's value there, with
-/// no fallback to libm's pow outside that domain. NaN x, NaN m, x < 0, or m < 0 with x < 1: NaN
-/// (x = 1 gives 1 for every non-NaN m, the exact value). Why a second entry
-/// point: the mere presence of a call (all vector registers caller-saved) made g++ keep a light
-/// loop's sums in memory in every iteration, and the shading loop never needs the fallback.
-PHONG_HD constexpr float pow_unit_in_domain(float xf, float mf)
-{
-    const double x = xf, m = mf;
-    if (x > 0.0) [[likely]] {
-        const double y = m * log2_normal<true>(x);
-        if (y >= -1022.0 && y <= 0.0) [[likely]] return static_cast<float>(exp2_nonpositive<true>(y));
-        return y < -1022.0 ? 0.0f : std::numeric_limits<float>::quiet_NaN();
-    }
-    if (x == 0.0 && m >= 0.0) return m == 0.0 ? 1.0f : 0.0f;
-    return std::numeric_limits<float>::quiet_NaN();
-}
-
-/// The same for double: results below 2^-1022 are 0, a subnormal x is scaled as in pow_unit.
-PHONG_HD constexpr double pow_unit_in_domain(double x, double m)
-{
-    if (x > 0.0) [[likely]] {
-        const double y = x >= 0x1p-1022 ? m * log2_normal(x) : m * (log2_normal(x * 0x1p64) - 64.0);
-        if (y >= -1022.0 && y <= 0.0) [[likely]] return exp2_nonpositive(y);
-        return y < -1022.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
-    }
-    if (x == 0.0 && m >= 0.0) return m == 0.0 ? 1.0 : 0.0;
-    return std::numeric_limits<double>::quiet_NaN();
-}
+/// no fallback to libm's pow outside that domain. NaN x, NaN m, x < 0, x > 1 with m > 0, or m < 0
+/// with x < 1: NaN (x = 1 gives 1 for every finite m, the exact value). m = +inf: 0 for x < 1,
+/// NaN for x = 1. Why a second entry point: the mere
+/// presence of a call (all vector registers caller-saved) made g++ keep a light loop's sums in
+/// memory in every iteration, and the shading loop never needs the fallback.
+PHONG_HD constexpr float pow_unit_in_domain(float x, float m) { return pow_unit_kernel<false>(x, m); }
+PHONG_HD constexpr double pow_unit_in_domain(double x, double m) { return pow_unit_kernel<false>(x, m); }
 #endif
 
 } // namespace phong::detail::power
