@@ -2,11 +2,27 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "features.hpp"
 #include "vector.hpp"
 
 #include <limits>
 
 namespace phong {
+
+namespace detail {
+/// The homogeneous rule's difference d = P.xyz - P.w Q (light: L.xyz - L.w Q; eye: E.xyz - E.w Q).
+/// K fixes w at compile time when it is known: positional (w = 1: P.xyz - Q, no product) or
+/// directional (w = 0: P.xyz, Q not read). The one place the rule is written: toward(), the view
+/// vector and every evaluation route's light vector call it.
+template <light_kind K = light_kind::any, class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> homogeneous_difference(const glm::vec<3, T, Q>& xyz, [[maybe_unused]] T w,
+                                                            [[maybe_unused]] const glm::vec<3, T, Q>& point)
+{
+    if constexpr (K == light_kind::directional) return xyz;
+    else if constexpr (K == light_kind::positional) return xyz - point;
+    else return xyz - point * w;
+}
+} // namespace detail
 
 /// A unit direction and the distance along it.
 template <class T, glm::qualifier Q = glm::defaultp>
@@ -27,7 +43,7 @@ struct direction_and_distance {
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& P, const glm::vec<3, T, Q>& point)
 {
-    const glm::vec<3, T, Q> d = glm::vec<3, T, Q>(P.x, P.y, P.z) - point * P.w;
+    const glm::vec<3, T, Q> d = detail::homogeneous_difference(glm::vec<3, T, Q>(P.x, P.y, P.z), P.w, point);
     const T len = phong::length(d);
     const T inf = std::numeric_limits<T>::infinity();
     return {phong::normalize(d), phong::select(P.w > T(0), len / phong::select(P.w > T(0), P.w, T(1)), inf)};

@@ -9,13 +9,23 @@
 
 namespace phong {
 
+namespace detail {
+/// The sign that faces n toward the viewer: -1 where n.v < 0, else 1 (face_viewer, and
+/// shade<F>'s facing::view).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr T viewer_facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v)
+{
+    return phong::select(phong::dot(n, v) < T(0), T(-1), T(1));
+}
+} // namespace detail
+
 /// Seed 000's conditional negation (two-sided lighting decided by the view):
 ///   n' = dot(n, v) < 0 ? -n : n
 /// so the normal faces the viewer. Edge: dot(n, v) = 0 or n = 0 keeps n; NaN keeps n.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> face_viewer(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v)
 {
-    return n * phong::select(phong::dot(n, v) < T(0), T(-1), T(1));
+    return n * detail::viewer_facing_sign(n, v);
 }
 
 /// Two-sided lighting decided by the caller (e.g. gl_FrontFacing): n' = front_facing ? n : -n.

@@ -13,6 +13,7 @@
 #include "light.hpp"
 #include "material.hpp"
 #include "features.hpp"
+#include "environment.hpp"
 #include "accuracy.hpp"
 #include "shade.hpp"
 #include "batch.hpp"

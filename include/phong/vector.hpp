@@ -12,6 +12,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <limits>
+
 namespace phong {
 
 /// Dot product: dot(a, b) = sum_k a_k b_k, summed in index order (GLSL `dot`).
@@ -95,6 +97,23 @@ PHONG_HD constexpr glm::vec<L, T, Q> normalize_unscaled(const glm::vec<L, T, Q>&
     const T dd = phong::dot(v, v);
     return v * phong::select(dd > T(0), phong::rsqrt(dd), T(0));
 }
+
+namespace detail {
+
+/// The exact mode's threshold on a squared length: the smallest normal number of T. Below it
+/// |v|^2 has lost bits to underflow and v / |v| would not be a unit vector (a light 1e-22 from Q
+/// in float gave n.l and r.v off by factors), so such a vector counts as zero: its terms give 0
+/// (a relative error of at most 1), never garbage or NaN.
+template <class T> PHONG_HD constexpr T exact_min_square() { return T(std::numeric_limits<scalar_t<T>>::min()); }
+
+/// The exact mode's 1/|v| from dd = |v|^2: 0 when dd is not a normal number (rsqrt(inf) = 0 too).
+template <class T>
+PHONG_HD constexpr T exact_inverse_length(T dd)
+{
+    return phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
+}
+
+} // namespace detail
 
 /// GLSL reflect: reflect(i, n) = i - 2 dot(n, i) n, the mirror image of the incident direction
 /// i about the plane with unit normal n. Pre: n unit length (else the result is not a mirror

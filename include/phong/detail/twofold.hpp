@@ -43,6 +43,13 @@ template <class T> PHONG_HD constexpr T two_sum_error(T a, T b, T hi)
     return (a - (hi - bb)) + (b - bb);
 }
 
+/// a - b = hi + lo exactly (TwoSum on a + (-b)); returns lo for hi = fl(a - b).
+template <class T> PHONG_HD constexpr T difference_error(T a, T b, T hi)
+{
+    const T bb = hi - a;
+    return (a - (hi - bb)) - (b + bb);
+}
+
 /// A unit vector carried twofold: hi + lo = d / |d| with an error of a few eps^2 per component.
 template <class T, glm::qualifier Q>
 struct unit_twofold {
@@ -181,6 +188,27 @@ PHONG_HD constexpr T one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3,
         c_lo[k] = lo - (c[k] - s);
     }
     return half_square(c, c_lo);
+}
+
+/// 1 - n.h = |n - h|^2 / 2 for h = normalize(l + v), from twofold n, l and v: the sum l + v is
+/// formed twofold and renormalized, h = unit_of(sum) twofold, then one_minus_nh.
+/// Pre: n, l, v unit (or 0). Edge: l = -v (no halfway vector) gives 1, i.e. n.h taken as 0.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr T one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, const glm::vec<3, T, Q>& lh,
+                                       const glm::vec<3, T, Q>& llo, const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
+{
+    glm::vec<3, T, Q> sum(T(0)), sum_lo(T(0));
+    for (int k = 0; k < 3; ++k) {
+        sum[k] = lh[k] + vh[k];
+        sum_lo[k] = two_sum_error(lh[k], vh[k], sum[k]) + (llo[k] + vlo[k]);
+        // Renormalized: where l and v cancel in the high parts, lo can exceed hi, and unit_of
+        // (which scales by the high parts) would then overflow lo to inf.
+        const T t = sum[k] + sum_lo[k];
+        sum_lo[k] = two_sum_error(sum[k], sum_lo[k], t);
+        sum[k] = t;
+    }
+    const unit_twofold<T, Q> h = unit_of(sum, sum_lo);
+    return phong::select(h.inv_scaled > T(0), one_minus_nh(nh, nlo, h.hi, h.lo), T(1));
 }
 
 } // namespace phong::detail

@@ -1,0 +1,190 @@
+// phong: the exact evaluation route, features::mode = evaluation::exact (and, instantiated in
+// double, the stable mode's wider route for float). The model's formulas as written, one small
+// function per step of the data flow: the point's frame (unit normal, view vector), then per
+// light the light vector, f (detail/light_terms.hpp), whether the pair is lit, the diffuse
+// cosine and the specular factor (specular.hpp's steps). Guarded so that finite input never
+// gives NaN or inf; accuracy bounds in phong/accuracy.hpp.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "../direction.hpp"
+#include "../specular.hpp"
+#include "light_terms.hpp"
+#include "twofold.hpp"
+
+#include <type_traits>
+
+namespace phong::detail::exact {
+
+/// Per-point quantities, computed once and shared by every light (five fields: a compiler
+/// keeps them in registers across the light loop).
+template <class T, glm::qualifier Q>
+struct surface_frame {
+    glm::vec<3, T, Q> position; ///< Q
+    glm::vec<3, T, Q> normal;   ///< unit normal after two-sided negation (0 if undefined)
+    glm::vec<3, T, Q> view;     ///< unit view vector v (0 if undefined; without a term reading v: 1 or 0)
+    mask_t<T> defined;          ///< normal and view both nonzero, inputs finite
+    T poison;                   ///< 0, or NaN when the point's inputs are not finite
+    T nv = T(0);                ///< with a specular term: n.v
+};
+
+/// A unit vector with its squared length: v / |v|, or 0 when |v|^2 is not a normal number
+/// (below exact_min_square: lost to underflow; inf: overflowed; NaN).
+template <class T, glm::qualifier Q>
+struct unit_vector {
+    glm::vec<3, T, Q> unit;
+    T square;     ///< |v|^2 as computed (inf or NaN when v is not finite or overflows)
+    mask_t<T> ok; ///< unit is a unit vector
+};
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T sign = T(1))
+{
+    const T dd = phong::dot(v, v);
+    const T inv = exact_inverse_length(dd);
+    return {v * (inv * sign), dd, inv > T(0)};
+}
+
+/// unit(e * sign), or, when no term reads v, only whether it exists (no normalization left behind).
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T sign)
+{
+    if constexpr (F.specular == specular_model::none && F.two_sided != facing::view) {
+        const T square = phong::dot(e, e);
+        const mask_t<T> ok = math_traits<T>::both(square >= exact_min_square<T>(), square <= largest<T>());
+        return {glm::vec<3, T, Q>(phong::select(ok, T(1), T(0))), square, ok};
+    } else {
+        return unit_of(e, sign);
+    }
+}
+
+/// The view vector v at Q: normalize(-Q) (perspective), the environment's direction
+/// (orthographic), or normalize(E.xyz - E.w Q) (eye_point). Its square tells whether the inputs
+/// may be non-finite (orthographic: |Q|^2 does).
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& position, const environment<T, Q>& env)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    const vec3 eye(env.eye.x, env.eye.y, env.eye.z);
+    if constexpr (F.view == view_model::orthographic) {
+        const vec3 v = phong::normalize(eye);
+        return {v, phong::dot(position, position), phong::dot(v, v) > T(0)};
+    } else if constexpr (F.view == view_model::perspective) {
+        return view_unit<F>(position, T(-1)); // -Q, as Q times -1/|Q|
+    } else {
+        return view_unit<F>(detail::homogeneous_difference(eye, env.eye.w, position), T(1));
+    }
+}
+
+/// The point's poison (poison_of). Scalars: finite squares of the normal and the view vector
+/// mean finite inputs and poison 0, so the exact test runs only in the rare other case.
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                  const environment<T, Q>& env, T normal_square, T view_square)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+        if (!(normal_square <= largest<T>() && view_square <= largest<T>())) [[unlikely]]
+            return poison_of<F>(position, normal, env);
+        return T(0);
+    } else {
+        return poison_of<F>(position, normal, env);
+    }
+}
+
+/// The per-point frame: unit normal (faced toward the viewer when two-sided), view vector,
+/// whether both exist, the poison, and n.v.
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                               const environment<T, Q>& env, mask_t<T> front_facing)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    const unit_vector<T, Q> n = unit_of(normal);
+    const unit_vector<T, Q> v = view_vector<F>(position, env);
+    const T poison = point_poison<F>(position, normal, env, n.square, v.square);
+    vec3 unit_normal = n.unit;
+    if constexpr (F.two_sided != facing::none) unit_normal = unit_normal * facing_sign<F>(unit_normal, v.unit, front_facing);
+    else (void)front_facing;
+    // A NaN point has every channel NaN through poison; its terms are off, so no NaN power runs.
+    const mask_t<T> defined = math_traits<T>::both(math_traits<T>::both(n.ok, v.ok), poison == T(0));
+    T nv = T(0);
+    if constexpr (F.specular != specular_model::none) nv = phong::dot(unit_normal, v.unit);
+    // Built from components: copied whole, g++ moved the vectors through the stack.
+    return {vec3(position.x, position.y, position.z), vec3(unit_normal.x, unit_normal.y, unit_normal.z),
+            vec3(v.unit.x, v.unit.y, v.unit.z), defined, poison, nv};
+}
+
+/// Whether a pair is lit, from dd = |d|^2 and nd = n.d (d = L.xyz - w Q): the light has a
+/// direction (|d|^2 a normal number: not at Q, no overflow), the point a normal and a view
+/// vector, and, where gated, n.l > 0. Scalars: one short-circuit condition, the sign first (it
+/// rejects about a third of a typical scene's pairs, and g++ then branches on each compare).
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+        return s.defined && (!gated<F> || nd > T(0)) && dd >= exact_min_square<T>() && dd <= largest<T>();
+    } else {
+        mask_t<T> on = math_traits<T>::both(s.defined, math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>()));
+        if constexpr (gated<F>) on = math_traits<T>::both(on, nd > T(0));
+        return on;
+    }
+}
+
+/// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale (specular.hpp's
+/// cosine_power). Scalars add nothing where the power is 0 (x <= 0 and m > 0).
+template <class T, glm::qualifier Q, class U>
+PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
+                                     [[maybe_unused]] mask_t<T> on)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+        if (x > T(0)) sums.specular += in_type<T>(L.specular) * (f * detail::cosine_power(x, scale, m));
+        else if (m == T(0)) sums.specular += in_type<T>(L.specular) * f; // cosine_power's pow(0, 0) = 1
+    } else {
+        sums.specular += in_type<T>(L.specular) * (f * phong::select(on, detail::cosine_power(x, scale, m), T(0)));
+    }
+}
+
+/// One light's terms added to the sums. U is the light's scalar type (U = T, or float lights in
+/// double arithmetic: the stable mode's wider route).
+/// Dot products are taken with d = L.xyz - w Q itself and scaled by 1/|d| only for lit pairs:
+/// the signs that decide the branches do not wait for a square root and a division.
+template <features F, class T, glm::qualifier Q, class U>
+PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    const T w = light_w<F, T>(L);
+    const vec3 d = detail::homogeneous_difference<F.lights>(vec3(T(L.position.x), T(L.position.y), T(L.position.z)), w, s.position);
+    const T dd = phong::dot(d, d);
+    const T nd = phong::dot(s.normal, d);
+
+    vec3 l(T(0)); // the unit light vector; read by the spot (every pair) and by Blinn
+    T inv = T(0); // 1/|d|
+    if constexpr (F.spot != spot_model::none) {
+        inv = exact_inverse_length(dd);
+        l = d * inv;
+        for (int k = 0; k < 3; ++k) l[k] = phong::select(inv > T(0), l[k], T(0)); // an overflowed d: inf * 0
+    }
+    T distance = T(0); // only attenuation reads it
+    if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = phong::sqrt(dd);
+    const T f = light_factor<F>(L, distance, w, l);
+    add_ambient<F>(sums, L, f);
+
+    const mask_t<T> on = lit<F>(s, dd, nd);
+    if (!math_traits<T>::any(on)) return;
+    T nl;
+    if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
+        nl = nd / phong::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
+    } else {
+        if constexpr (F.spot == spot_model::none) inv = std::is_floating_point_v<T> ? phong::rsqrt(dd) : exact_inverse_length(dd);
+        nl = nd * inv;
+    }
+    if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, on);
+    if constexpr (F.specular == specular_model::phong) {
+        add_specular(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, on);
+    } else if constexpr (F.specular == specular_model::blinn) {
+        // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
+        if constexpr (F.spot == spot_model::none)
+            l = vec3(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
+        add_specular(sums, L, f, nl + s.nv, detail::inverse_halfway_length(l, s.view), m, on);
+    }
+}
+
+} // namespace phong::detail::exact

@@ -1,0 +1,111 @@
+// phong: the steps of one light that every evaluation route shares: f_i(Q) (attenuation and
+// spot), the ambient and diffuse sums, and the sums themselves. The routes (detail/exact.hpp,
+// detail/stable.hpp) differ in how they get l, n.l and the specular factor; these take those.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "../attenuation.hpp"
+#include "../environment.hpp"
+#include "../features.hpp"
+#include "../light.hpp"
+#include "../normal.hpp"
+
+#include <type_traits>
+
+namespace phong::detail {
+
+/// Per-light sums, weighted by f; the material multiplies them once at the end (finish).
+template <class T, glm::qualifier Q>
+struct light_sums {
+    glm::vec<3, T, Q> ambient{T(0)};
+    glm::vec<3, T, Q> diffuse{T(0)};
+    glm::vec<3, T, Q> specular{T(0)};
+};
+
+/// A light's vector in the arithmetic type T: the vector itself when it already is (a reference,
+/// no copy), else widened exactly (float lights in the stable mode's double arithmetic).
+template <class T, int N, class U, glm::qualifier Q>
+PHONG_HD constexpr decltype(auto) in_type(const glm::vec<N, U, Q>& v)
+{
+    if constexpr (std::is_same_v<U, T>) return (v);
+    else return glm::vec<N, T, Q>(v);
+}
+
+/// The light's w as F knows it: 1 for positional, 0 for directional lights, else L.position.w.
+template <features F, class T, class U, glm::qualifier Q>
+PHONG_HD constexpr T light_w(const light<U, Q>& L)
+{
+    if constexpr (F.lights == light_kind::positional) return T(1);
+    else if constexpr (F.lights == light_kind::directional) return T(0);
+    else return T(L.position.w);
+}
+
+/// x * 0 is 0 for finite x and NaN for NaN or inf: the NaN policy's poison of a point.
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr T poison_of(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal, const environment<T, Q>& env)
+{
+    const glm::vec<3, T, Q> zero(T(0));
+    T poison = phong::dot(position, zero) + phong::dot(normal, zero);
+    if constexpr (F.view == view_model::eye_point) poison += phong::dot(glm::vec<4, T, Q>(env.eye), glm::vec<4, T, Q>(T(0)));
+    return poison;
+}
+
+/// Two-sided lighting: the sign that faces the normal n toward the viewer (or the caller's flag).
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v, mask_t<T> front_facing)
+{
+    if constexpr (F.two_sided == facing::view) return viewer_facing_sign(n, v);
+    else return phong::select(front_facing, T(1), T(-1));
+}
+
+/// f_i(Q) = attenuation(distance) * spot(l): the light's weight at the point.
+/// distance = |L.xyz - w Q| (divided by w here for light_kind::any), read only with attenuation;
+/// l = the unit light vector (0 if none), read only with a spot. Directional lights (w = 0) are
+/// not attenuated. U is the light's own scalar type: float lights shaded in double keep float's
+/// cap on f (attenuation.hpp), so a light at Q gives the same large finite value as in float.
+template <features F, class T, glm::qualifier Q, class U>
+PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
+                                  [[maybe_unused]] const glm::vec<3, T, Q>& l)
+{
+    T f = T(1);
+    if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) {
+        if constexpr (F.lights == light_kind::any) distance = distance / phong::select(w > T(0), w, T(1));
+        T fa;
+        if constexpr (F.attenuation == attenuation_model::polynomial)
+            fa = phong::attenuation_polynomial(distance, T(L.attenuation.constant), T(L.attenuation.linear), T(L.attenuation.quadratic));
+        else
+            fa = phong::attenuation_windowed(distance, T(L.attenuation.range));
+        if constexpr (!std::is_same_v<U, T>) fa = phong::min(fa, T(1 / attenuation_denominator_min<U>));
+        if constexpr (F.lights == light_kind::any) f = phong::select(w > T(0), fa, T(1));
+        else f = fa;
+    }
+    if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, in_type<T>(L.spot.direction), T(L.spot.exponent), T(L.spot.cos_cutoff));
+    if constexpr (F.spot == spot_model::smooth) f = f * phong::spot_smooth(l, in_type<T>(L.spot.direction), T(L.spot.cos_inner), T(L.spot.cos_outer));
+    return f;
+}
+
+/// The light's ambient term: La_i f (or La_i, without features::attenuate_ambient).
+template <features F, class T, glm::qualifier Q, class U>
+PHONG_HD constexpr void add_ambient(light_sums<T, Q>& sums, const light<U, Q>& L, [[maybe_unused]] T f)
+{
+    if constexpr (F.light_ambient) {
+        if constexpr (F.attenuate_ambient) sums.ambient += in_type<T>(L.ambient) * f;
+        else sums.ambient += in_type<T>(L.ambient);
+    }
+}
+
+/// Whether a lit pair needs n.l > 0: with the specular gate, and without a specular term (where
+/// max(n.l, 0) says the same).
+template <features F> inline constexpr bool gated = F.specular_gate || F.specular == specular_model::none;
+
+/// The diffuse term Ld_i f max(n.l, 0) of a lit pair (on: the lanes that are lit; gated: on
+/// already implies n.l > 0).
+template <features F, class T, glm::qualifier Q, class U>
+PHONG_HD constexpr void add_diffuse(light_sums<T, Q>& sums, const light<U, Q>& L, T f, T nl, [[maybe_unused]] mask_t<T> on)
+{
+    const T lambert = gated<F> ? nl : phong::max(nl, T(0));
+    if constexpr (std::is_floating_point_v<T>) sums.diffuse += in_type<T>(L.diffuse) * (f * lambert);
+    else sums.diffuse += in_type<T>(L.diffuse) * (f * phong::select(on, lambert, T(0)));
+}
+
+} // namespace phong::detail

@@ -1,0 +1,187 @@
+// phong: the stable evaluation route, features::mode = evaluation::stable for double, SIMD
+// batches and float with features::precision = twofold (float's default, the wider route, is
+// detail/exact.hpp run in double). Vectors are rescaled by powers of two (exact) so that every
+// finite input is in range, and the unit vectors n, l, v (h), n.l and the specular chords are
+// carried twofold (detail/twofold.hpp) from the exact L.xyz - w Q; the specular power is
+// (1 - x)^m = exp(m log1p(-x)) of the half chord x = |r - v|^2 / 2 (|n - h|^2 / 2), so a high m
+// does not amplify the rounding of a cosine. With features::stable_twofold_above = M > 0, pairs
+// whose shininess is at most M round each component once instead (about a third of the cost, an
+// error that grows like sqrt(m) eps). Bounds in phong/accuracy.hpp.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "../direction.hpp"
+#include "../specular.hpp"
+#include "light_terms.hpp"
+#include "twofold.hpp"
+
+#include <limits>
+#include <type_traits>
+
+namespace phong::detail::stable {
+
+/// Per-point quantities, computed once and shared by every light.
+template <class T, glm::qualifier Q>
+struct surface_frame {
+    glm::vec<3, T, Q> position;        ///< Q
+    glm::vec<3, T, Q> normal{T(0)};    ///< unit normal after two-sided negation, rounded (0 if undefined)
+    glm::vec<3, T, Q> view{T(0)};      ///< unit view vector, rounded (0 if undefined)
+    mask_t<T> defined;                 ///< normal and view both nonzero, inputs finite
+    T poison;                          ///< 0, or NaN when the point's inputs are not finite
+    glm::vec<3, T, Q> normal_scaled;   ///< the normal before its last rounding, rescaled exactly
+    T inv_normal_length;               ///< 1 / |normal_scaled|
+    glm::vec<3, T, Q> normal_lo{T(0)}; ///< rounding error of normal (normal + normal_lo to O(eps^2))
+    glm::vec<3, T, Q> view_lo{T(0)};   ///< rounding error of view
+};
+
+/// A vector with the rounding error of its last operation: hi + lo exact.
+template <class T, glm::qualifier Q>
+struct twofold_vector {
+    glm::vec<3, T, Q> hi, lo;
+};
+
+/// The homogeneous difference d = P.xyz - w Q (direction.hpp) with its rounding error, so that
+/// directions are computed on the exact d: w Q is a rounded product (error by fma), the
+/// difference's error by TwoSum.
+template <light_kind K, class T, glm::qualifier Q>
+PHONG_HD constexpr twofold_vector<T, Q> difference_twofold(const glm::vec<3, T, Q>& xyz, T w, const glm::vec<3, T, Q>& point)
+{
+    twofold_vector<T, Q> d{xyz, glm::vec<3, T, Q>(T(0))};
+    if constexpr (K == light_kind::positional) {
+        d.hi = xyz - point;
+        for (int k = 0; k < 3; ++k) d.lo[k] = difference_error(xyz[k], point[k], d.hi[k]);
+    } else if constexpr (K == light_kind::any) {
+        glm::vec<3, T, Q> p(T(0));
+        for (int k = 0; k < 3; ++k) p[k] = rounded_product(point[k], w); // not fused into xyz - p
+        d.hi = xyz - p;
+        for (int k = 0; k < 3; ++k) d.lo[k] = difference_error(xyz[k], p[k], d.hi[k]) - phong::fma(w, point[k], -p[k]);
+    } else {
+        (void)w;
+        (void)point;
+    }
+    return d;
+}
+
+/// The per-point frame: n and v twofold from the exact normal and the exact E.xyz - E.w Q.
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                               const environment<T, Q>& env, mask_t<T> front_facing)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    surface_frame<T, Q> s{};
+    s.position = position;
+    const vec3 eye(env.eye.x, env.eye.y, env.eye.z);
+    twofold_vector<T, Q> e{eye, vec3(T(0))};                                             // orthographic
+    if constexpr (F.view == view_model::perspective) e.hi = -position;
+    if constexpr (F.view == view_model::eye_point) e = difference_twofold<light_kind::any>(eye, env.eye.w, position);
+    const unit_twofold<T, Q> uv = unit_of(e.hi, e.lo);
+    s.view = uv.hi;
+    s.view_lo = uv.lo;
+    const unit_twofold<T, Q> un = unit_of(normal, vec3(T(0)));
+    s.normal = un.hi;
+    s.normal_lo = un.lo;
+    s.normal_scaled = phong::rescaled(normal);
+    s.inv_normal_length = un.inv_scaled;
+    s.poison = poison_of<F>(position, normal, env);
+    s.defined = math_traits<T>::both(phong::dot(s.normal, s.normal) > T(0), phong::dot(s.view, s.view) > T(0));
+    if constexpr (F.two_sided != facing::none) {
+        const T sign = facing_sign<F>(s.normal, s.view, front_facing);
+        s.normal = s.normal * sign;
+        s.normal_scaled = s.normal_scaled * sign;
+        s.normal_lo = s.normal_lo * sign;
+    } else {
+        (void)front_facing;
+    }
+    s.defined = math_traits<T>::both(s.defined, s.poison == T(0));
+    return s;
+}
+
+/// The unit light vector and n.l of one pair: l + l_lo and nl + nl_lo (the lo parts 0 when
+/// rounded once), 1/|d| of the rescaled d (0: no direction), and the distance |d|.
+template <class T, glm::qualifier Q>
+struct light_unit {
+    glm::vec<3, T, Q> l, l_lo;
+    T nl, nl_lo, inv, length;
+};
+
+/// l and n.l to about eps^2 (detail/twofold.hpp), from the exact d = hi + lo.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr light_unit<T, Q> light_twofold(const surface_frame<T, Q>& s, const twofold_vector<T, Q>& d)
+{
+    const unit_twofold<T, Q> u = unit_of(d.hi, d.lo); // rescaled: any finite nonzero d
+    light_unit<T, Q> r{u.hi, u.lo, T(0), T(0), u.inv_scaled, u.length};
+    dot_twofold(s.normal, s.normal_lo, u.hi, u.lo, r.nl, r.nl_lo);
+    return r;
+}
+
+/// l rounded once from d rescaled by a power of two (exact: huge and tiny d survive), and n.l
+/// compensated on the exact d = hi + lo and the exact (rescaled) normal.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr light_unit<T, Q> light_rounded_once(const surface_frame<T, Q>& s, const twofold_vector<T, Q>& d)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    const T largest_d = phong::max_abs(d.hi);
+    const mask_t<T> in_range = largest_d <= largest<T>(); // an overflowed d has no direction
+    const T scale = math_traits<T>::inverse_pow2_scale(phong::select(in_range, largest_d, T(1)));
+    vec3 hs(T(0)), ls(T(0));
+    for (int k = 0; k < 3; ++k) {
+        hs[k] = phong::select(in_range, d.hi[k] * scale, T(0));
+        ls[k] = phong::select(in_range, d.lo[k] * scale, T(0)); // lo is NaN when d overflowed
+    }
+    const T hh = phong::dot(hs, hs);
+    const T inv = phong::select(hh > T(0), phong::rsqrt(phong::select(hh > T(0), hh, T(1))), T(0));
+    T nh, nlo;
+    dot_twofold(s.normal_scaled, vec3(T(0)), hs, ls, nh, nlo);
+    const T length = phong::select(in_range, phong::sqrt(hh) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
+    return {hs * inv, vec3(T(0)), (nh + nlo) * (s.inv_normal_length * inv), T(0), inv, length};
+}
+
+/// The specular factor (1 - x)^m, x = 1 - r.v or 1 - n.h from chords (specular.hpp's
+/// rounded-once steps, or detail/twofold.hpp's twofold ones).
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr T specular_factor(const surface_frame<T, Q>& s, const light_unit<T, Q>& u, bool twofold, T m)
+{
+    if constexpr (F.specular == specular_model::phong) {
+        if (twofold) return phong::pow_one_minus(one_minus_rv(s.normal, s.normal_lo, u.nl, u.nl_lo, u.l, u.l_lo, s.view, s.view_lo), m);
+        return phong::pow_one_minus(detail::one_minus_reflection_cosine(s.normal, u.nl, u.l, s.view), m);
+    } else {
+        if (twofold) return phong::pow_one_minus(one_minus_halfway(s.normal, s.normal_lo, u.l, u.l_lo, s.view, s.view_lo), m);
+        return phong::pow_one_minus(detail::one_minus_halfway_cosine(s.normal, u.l, s.view), m);
+    }
+}
+
+/// One light's terms added to the sums. A SIMD batch takes the twofold depth when any lane needs it.
+template <features F, class T, glm::qualifier Q, class U>
+PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    const T w = light_w<F, T>(L);
+    const twofold_vector<T, Q> d = difference_twofold<F.lights>(vec3(T(L.position.x), T(L.position.y), T(L.position.z)), w, s.position);
+
+    // Twofold unless stable_twofold_above = M > 0 and no lane's shininess is above M.
+    bool twofold = F.stable_twofold_above == 0 ||
+                   (F.specular != specular_model::none && math_traits<T>::any(m > T(F.stable_twofold_above)));
+    light_unit<T, Q> u = twofold ? light_twofold(s, d) : light_rounded_once(s, d);
+    if constexpr (F.specular == specular_model::blinn && F.stable_twofold_above > 0) {
+        // l + v nearly cancels (|l + v| < 2^-10): h from once-rounded l and v is noise there.
+        const vec3 lv = u.l + s.view;
+        if (!twofold && math_traits<T>::any(phong::dot(lv, lv) < T(1.0 / 1048576))) {
+            twofold = true;
+            u = light_twofold(s, d);
+        }
+    }
+    const T f = light_factor<F>(L, u.length, w, u.l);
+    add_ambient<F>(sums, L, f);
+
+    mask_t<T> on = math_traits<T>::both(s.defined, u.inv > T(0));
+    if constexpr (gated<F>) on = math_traits<T>::both(on, u.nl > T(0));
+    if (!math_traits<T>::any(on)) return;
+    if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, u.nl, on);
+    if constexpr (F.specular != specular_model::none) {
+        T spec = specular_factor<F>(s, u, twofold, m);
+        if constexpr (!std::is_floating_point_v<T>) spec = phong::select(on, spec, T(0)); // lanes computed but off
+        sums.specular += in_type<T>(L.specular) * (f * spec);
+    }
+}
+
+} // namespace phong::detail::stable
