@@ -240,51 +240,48 @@ int main(int argc, char** argv)
         for (int k = 0; k < inner; ++k)
             for (std::size_t i = 0; i < NV; ++i) out[i] = shade_one(m.positions[i], m.normals[i]);
     };
-    const double tv_inline = renderers::median_seconds(opt.reps, [&] {
-        vertex_pass(v_inline, [&](const vec3& p, const vec3& n) { return vertex_inline(p, n, inline_normal_mat, s); });
-    });
-    const double tv_exact = renderers::median_seconds(opt.reps, [&] {
-        vertex_pass(v_exact, [&](const vec3& p, const vec3& n) {
-            return phong_calls::shade_phong_vertex<phong_calls::raster_exact>(p, n, s.model_view, ps.normal_mat, ps.material, ps.lights);
-        });
-    });
-    const double tv_stable = renderers::median_seconds(opt.reps, [&] {
-        vertex_pass(v_stable, [&](const vec3& p, const vec3& n) {
-            return phong_calls::shade_phong_vertex<phong_calls::raster_stable>(p, n, s.model_view, ps.normal_mat, ps.material, ps.lights);
-        });
-    });
-
+    const auto vertex_exact = [&](const vec3& p, const vec3& n) {
+        return phong_calls::shade_phong_vertex<phong_calls::raster_exact>(p, n, s.model_view, ps.normal_mat, ps.material, ps.lights);
+    };
+    const auto vertex_stable = [&](const vec3& p, const vec3& n) {
+        return phong_calls::shade_phong_vertex<phong_calls::raster_stable>(p, n, s.model_view, ps.normal_mat, ps.material, ps.lights);
+    };
     // Fragment stage.
     std::vector<vec3> f_inline(NF), f_exact(NF), f_stable(NF), f_batch(NF), f_P(NF), f_n(NF);
     for (std::size_t i = 0; i < NF; ++i) f_P[i] = frags[i].eye_position, f_n[i] = frags[i].eye_normal;
     std::vector<glm::dvec3> f_double(NF);
     phong_calls::batch_scratch scratch;
-    const double tf_inline = renderers::median_seconds(opt.reps, [&] {
-        for (std::size_t i = 0; i < NF; ++i) f_inline[i] = ads_inline<float>(f_P[i], f_n[i], s);
-    });
-    const double tf_exact = renderers::median_seconds(opt.reps, [&] {
-        for (std::size_t i = 0; i < NF; ++i)
-            f_exact[i] = phong_calls::shade_phong_fragment<phong_calls::raster_exact>(f_P[i], f_n[i], ps.material, ps.lights);
-    });
-    const double tf_stable = renderers::median_seconds(opt.reps, [&] {
-        for (std::size_t i = 0; i < NF; ++i)
-            f_stable[i] = phong_calls::shade_phong_fragment<phong_calls::raster_stable>(f_P[i], f_n[i], ps.material, ps.lights);
-    });
-    const double tf_batch = renderers::median_seconds(opt.reps, [&] {
-        phong_calls::shade_phong_fragments_batch<phong_calls::raster_exact>(f_P, f_n, ps.material, ps.lights, f_batch, scratch);
+    const renderers::timings t = renderers::interleaved_medians(opt.reps, {
+        [&] { vertex_pass(v_inline, [&](const vec3& p, const vec3& n) { return vertex_inline(p, n, inline_normal_mat, s); }); },
+        [&] { vertex_pass(v_exact, vertex_exact); },
+        [&] { vertex_pass(v_stable, vertex_stable); },
+        [&] {
+            for (std::size_t i = 0; i < NF; ++i) f_inline[i] = ads_inline<float>(f_P[i], f_n[i], s);
+        },
+        [&] {
+            for (std::size_t i = 0; i < NF; ++i)
+                f_exact[i] = phong_calls::shade_phong_fragment<phong_calls::raster_exact>(f_P[i], f_n[i], ps.material, ps.lights);
+        },
+        [&] {
+            for (std::size_t i = 0; i < NF; ++i)
+                f_stable[i] = phong_calls::shade_phong_fragment<phong_calls::raster_stable>(f_P[i], f_n[i], ps.material, ps.lights);
+        },
+        [&] { phong_calls::shade_phong_fragments_batch<phong_calls::raster_exact>(f_P, f_n, ps.material, ps.lights, f_batch, scratch); },
     });
     for (std::size_t i = 0; i < NF; ++i) f_double[i] = ads_inline<double>(f_P[i], f_n[i], s);
 
     renderers::report out(opt.dir / "raster.txt");
     out("phong_raster: %dx%d, torus %zu vertices %zu triangles, %zu lights, GLSL ADS, shading step only, median of %d reps, one thread\n",
         W, H, NV, m.triangles.size(), s.lights.size(), opt.reps);
-    out("ns per shaded vertex / fragment; (x) = ratio to inline\n");
-    out("%-9s %8s | %8s %14s %14s %14s\n", "stage", "points", "inline", "phong exact", "phong stable", "batch (SoA)");
     const double nv = 1e9 / double(NV * inner), nf = 1e9 / double(NF);
-    out("%-9s %8zu | %8.1f %8.1f (%.2f) %8.1f (%.2f) %14s\n", "vertex", NV, tv_inline * nv, tv_exact * nv, tv_exact / tv_inline,
-        tv_stable * nv, tv_stable / tv_inline, "-");
-    out("%-9s %8zu | %8.1f %8.1f (%.2f) %8.1f (%.2f) %8.1f (%.2f)\n", "fragment", NF, tf_inline * nf, tf_exact * nf, tf_exact / tf_inline,
-        tf_stable * nf, tf_stable / tf_inline, tf_batch * nf, tf_batch / tf_inline);
+    for (const auto& [clock, x] : {std::pair{"thread CPU time", &t.cpu}, std::pair{"wall clock, steady_clock", &t.wall}}) {
+        const std::vector<double>& u = *x;
+        out("\nns per shaded vertex / fragment, %s; (x) = ratio to inline\n", clock);
+        out("%-9s %8s | %8s %14s %14s %14s\n", "stage", "points", "inline", "phong exact", "phong stable", "batch (SoA)");
+        out("%-9s %8zu | %8.1f %8.1f (%.2f) %8.1f (%.2f) %14s\n", "vertex", NV, u[0] * nv, u[1] * nv, u[1] / u[0], u[2] * nv, u[2] / u[0], "-");
+        out("%-9s %8zu | %8.1f %8.1f (%.2f) %8.1f (%.2f) %8.1f (%.2f)\n", "fragment", NF, u[3] * nf, u[4] * nf, u[4] / u[3], u[5] * nf,
+            u[5] / u[3], u[6] * nf, u[6] / u[3]);
+    }
 
     const image<float> g_inline = gouraud_image<float>(s, frags, v_inline, W, H), g_exact = gouraud_image<float>(s, frags, v_exact, W, H),
                        g_stable = gouraud_image<float>(s, frags, v_stable, W, H);

@@ -13,8 +13,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
+
+#include <time.h> // clock_gettime, CLOCK_THREAD_CPUTIME_ID (POSIX)
 
 #ifndef PHONG_RENDERERS_DEFAULT_DIR
 #define PHONG_RENDERERS_DEFAULT_DIR "."
@@ -64,26 +67,55 @@ inline image_diff compare(const std::vector<unsigned char>& a, const std::vector
     return d;
 }
 
-/// Median of `reps` timings of fn(), in seconds (steady clock around the whole call).
-template <class Fn> double median_seconds(int reps, Fn&& fn)
+inline double median(std::vector<double> t)
 {
-    std::vector<double> t;
-    for (int r = 0; r < reps; ++r) {
-        const auto t0 = std::chrono::steady_clock::now();
-        fn();
-        const auto t1 = std::chrono::steady_clock::now();
-        t.push_back(std::chrono::duration<double>(t1 - t0).count());
-    }
     std::sort(t.begin(), t.end());
     const std::size_t n = t.size();
     return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+}
+
+/// The calling thread's CPU time in seconds (POSIX CLOCK_THREAD_CPUTIME_ID, as the demo's
+/// raycast.hpp): on a machine shared with other jobs, time spent descheduled is not counted.
+inline double thread_seconds()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+/// Medians, in seconds, of each method's time: thread CPU time and steady_clock wall time.
+struct timings {
+    std::vector<double> cpu, wall;
+};
+
+/// Each method timed `reps` times around its whole call; the methods run in turn within a round,
+/// so a change of the machine's load falls on all of them alike rather than on one.
+inline timings interleaved_medians(int reps, const std::vector<std::function<void()>>& methods)
+{
+    std::vector<std::vector<double>> cpu(methods.size()), wall(methods.size());
+    for (int r = 0; r < reps; ++r)
+        for (std::size_t m = 0; m < methods.size(); ++m) {
+            const double c0 = thread_seconds();
+            const auto t0 = std::chrono::steady_clock::now();
+            methods[m]();
+            const auto t1 = std::chrono::steady_clock::now();
+            const double c1 = thread_seconds();
+            wall[m].push_back(std::chrono::duration<double>(t1 - t0).count());
+            cpu[m].push_back(c1 - c0);
+        }
+    timings out;
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+        out.cpu.push_back(median(cpu[m]));
+        out.wall.push_back(median(wall[m]));
+    }
+    return out;
 }
 
 /// Command line: [output_dir] [--size WxH] [--reps N]; the environment variable
 /// PHONG_RENDERERS_SIZE=WxH overrides the default size (CI: a small run through the CMake target).
 struct options {
     std::filesystem::path dir = PHONG_RENDERERS_DEFAULT_DIR;
-    int width, height, reps = 7;
+    int width, height, reps = 9;
 };
 inline bool parse(int argc, char** argv, options& o, const char* name)
 {

@@ -291,14 +291,12 @@ int main(int argc, char** argv)
     renderers::report out(opt.dir / "whitted.txt");
     out("phong_whitted: %dx%d, Whitted ray tracer (5 spheres, floor, depth 4), shading step only, median of %d reps, one thread\n",
         W, H, opt.reps);
-    out("ns per shaded point; (x) = ratio to inline; batch: primary hits only, against inline over the same hits\n");
-    out("%-6s %9s %6s | %8s %14s %14s | %9s %8s %14s\n", "lights", "points", "vis/pt", "inline", "phong exact", "phong stable",
-        "primary", "inline", "batch");
     struct checks {
         int lights;
         renderers::image_diff exact_inline, stable_double, exact_double, batch_inline;
     };
     std::vector<checks> results;
+    std::vector<std::string> rows_cpu, rows_wall; // the timing tables, one row per light count
     for (const int light_count : {1, 2, 4}) {
         const scene sc = make_scene(light_count);
         const phong_scene ps = to_phong(sc);
@@ -317,17 +315,24 @@ int main(int argc, char** argv)
             pa.material.push_back(h.material);
         }
         phong_calls::batch_scratch scratch;
-        const double t_inline = renderers::median_seconds(opt.reps, [&] { shade_all_inline(f.hits, sc, c_inline); });
-        const double t_exact = renderers::median_seconds(opt.reps, [&] { shade_all_phong<phong_calls::whitted_exact>(f.hits, sc, ps, c_exact); });
-        const double t_stable = renderers::median_seconds(opt.reps, [&] { shade_all_phong<phong_calls::whitted_stable>(f.hits, sc, ps, c_stable); });
-        const double t_pinline = renderers::median_seconds(opt.reps, [&] { shade_all_inline(f.primary, sc, p_inline); });
-        const double t_batch = renderers::median_seconds(opt.reps, [&] { shade_all_batch(pa, sc, ps, p_batch, scratch); });
+        const renderers::timings t = renderers::interleaved_medians(opt.reps, {
+            [&] { shade_all_inline(f.hits, sc, c_inline); },
+            [&] { shade_all_phong<phong_calls::whitted_exact>(f.hits, sc, ps, c_exact); },
+            [&] { shade_all_phong<phong_calls::whitted_stable>(f.hits, sc, ps, c_stable); },
+            [&] { shade_all_inline(f.primary, sc, p_inline); },
+            [&] { shade_all_batch(pa, sc, ps, p_batch, scratch); },
+        });
         for (std::size_t i = 0; i < N; ++i) c_double[i] = shade_inline<double>(f.hits[i], sc);
 
         const double ns = 1e9 / double(N), pns = 1e9 / double(NP);
-        out("%-6d %9zu %6.2f | %8.1f %8.1f (%.2f) %8.1f (%.2f) | %9zu %8.1f %8.1f (%.2f)\n", light_count, N, visible / double(N),
-            t_inline * ns, t_exact * ns, t_exact / t_inline, t_stable * ns, t_stable / t_inline, NP, t_pinline * pns, t_batch * pns,
-            t_batch / t_pinline);
+        for (const auto& [times, rows] : {std::pair{&t.cpu, &rows_cpu}, std::pair{&t.wall, &rows_wall}}) {
+            const std::vector<double>& x = *times;
+            char row[200];
+            std::snprintf(row, sizeof row, "%-6d %9zu %6.2f | %8.1f %8.1f (%.2f) %8.1f (%.2f) | %9zu %8.1f %8.1f (%.2f)\n", light_count,
+                          N, visible / double(N), x[0] * ns, x[1] * ns, x[1] / x[0], x[2] * ns, x[2] / x[0], NP, x[3] * pns,
+                          x[4] * pns, x[4] / x[3]);
+            rows->push_back(row);
+        }
 
         const image<float> i_inline = compose<float>(f, c_inline, W, H), i_exact = compose<float>(f, c_exact, W, H),
                            i_stable = compose<float>(f, c_stable, W, H);
@@ -344,6 +349,12 @@ int main(int argc, char** argv)
                            compare(to_rgb8(i_exact), to_rgb8(i_double)),
                            compare(to_rgb8(primary_image(f, p_batch, W, H, sc.background)),
                                    to_rgb8(primary_image(f, p_inline, W, H, sc.background)))});
+    }
+    for (const auto& [clock, rows] : {std::pair{"thread CPU time", &rows_cpu}, std::pair{"wall clock, steady_clock", &rows_wall}}) {
+        out("\nns per shaded point, %s; (x) = ratio to inline; batch: primary hits only, against inline over the same hits\n", clock);
+        out("%-6s %9s %6s | %8s %14s %14s | %9s %8s %14s\n", "lights", "points", "vis/pt", "inline", "phong exact", "phong stable",
+            "primary", "inline", "batch");
+        for (const std::string& r : *rows) out("%s", r.c_str());
     }
     out("\nimages (8-bit sRGB, %d pixels): pixels differing / max difference in levels\n", W * H);
     out("%-6s %-26s %-26s %-22s %-22s\n", "lights", "phong exact vs inline", "phong stable vs double", "(exact vs double)",
