@@ -11,6 +11,16 @@
 //  * shade_batch<F> takes one light list and one environment per call: primary hits are grouped
 //    by shadow mask, packed into SoA arrays, and the eye is the camera position (w = 1), so
 //    v = normalize(E - P), equal to -ray.dir up to rounding (shade_phong_batch).
+//
+// Where the planned options go (nothing else in the renderers needs to change):
+//  * unit-length normal and view promised (features flag): whitted_exact / whitted_stable (the
+//    tracer's n and v = -ray.dir are unit); raster_* only for shade_vertex (the per-pixel normal is
+//    interpolated, not unit);
+//  * view vector per call: shade_phong_scalar passes v itself instead of env.eye = (v, 0);
+//    shade_phong_batch takes each hit's v (SoA) instead of the camera position;
+//  * per-call light mask / any input range of lights: shade_phong_scalar passes `visible` and the
+//    whole light list (no subset copy); shade_phong_batch passes per-point masks, no grouping;
+//  * terms returned separately: not needed by these renderers.
 // SPDX-License-Identifier: MIT
 #pragma once
 

@@ -32,6 +32,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -303,7 +304,7 @@ int main(int argc, char** argv)
         const frame f = trace_frame(sc, W, H);
         const std::size_t N = f.hits.size(), NP = f.primary.size();
         double visible = 0.0;
-        for (const hit_record& h : f.hits) visible += double(__builtin_popcount(h.visible));
+        for (const hit_record& h : f.hits) visible += double(std::popcount(h.visible));
 
         std::vector<vec3> c_inline(N), c_exact(N), c_stable(N), p_inline(NP), p_batch(NP);
         std::vector<glm::dvec3> c_double(N);
