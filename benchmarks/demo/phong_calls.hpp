@@ -1,0 +1,194 @@
+// phong end-to-end renderers: EVERY call into phong made by whitted.cpp and raster.cpp, in a few
+// small functions, so that they can be switched to new API options in one place. The renderers
+// themselves only see glm types, their own light and material structs, and these functions.
+//
+// Today's API, as a user calls it:
+//  * shade<F> takes the lights as a range: a ray tracer's per-hit shadow mask becomes a copy of
+//    the visible lights (shade_phong_scalar);
+//  * the view vector comes from env.eye: a ray tracer's v = -ray.dir is passed as the direction
+//    eye = (v, 0) with view_model::eye_point (not perspective: its eye at the origin is wrong for
+//    secondary rays), and shade<F> normalizes it again;
+//  * shade_batch<F> takes one light list and one environment per call: primary hits are grouped
+//    by shadow mask, packed into SoA arrays, and the eye is the camera position (w = 1), so
+//    v = normalize(E - P), equal to -ray.dir up to rounding (shade_phong_batch).
+//
+// Where the planned options go (nothing else in the renderers needs to change):
+//  * unit-length normal and view promised (features flag): whitted_exact / whitted_stable (the
+//    tracer's n and v = -ray.dir are unit); raster_* only for shade_vertex (the per-pixel normal is
+//    interpolated, not unit);
+//  * view vector per call: shade_phong_scalar passes v itself instead of env.eye = (v, 0);
+//    shade_phong_batch takes each hit's v (SoA) instead of the camera position;
+//  * per-call light mask / any input range of lights: shade_phong_scalar passes `visible` and the
+//    whole light list (no subset copy); shade_phong_batch passes per-point masks, no grouping;
+//  * terms returned separately: not needed by these renderers.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <phong/phong.hpp>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace phong_calls {
+
+// ---- Whitted ray tracer ---------------------------------------------------------------------
+
+/// The ray tracer's lighting: ka La + sum over visible lights of L (kd max(n.l, 0) + ks max(r.v, 0)^m),
+/// r = reflect(-l, n), positional lights, no gate, no attenuation, v from env.eye.
+inline constexpr phong::features whitted_exact{
+    .scene_ambient = true, .light_ambient = false, .diffuse = true,
+    .specular = phong::specular_model::phong, .specular_gate = false, .lights = phong::light_kind::positional,
+    .attenuation = phong::attenuation_model::none, .spot = phong::spot_model::none,
+    .attenuate_ambient = true, .two_sided = phong::facing::none, .view = phong::view_model::eye_point,
+    .emission = false, .alpha = false, .mode = phong::evaluation::exact};
+inline constexpr phong::features whitted_stable = phong::presets::with_mode(whitted_exact, phong::evaluation::stable);
+
+inline constexpr std::size_t max_lights = 4;
+
+/// A light for phong: positional, one colour for diffuse and specular, no ambient.
+inline phong::light<float> make_light(const glm::vec3& position, const glm::vec3& colour)
+{
+    phong::light<float> L;
+    L.position = glm::vec4(position, 1.0f);
+    L.ambient = glm::vec3(0.0f);
+    L.diffuse = colour;
+    L.specular = colour;
+    return L;
+}
+
+inline phong::material<float> make_material(const glm::vec3& ka, const glm::vec3& kd, const glm::vec3& ks, float shininess)
+{
+    return {.ka = ka, .kd = kd, .ks = ks, .emission = glm::vec3(0.0f), .shininess = shininess, .alpha = 1.0f};
+}
+
+/// One hit, scalar shade<F>: the lights of `visible` (bit i: lights[i] not in shadow) copied out
+/// (all of them: the span itself), v = -ray.dir passed as the eye direction (w = 0).
+template <phong::features F>
+inline glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, const glm::vec3& v, unsigned visible,
+                                    std::span<const phong::light<float>> lights, const phong::material<float>& mat,
+                                    const glm::vec3& ambient)
+{
+    const phong::environment<float> env{.ambient = ambient, .eye = glm::vec4(v, 0.0f)};
+    const unsigned all = (1u << lights.size()) - 1u;
+    if (visible == all) return phong::shade<F>(P, n, mat, lights, env);
+    std::array<phong::light<float>, max_lights> subset;
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (visible & (1u << i)) subset[k++] = lights[i];
+    return phong::shade<F>(P, n, mat, std::span<const phong::light<float>>(subset.data(), k), env);
+}
+
+/// Scratch arrays of shade_phong_batch, kept between calls.
+struct batch_scratch {
+    std::vector<std::size_t> order;            ///< hit indices grouped by mask
+    std::vector<float> px, py, pz, nx, ny, nz; ///< SoA positions and normals
+    std::vector<phong::material<float>> mats;  ///< one per point
+    std::vector<float> r, g, b;                ///< SoA colours
+};
+
+/// Primary hits, shade_batch<F>: hits grouped by shadow mask (a counting sort), each group packed
+/// into SoA arrays with one material per point and shaded with its visible lights, eye = the
+/// camera position (w = 1); colours scattered back to out[i] (all of this is timed).
+template <phong::features F>
+inline void shade_phong_batch(std::span<const glm::vec3> P, std::span<const glm::vec3> n, std::span<const unsigned> visible,
+                              std::span<const int> material_id, std::span<const phong::material<float>> materials,
+                              std::span<const phong::light<float>> lights, const glm::vec3& ambient,
+                              const glm::vec3& camera_position, std::span<glm::vec3> out, batch_scratch& s)
+{
+    const std::size_t N = P.size();
+    const std::size_t masks = std::size_t(1) << lights.size();
+    std::array<std::size_t, (1u << max_lights) + 1> start{};
+    for (std::size_t i = 0; i < N; ++i) ++start[visible[i] + 1];
+    for (std::size_t m = 0; m < masks; ++m) start[m + 1] += start[m];
+    std::array<std::size_t, 1u << max_lights> fill{};
+    for (std::size_t m = 0; m < masks; ++m) fill[m] = start[m];
+    s.order.resize(N);
+    for (std::size_t i = 0; i < N; ++i) s.order[fill[visible[i]]++] = i;
+    for (auto* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz, &s.r, &s.g, &s.b}) v->resize(N);
+    s.mats.resize(N);
+    for (std::size_t k = 0; k < N; ++k) {
+        const std::size_t i = s.order[k];
+        s.px[k] = P[i].x, s.py[k] = P[i].y, s.pz[k] = P[i].z;
+        s.nx[k] = n[i].x, s.ny[k] = n[i].y, s.nz[k] = n[i].z;
+        s.mats[k] = materials[std::size_t(material_id[i])];
+    }
+    const phong::environment<float> env{.ambient = ambient, .eye = glm::vec4(camera_position, 1.0f)};
+    std::array<phong::light<float>, max_lights> subset;
+    for (std::size_t m = 0; m < masks; ++m) {
+        const std::size_t b = start[m], e = start[m + 1];
+        if (b == e) continue;
+        std::size_t k = 0;
+        for (std::size_t i = 0; i < lights.size(); ++i)
+            if (m & (std::size_t(1) << i)) subset[k++] = lights[i];
+        const auto sub = [&](const std::vector<float>& v) { return std::span<const float>(v.data() + b, e - b); };
+        const auto out_sub = [&](std::vector<float>& v) { return std::span<float>(v.data() + b, e - b); };
+        phong::shade_batch<F>(phong::soa3<float>{sub(s.px), sub(s.py), sub(s.pz)}, phong::soa3<float>{sub(s.nx), sub(s.ny), sub(s.nz)},
+                              std::span<const phong::material<float>>(s.mats.data() + b, e - b),
+                              std::span<const phong::light<float>>(subset.data(), k),
+                              phong::soa_rgba<float>{out_sub(s.r), out_sub(s.g), out_sub(s.b), {}}, env);
+    }
+    for (std::size_t k = 0; k < N; ++k) out[s.order[k]] = glm::vec3(s.r[k], s.g[k], s.b[k]);
+}
+
+// ---- Software rasterizer --------------------------------------------------------------------
+
+/// Seed 003's GLSL ADS (phong.vert): La Ka + Ld Kd max(s.n, 0) + [s.n > 0] Ls Ks max(r.v, 0)^f,
+/// eye coordinates, v = normalize(-eyeCoords).
+inline constexpr phong::features raster_exact = phong::presets::seed003_ads;
+inline constexpr phong::features raster_stable = phong::presets::with_mode(raster_exact, phong::evaluation::stable);
+
+/// A seed 003 light in eye coordinates (La, Ld, Ls).
+inline phong::light<float> make_ads_light(const glm::vec3& eye_position, const glm::vec3& La, const glm::vec3& Ld, const glm::vec3& Ls)
+{
+    phong::light<float> L;
+    L.position = glm::vec4(eye_position, 1.0f);
+    L.ambient = La;
+    L.diffuse = Ld;
+    L.specular = Ls;
+    return L;
+}
+
+/// NormalMatrix of seed 003.
+inline glm::mat3 normal_matrix(const glm::mat4& model_view) { return phong::normal_matrix(model_view); }
+
+/// One vertex through seed 003's pipeline: shade_vertex<F> (object-space position and normal).
+template <phong::features F>
+inline glm::vec3 shade_phong_vertex(const glm::vec3& p, const glm::vec3& n, const glm::mat4& model_view, const glm::mat3& normal_mat,
+                                    const phong::material<float>& mat, std::span<const phong::light<float>> lights)
+{
+    return phong::shade_vertex<F>(p, n, model_view, normal_mat, mat, lights);
+}
+
+/// One fragment: shade<F> on the interpolated eye-space position and (not unit) normal.
+template <phong::features F>
+inline glm::vec3 shade_phong_fragment(const glm::vec3& eye_position, const glm::vec3& normal, const phong::material<float>& mat,
+                                      std::span<const phong::light<float>> lights)
+{
+    return phong::shade<F>(eye_position, normal, mat, lights);
+}
+
+/// Every fragment at once: packed into SoA arrays, shade_batch<F>, colours scattered back (timed).
+template <phong::features F>
+inline void shade_phong_fragments_batch(std::span<const glm::vec3> P, std::span<const glm::vec3> n, const phong::material<float>& mat,
+                                        std::span<const phong::light<float>> lights, std::span<glm::vec3> out, batch_scratch& s)
+{
+    const std::size_t N = P.size();
+    for (auto* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz, &s.r, &s.g, &s.b}) v->resize(N);
+    for (std::size_t i = 0; i < N; ++i) {
+        s.px[i] = P[i].x, s.py[i] = P[i].y, s.pz[i] = P[i].z;
+        s.nx[i] = n[i].x, s.ny[i] = n[i].y, s.nz[i] = n[i].z;
+    }
+    const auto in = [](const std::vector<float>& v) { return std::span<const float>(v); };
+    phong::shade_batch<F>(phong::soa3<float>{in(s.px), in(s.py), in(s.pz)}, phong::soa3<float>{in(s.nx), in(s.ny), in(s.nz)}, mat, lights,
+                          phong::soa_rgba<float>{std::span<float>(s.r), std::span<float>(s.g), std::span<float>(s.b), {}});
+    for (std::size_t i = 0; i < N; ++i) out[i] = glm::vec3(s.r[i], s.g[i], s.b[i]);
+}
+
+} // namespace phong_calls

@@ -1,0 +1,372 @@
+// phong end-to-end benchmark and test 1: a small Whitted ray tracer (issue 13, item 7).
+// Spheres and a checkered floor, 1, 2 or 4 point lights, hard shadows, mirror reflection and
+// refraction to a fixed depth, Phong lighting at every hit, done four ways over the same hits:
+//   inline  the ten lines a ray tracer's author writes (no guards, n and v taken as unit);
+//   phong   phong::shade<F>, exact mode, visible lights copied per hit, v = -ray.dir as env.eye;
+//   stable  the same in evaluation::stable;
+//   batch   primary hits only: grouped by shadow mask, packed to SoA, phong::shade_batch<F>;
+// plus the inline formula in double as the reference image.
+// The frame is traced once and every hit recorded (position, unit normal, view direction, shadow
+// mask, material, path weight, pixel); each method is then timed over the recorded hits (median
+// of --reps runs) and composed into an image (sum of weight * local colour per pixel, which is
+// Whitted's recursion with constant reflection and transmission coefficients).
+// Image targets (exit 1 if missed): phong exact vs inline and phong stable vs double, each
+// within 1 level of 8-bit sRGB at every pixel.
+//
+// Usage: phong_whitted [output_dir] [--size WxH] [--reps N]
+// SPDX-License-Identifier: MIT
+
+// g++ 12 flags the _mm512_undefined_* placeholders inside its own AVX-512 intrinsics as
+// uninitialized once xsimd's kernels are inlined (shade_batch); as in benchmarks/shade.bench.cpp,
+// silenced for the whole file before any include.
+#if defined(__GNUC__) && !defined(__clang__)
+#  pragma GCC diagnostic ignored "-Wuninitialized"
+#  pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include "phong_calls.hpp"
+#include "renderers_common.hpp"
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image_write.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace {
+
+using glm::vec3;
+using renderers::image;
+
+struct sphere {
+    vec3 centre;
+    float radius;
+    int material;
+};
+struct tracer_material {
+    vec3 ka, kd, ks;
+    float shininess;
+    float kr = 0.0f, kt = 0.0f, ior = 1.0f; ///< reflected, transmitted weight; refractive index
+};
+struct point_light {
+    vec3 position, colour;
+};
+
+struct scene {
+    std::vector<sphere> spheres;
+    float floor_half_size = 6.0f; ///< the floor: y = 0, |x|, |z| < this, checkered materials 0 and 1
+    std::vector<tracer_material> materials;
+    std::vector<point_light> lights;
+    vec3 ambient{0.1f}, background{0.05f, 0.07f, 0.12f};
+    vec3 eye{0.0f, 1.7f, 6.2f}, target{0.0f, 0.7f, 0.0f};
+    float fov_degrees = 45.0f;
+    int max_depth = 4;
+};
+
+scene make_scene(int light_count)
+{
+    scene sc;
+    sc.materials = {
+        {vec3(0.08f), vec3(0.75f), vec3(0.2f), 20.0f, 0.1f},                                      // 0 floor light
+        {vec3(0.02f), vec3(0.18f), vec3(0.2f), 20.0f, 0.1f},                                      // 1 floor dark
+        {vec3(0.1f, 0.02f, 0.02f), vec3(0.7f, 0.12f, 0.1f), vec3(0.6f), 60.0f},                   // 2 red plastic
+        {vec3(0.01f), vec3(0.05f), vec3(0.8f), 200.0f, 0.85f},                                    // 3 mirror
+        {vec3(0.0f), vec3(0.02f), vec3(0.9f), 120.0f, 0.08f, 0.88f, 1.5f},                        // 4 glass
+        {vec3(0.02f, 0.04f, 0.1f), vec3(0.15f, 0.3f, 0.8f), vec3(0.5f), 35.0f, 0.15f},            // 5 blue
+        {vec3(0.08f, 0.07f, 0.02f), vec3(0.8f, 0.65f, 0.15f), vec3(0.3f), 8.0f},                  // 6 gold, broad
+    };
+    sc.spheres = {{{-1.7f, 0.8f, -0.2f}, 0.8f, 2}, {{0.3f, 1.05f, -1.4f}, 1.05f, 3}, {{1.35f, 0.62f, 0.9f}, 0.62f, 4},
+                  {{-0.35f, 0.35f, 1.5f}, 0.35f, 5}, {{2.6f, 0.5f, -1.2f}, 0.5f, 6}};
+    const point_light all[4] = {{{4.0f, 6.0f, 5.0f}, {1.0f, 0.95f, 0.85f}},
+                                {{-5.0f, 4.0f, 3.0f}, {0.55f, 0.6f, 0.8f}},
+                                {{0.5f, 7.0f, -4.0f}, {0.7f, 0.7f, 0.7f}},
+                                {{-1.0f, 1.5f, 4.5f}, {0.4f, 0.35f, 0.3f}}};
+    const float scale = 1.0f / std::sqrt(float(light_count));
+    for (int i = 0; i < light_count; ++i) sc.lights.push_back({all[i].position, all[i].colour * scale});
+    return sc;
+}
+
+struct ray {
+    vec3 origin, dir; ///< dir unit
+};
+
+struct intersection {
+    float t = std::numeric_limits<float>::infinity();
+    int object = -1; ///< sphere index, or -2 for the floor
+};
+
+intersection intersect(const scene& sc, const ray& r, float t_min)
+{
+    intersection best;
+    for (std::size_t i = 0; i < sc.spheres.size(); ++i) {
+        const sphere& s = sc.spheres[i];
+        const vec3 oc = r.origin - s.centre;
+        const float b = glm::dot(oc, r.dir), c = glm::dot(oc, oc) - s.radius * s.radius, disc = b * b - c;
+        if (disc < 0.0f) continue;
+        const float q = std::sqrt(disc);
+        const float t = -b - q > t_min ? -b - q : -b + q;
+        if (t > t_min && t < best.t) best = {t, int(i)};
+    }
+    if (r.dir.y != 0.0f) {
+        const float t = -r.origin.y / r.dir.y;
+        const vec3 p = r.origin + t * r.dir;
+        if (t > t_min && t < best.t && std::abs(p.x) < sc.floor_half_size && std::abs(p.z) < sc.floor_half_size) best = {t, -2};
+    }
+    return best;
+}
+
+/// One recorded hit: what the shading step reads, and where its colour goes.
+struct hit_record {
+    vec3 position, normal, view; ///< normal and view unit, view = -ray.dir, normal facing the ray
+    unsigned visible;            ///< bit i: lights[i] not in shadow
+    int material;
+    vec3 weight; ///< product of kr / kt along the path
+    int pixel;
+};
+
+struct frame {
+    std::vector<hit_record> hits;    ///< every hit, primary and secondary
+    std::vector<hit_record> primary; ///< the primary hits (the batch method's input)
+    image<double> missed;            ///< sum of weight * background of the rays that hit nothing
+};
+
+frame trace_frame(const scene& sc, int width, int height)
+{
+    frame f;
+    f.missed = image<double>(width, height);
+    const vec3 forward = glm::normalize(sc.target - sc.eye), right = glm::normalize(glm::cross(forward, vec3(0, 1, 0)));
+    const vec3 up = glm::cross(right, forward);
+    const float half_h = std::tan(glm::radians(sc.fov_degrees) * 0.5f), half_w = half_h * float(width) / float(height);
+    struct task {
+        ray r;
+        vec3 weight;
+        int depth;
+    };
+    std::vector<task> stack;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const int pixel = y * width + x;
+            const float u = (2.0f * (float(x) + 0.5f) / float(width) - 1.0f) * half_w;
+            const float w = (1.0f - 2.0f * (float(y) + 0.5f) / float(height)) * half_h;
+            stack.push_back({{sc.eye, glm::normalize(forward + u * right + w * up)}, vec3(1.0f), 0});
+            while (!stack.empty()) {
+                const task tk = stack.back();
+                stack.pop_back();
+                const intersection is = intersect(sc, tk.r, 1e-4f);
+                if (is.object == -1) {
+                    f.missed.pixels[std::size_t(pixel)] += glm::dvec3(tk.weight * sc.background);
+                    continue;
+                }
+                hit_record h;
+                h.position = tk.r.origin + is.t * tk.r.dir;
+                if (is.object >= 0) {
+                    const sphere& s = sc.spheres[std::size_t(is.object)];
+                    h.normal = glm::normalize(h.position - s.centre);
+                    h.material = s.material;
+                } else {
+                    h.normal = vec3(0.0f, 1.0f, 0.0f);
+                    h.material = (int(std::floor(h.position.x)) + int(std::floor(h.position.z))) & 1;
+                }
+                const bool inside = glm::dot(h.normal, tk.r.dir) > 0.0f;
+                if (inside) h.normal = -h.normal;
+                h.view = -tk.r.dir;
+                h.visible = 0;
+                for (std::size_t i = 0; i < sc.lights.size(); ++i) {
+                    const vec3 to_light = sc.lights[i].position - h.position;
+                    const float dist = glm::length(to_light);
+                    const intersection sh = intersect(sc, {h.position + 1e-3f * h.normal, to_light / dist}, 1e-4f);
+                    if (!(sh.t < dist)) h.visible |= 1u << i;
+                }
+                h.weight = tk.weight;
+                h.pixel = pixel;
+                f.hits.push_back(h);
+                if (tk.depth == 0) f.primary.push_back(h);
+                if (tk.depth >= sc.max_depth) continue;
+                const tracer_material& m = sc.materials[std::size_t(h.material)];
+                const vec3 reflected = glm::normalize(glm::reflect(tk.r.dir, h.normal));
+                if (m.kr > 0.0f) stack.push_back({{h.position + 1e-3f * h.normal, reflected}, tk.weight * m.kr, tk.depth + 1});
+                if (m.kt > 0.0f) {
+                    const vec3 refracted = glm::refract(tk.r.dir, h.normal, inside ? m.ior : 1.0f / m.ior);
+                    if (glm::dot(refracted, refracted) == 0.0f) // total internal reflection
+                        stack.push_back({{h.position + 1e-3f * h.normal, reflected}, tk.weight * m.kt, tk.depth + 1});
+                    else
+                        stack.push_back({{h.position - 1e-3f * h.normal, glm::normalize(refracted)}, tk.weight * m.kt, tk.depth + 1});
+                }
+            }
+        }
+    return f;
+}
+
+/// The lighting a ray tracer's author writes inline, in T (float: the `inline` method; double:
+/// the reference). n and v are unit already; no guards.
+template <class T>
+glm::vec<3, T> shade_inline(const hit_record& h, const scene& sc)
+{
+    using V = glm::vec<3, T>;
+    const tracer_material& m = sc.materials[std::size_t(h.material)];
+    const V P(h.position), n(h.normal), v(h.view), kd(m.kd), ks(m.ks);
+    const T shininess = T(m.shininess);
+    V colour = V(m.ka) * V(sc.ambient);
+    for (std::size_t i = 0; i < sc.lights.size(); ++i) {
+        if (!(h.visible & (1u << i))) continue;
+        const V l = glm::normalize(V(sc.lights[i].position) - P);
+        const T lambert = std::max(T(0), glm::dot(l, n));
+        const V r = glm::reflect(-l, n);
+        const T spec = std::pow(std::max(T(0), glm::dot(r, v)), shininess);
+        colour += V(sc.lights[i].colour) * (kd * lambert + ks * spec);
+    }
+    return colour;
+}
+
+/// Everything the phong methods need, converted once (not timed).
+struct phong_scene {
+    std::vector<phong::light<float>> lights;
+    std::vector<phong::material<float>> materials;
+};
+phong_scene to_phong(const scene& sc)
+{
+    phong_scene p;
+    for (const point_light& L : sc.lights) p.lights.push_back(phong_calls::make_light(L.position, L.colour));
+    for (const tracer_material& m : sc.materials) p.materials.push_back(phong_calls::make_material(m.ka, m.kd, m.ks, m.shininess));
+    return p;
+}
+
+void shade_all_inline(const std::vector<hit_record>& hits, const scene& sc, std::vector<vec3>& out)
+{
+    for (std::size_t i = 0; i < hits.size(); ++i) out[i] = shade_inline<float>(hits[i], sc);
+}
+
+template <phong::features F>
+void shade_all_phong(const std::vector<hit_record>& hits, const scene& sc, const phong_scene& ps, std::vector<vec3>& out)
+{
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+        const hit_record& h = hits[i];
+        out[i] = phong_calls::shade_phong_scalar<F>(h.position, h.normal, h.view, h.visible, ps.lights,
+                                                   ps.materials[std::size_t(h.material)], sc.ambient);
+    }
+}
+
+/// The batch method's input, as a user would keep it (timed from here: grouping, packing, shading).
+struct primary_arrays {
+    std::vector<vec3> P, n;
+    std::vector<unsigned> visible;
+    std::vector<int> material;
+};
+
+void shade_all_batch(const primary_arrays& a, const scene& sc, const phong_scene& ps, std::vector<vec3>& out,
+                     phong_calls::batch_scratch& scratch)
+{
+    phong_calls::shade_phong_batch<phong_calls::whitted_exact>(a.P, a.n, a.visible, a.material, ps.materials, ps.lights, sc.ambient,
+                                                               sc.eye, out, scratch);
+}
+
+/// Whitted's sum: the missed rays' background plus weight * local colour of every hit.
+template <class T, class C>
+image<T> compose(const frame& f, const std::vector<C>& local, int width, int height)
+{
+    image<T> img(width, height);
+    for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = glm::vec<3, T>(f.missed.pixels[i]);
+    for (std::size_t i = 0; i < f.hits.size(); ++i)
+        img.pixels[std::size_t(f.hits[i].pixel)] += glm::vec<3, T>(f.hits[i].weight) * glm::vec<3, T>(local[i]);
+    return img;
+}
+
+/// The primary hits' local colours as an image (for the batch comparison; background elsewhere).
+image<float> primary_image(const frame& f, const std::vector<vec3>& local, int width, int height, const vec3& background)
+{
+    image<float> img(width, height, background);
+    for (std::size_t i = 0; i < f.primary.size(); ++i) img.pixels[std::size_t(f.primary[i].pixel)] = local[i];
+    return img;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    renderers::options opt{.width = 640, .height = 480};
+    if (!renderers::parse(argc, argv, opt, "phong_whitted")) return 2;
+    const int W = opt.width, H = opt.height;
+    renderers::report out(opt.dir / "whitted.txt");
+    out("phong_whitted: %dx%d, Whitted ray tracer (5 spheres, floor, depth 4), shading step only, median of %d reps, one thread\n",
+        W, H, opt.reps);
+    struct checks {
+        int lights;
+        renderers::image_diff exact_inline, stable_double, exact_double, batch_inline;
+    };
+    std::vector<checks> results;
+    std::vector<std::string> rows_cpu, rows_wall; // the timing tables, one row per light count
+    for (const int light_count : {1, 2, 4}) {
+        const scene sc = make_scene(light_count);
+        const phong_scene ps = to_phong(sc);
+        const frame f = trace_frame(sc, W, H);
+        const std::size_t N = f.hits.size(), NP = f.primary.size();
+        double visible = 0.0;
+        for (const hit_record& h : f.hits) visible += double(std::popcount(h.visible));
+
+        std::vector<vec3> c_inline(N), c_exact(N), c_stable(N), p_inline(NP), p_batch(NP);
+        std::vector<glm::dvec3> c_double(N);
+        primary_arrays pa;
+        for (const hit_record& h : f.primary) {
+            pa.P.push_back(h.position);
+            pa.n.push_back(h.normal);
+            pa.visible.push_back(h.visible);
+            pa.material.push_back(h.material);
+        }
+        phong_calls::batch_scratch scratch;
+        const renderers::timings t = renderers::interleaved_medians(opt.reps, {
+            [&] { shade_all_inline(f.hits, sc, c_inline); },
+            [&] { shade_all_phong<phong_calls::whitted_exact>(f.hits, sc, ps, c_exact); },
+            [&] { shade_all_phong<phong_calls::whitted_stable>(f.hits, sc, ps, c_stable); },
+            [&] { shade_all_inline(f.primary, sc, p_inline); },
+            [&] { shade_all_batch(pa, sc, ps, p_batch, scratch); },
+        });
+        for (std::size_t i = 0; i < N; ++i) c_double[i] = shade_inline<double>(f.hits[i], sc);
+
+        const double ns = 1e9 / double(N), pns = 1e9 / double(NP);
+        for (const auto& [times, rows] : {std::pair{&t.cpu, &rows_cpu}, std::pair{&t.wall, &rows_wall}}) {
+            const std::vector<double>& x = *times;
+            char row[200];
+            std::snprintf(row, sizeof row, "%-6d %9zu %6.2f | %8.1f %8.1f (%.2f) %8.1f (%.2f) | %9zu %8.1f %8.1f (%.2f)\n", light_count,
+                          N, visible / double(N), x[0] * ns, x[1] * ns, x[1] / x[0], x[2] * ns, x[2] / x[0], NP, x[3] * pns,
+                          x[4] * pns, x[4] / x[3]);
+            rows->push_back(row);
+        }
+
+        const image<float> i_inline = compose<float>(f, c_inline, W, H), i_exact = compose<float>(f, c_exact, W, H),
+                           i_stable = compose<float>(f, c_stable, W, H);
+        const image<double> i_double = compose<double>(f, c_double, W, H);
+        const std::string stem = "whitted_" + std::to_string(light_count) + "lights_";
+        bool written = true;
+        written &= renderers::write_png(opt.dir / (stem + "inline.png"), i_inline, stbi_write_png);
+        written &= renderers::write_png(opt.dir / (stem + "phong.png"), i_exact, stbi_write_png);
+        written &= renderers::write_png(opt.dir / (stem + "stable.png"), i_stable, stbi_write_png);
+        written &= renderers::write_png(opt.dir / (stem + "double.png"), i_double, stbi_write_png);
+        if (!written) return 1;
+        using renderers::compare, renderers::to_rgb8;
+        results.push_back({light_count, compare(to_rgb8(i_exact), to_rgb8(i_inline)), compare(to_rgb8(i_stable), to_rgb8(i_double)),
+                           compare(to_rgb8(i_exact), to_rgb8(i_double)),
+                           compare(to_rgb8(primary_image(f, p_batch, W, H, sc.background)),
+                                   to_rgb8(primary_image(f, p_inline, W, H, sc.background)))});
+    }
+    for (const auto& [clock, rows] : {std::pair{"thread CPU time", &rows_cpu}, std::pair{"wall clock, steady_clock", &rows_wall}}) {
+        out("\nns per shaded point, %s; (x) = ratio to inline; batch: primary hits only, against inline over the same hits\n", clock);
+        out("%-6s %9s %6s | %8s %14s %14s | %9s %8s %14s\n", "lights", "points", "vis/pt", "inline", "phong exact", "phong stable",
+            "primary", "inline", "batch");
+        for (const std::string& r : *rows) out("%s", r.c_str());
+    }
+    out("\nimages (8-bit sRGB, %d pixels): pixels differing / max difference in levels\n", W * H);
+    out("%-6s %-26s %-26s %-22s %-22s\n", "lights", "phong exact vs inline", "phong stable vs double", "(exact vs double)",
+        "(batch vs inline, primary)");
+    bool ok = true;
+    for (const checks& c : results) {
+        const bool a = c.exact_inline.max_levels <= 1, b = c.stable_double.max_levels <= 1;
+        out("%-6d %7zu / %d %-12s %7zu / %d %-12s %7zu / %-12d %7zu / %d\n", c.lights, c.exact_inline.differing, c.exact_inline.max_levels,
+            renderers::verdict(a, ok), c.stable_double.differing, c.stable_double.max_levels, renderers::verdict(b, ok),
+            c.exact_double.differing, c.exact_double.max_levels, c.batch_inline.differing, c.batch_inline.max_levels);
+    }
+    out("image targets (max 1 level: phong exact vs inline, phong stable vs double): %s\n", ok ? "PASS" : "FAIL");
+    return ok ? 0 : 1;
+}
