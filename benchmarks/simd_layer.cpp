@@ -49,7 +49,7 @@ template <class V> double run(int K, const std::vector<float>* p, const std::vec
         auto t0 = std::chrono::steady_clock::now();
         for (std::size_t i = 0; i < N; i += W) {
             auto ld = [&](const std::vector<float>& a) { if constexpr (std::is_same_v<V, SV>) return V(&a[i], stdx::element_aligned); else return V::load_unaligned(&a[i]); };
-            auto s = detail::prepare<F>(glm::vec<3, V>(ld(p[0]), ld(p[1]), ld(p[2])), glm::vec<3, V>(ld(n[0]), ld(n[1]), ld(n[2])), env, mask_t<V>(true));
+            auto s = detail::prepare<F>(glm::vec<3, V>(ld(p[0]), ld(p[1]), ld(p[2])), glm::vec<3, V>(ld(n[0]), ld(n[1]), ld(n[2])), glm::vec<3, V>(V(0.f)), env, mask_t<V>(true));
             detail::light_sums<V, glm::defaultp> sums{};
             for (auto& l : lv) detail::add_light<F>(sums, s, l, m.shininess);
             auto c = detail::finish<F>(sums, s, m, env);

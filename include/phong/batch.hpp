@@ -276,7 +276,7 @@ void shade_step(std::size_t i, std::size_t count, const soa3<T>& positions, cons
     const material<V, Q>& mat = per_point_material ? gathered : shared_mat;
 
     const frame_t<F, V, Q> s = prepare<F>(glm::vec<3, V, Q>(lanes[0], lanes[1], lanes[2]),
-                                             glm::vec<3, V, Q>(lanes[3], lanes[4], lanes[5]), env, front);
+                                             glm::vec<3, V, Q>(lanes[3], lanes[4], lanes[5]), glm::vec<3, V, Q>(V(T(0))), env, front);
     light_sums<V, Q> sums{};
     for (const light<V, Q>& L : lights) detail::add_light<F>(sums, s, L, mat.shininess);
     const color<F, V, Q> c = finish<F>(sums, s, mat, env);
@@ -307,6 +307,7 @@ void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Ma
                       std::span<const light<T, Q>> lights, const Output& out, const environment<T, Q>& env,
                       std::span<const bool> front_facing)
 {
+    static_assert(F.view != view_model::given, "shade_batch: per-point view vectors are not supported yet; use eye_point");
     using V = simd_batch<T>;
     constexpr std::size_t W = batch_width<T>;
     constexpr bool per_point_material = !std::is_same_v<Materials, material<T, Q>>;

@@ -14,7 +14,7 @@ template <class T, glm::qualifier Q = glm::defaultp>
 struct environment {
     glm::vec<3, T, Q> ambient{T(0)}; ///< La (seed 000) = GlobalAmbient (seed 001); read when features::scene_ambient
     /// The eye as a homogeneous point: read for view_model::eye_point (w = 1: a point such as seed
-    /// 001's ray start; w = 0: a direction) and view_model::orthographic (xyz: toward the viewer).
+    /// 001's ray start; w = 0: a direction) and view_model::fixed_direction (xyz: toward the viewer).
     /// eye_from_projection(ec_lds) gives it from a projection matrix.
     glm::vec<4, T, Q> eye{T(0), T(0), T(0), T(1)};
 };

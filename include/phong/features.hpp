@@ -35,12 +35,26 @@ enum class spot_model : unsigned char { none, opengl, smooth };
 /// `flag`: negated when the caller says the point is back-facing (e.g. gl_FrontFacing).
 enum class facing : unsigned char { none, view, flag };
 
-/// Where the eye is, and so how v is computed. `perspective`: the eye at the origin of eye
-/// coordinates, v = normalize(-Q) (seed 000, 003). `orthographic`: a constant v, the environment's
-/// eye direction (w = 0), normalized once per call. `eye_point`: the general homogeneous rule,
-/// v = normalize(E.xyz - E.w Q) for the environment's eye E (seed 001's ray start; view.hpp
-/// derives E from any projection matrix).
-enum class view_model : unsigned char { perspective, orthographic, eye_point };
+/// Where the viewer is, and so how the view vector v (from the point toward the viewer) is found.
+///  * `eye_at_origin` (the default): the eye at the origin of the shading coordinates,
+///    v = normalize(-Q). Rasterizers shading in eye coordinates (seeds 000, 003).
+///  * `given`: v is passed to each shade call (shade<F>(Q, n, v, ...)): a ray tracer's -ray.dir,
+///    right for primary, reflected and refracted rays alike; a rasterizer's per-vertex or
+///    per-pixel vector. The one to use whenever the renderer already has v.
+///  * `fixed_direction`: one direction for every point, environment::eye.xyz (normalized once per
+///    call): orthographic cameras (seed 000's normalize(-M02/M00, -M12/M11, 1); view.hpp).
+///  * `eye_point`: the general homogeneous rule v = normalize(E.xyz - E.w Q) for environment::eye
+///    E (w = 1: an eye point such as seed 001's ray start, for primary rays only; w = 0: a
+///    direction). eye_from_projection() derives E from any projection matrix.
+/// `perspective` and `orthographic` are the older names of eye_at_origin and fixed_direction.
+enum class view_model : unsigned char {
+    eye_at_origin,
+    fixed_direction,
+    eye_point,
+    given,
+    perspective = eye_at_origin,
+    orthographic = fixed_direction,
+};
 
 /// How the terms are evaluated (accuracy against speed; bounds in phong/accuracy.hpp).
 /// `exact`: the formulas as written, guarded so they never give NaN/Inf for finite input.
@@ -73,7 +87,7 @@ struct features {
     spot_model spot = spot_model::none;
     bool attenuate_ambient = true; ///< f_i and the spot also scale the per-light ambient (OpenGL)
     facing two_sided = facing::none;
-    view_model view = view_model::perspective;
+    view_model view = view_model::eye_at_origin;
     bool emission = false;       ///< material emission added
     bool alpha = false;          ///< return rgba with the material's alpha appended
     evaluation mode = evaluation::exact;
@@ -85,52 +99,80 @@ struct features {
     /// (tests/stable_hybrid.test.cpp): well-conditioned p99 2.6 ulp, max 16 ulp; worst class max
     /// 50 ulp, max relative 3.5e-6; every target of the stable mode met. Higher m stays twofold.
     unsigned stable_twofold_above = 0;
+    /// The normal (and, for view_model::given, the view vector) come at unit length: used as
+    /// given, with no normalization and no length guards (checked in debug builds). For the
+    /// exact mode; the stable mode normalizes anyway (its accuracy needs the exact unit vectors).
+    /// Pre: unit length within 1e-3, finite. A zero or NaN vector breaks the precondition: the
+    /// NaN policy (NaN in, NaN out) is then not kept.
+    bool unit_inputs = false;
 };
 
-/// Ready-made feature sets reproducing the seeds.
+/// Ready-made feature sets, named for the model they compute. docs/models.md maps each source
+/// document and each of its terms to them.
 namespace presets {
 
-/// Seed 000, classic Phong in eye coordinates:
-/// I = ka La + sum_i f_i(Q) L_i (kd max(n.l_i, 0) + ks max(r_i.v, 0)^m), normal negated when it
-/// faces away from the viewer, alpha appended, view vector from the eye point of ec_lds
-/// (perspective or orthographic), polynomial attenuation. The seed writes n.l and (r.v)^m without
-/// clamps; they are clamped at 0 here (as in every shader of that model) and not gated.
-inline constexpr features seed000_classic{
+/// Classic eye-space Phong (the OpenGL fixed-function model; source document 000):
+///   I = ka La + sum_i f_i(Q) L_i (kd max(n.l_i, 0) + ks max(r_i.v, 0)^m),  r_i = reflect(-l_i, n),
+/// polynomial attenuation f_i = 1/(c0 + c1 d + c2 d^2) for positional lights (w = 1; w = 0 is
+/// directional), the normal negated where it faces away from the viewer, alpha appended, the
+/// viewer at environment::eye (eye_from_projection(projection): perspective or orthographic).
+/// n.l and r.v are clamped at 0 (as in every shader of that model), specular not gated.
+inline constexpr features classic_phong{
     .scene_ambient = true, .light_ambient = false, .diffuse = true,
     .specular = specular_model::phong, .specular_gate = false, .lights = light_kind::any,
     .attenuation = attenuation_model::polynomial, .spot = spot_model::none,
     .attenuate_ambient = true, .two_sided = facing::view, .view = view_model::eye_point,
     .emission = false, .alpha = true, .mode = evaluation::exact};
 
-/// Seed 001, the ray tracer's Blinn-Phong: I = sum_i (Iamb + Idiff + Ispec) + IG with
-/// Iamb = lightamb * materialamb, Idiff = lightdiff * materialdiff * max(l.m, 0),
-/// Ispec = lightspec * materialspec * max(0, h.m)^f, IG = GlobalAmbient * materialamb.
-/// No attenuation, no gate (as written), positional lights, the eye at the ray's start.
-inline constexpr features seed001_raytracer{
+/// Blinn-Phong with an ambient strength per light (source document 001's ray tracer):
+///   I = ka La + sum_i (ka La_i + kd Ld_i max(n.l_i, 0) + ks Ls_i max(n.h_i, 0)^m),
+///   h_i = normalize(l_i + v),
+/// positional lights, no attenuation, no specular gate (as written), the viewer at
+/// environment::eye (the camera position, w = 1: right for primary rays; pass v per call with
+/// view_model::given for secondary rays, as presets::raytracer_phong does).
+inline constexpr features blinn_phong_per_light_ambient{
     .scene_ambient = true, .light_ambient = true, .diffuse = true,
     .specular = specular_model::blinn, .specular_gate = false, .lights = light_kind::positional,
     .attenuation = attenuation_model::none, .spot = spot_model::none,
     .attenuate_ambient = true, .two_sided = facing::none, .view = view_model::eye_point,
     .emission = false, .alpha = false, .mode = evaluation::exact};
 
-/// Seed 003, GLSL ADS (phong.vert): La Ka + Ld Kd max(s.n, 0) + [s.n > 0] Ls Ks max(r.v, 0)^f
-/// with r = reflect(-s, n), v = normalize(-eyeCoords), s = normalize(LightPosition - eyeCoords).
-inline constexpr features seed003_ads{
+/// A Whitted ray tracer's Phong: I = ka La + sum_i (kd Ld_i max(n.l_i, 0) + [n.l_i > 0] ks Ls_i
+/// max(r_i.v, 0)^m), positional lights, and the view vector given per call (v = -ray.dir: right
+/// for primary, reflected and refracted rays). Shadows: pass the visible lights (phong::masked,
+/// phong::weighted, or any filtered range). Set .unit_inputs = true when n and v are unit already.
+inline constexpr features raytracer_phong{
+    .scene_ambient = true, .light_ambient = false, .diffuse = true,
+    .specular = specular_model::phong, .specular_gate = true, .lights = light_kind::positional,
+    .attenuation = attenuation_model::none, .spot = spot_model::none,
+    .attenuate_ambient = true, .two_sided = facing::none, .view = view_model::given,
+    .emission = false, .alpha = false, .mode = evaluation::exact};
+
+/// GLSL ambient-diffuse-specular per vertex (source document 003's phong.vert, shade_vertex):
+///   La Ka + Ld Kd max(s.n, 0) + [s.n > 0] Ls Ks max(r.v, 0)^f,  r = reflect(-s, n),
+/// v = normalize(-eyeCoords) (the eye at the origin of eye coordinates), positional lights.
+inline constexpr features glsl_ads{
     .scene_ambient = false, .light_ambient = true, .diffuse = true,
     .specular = specular_model::phong, .specular_gate = true, .lights = light_kind::positional,
     .attenuation = attenuation_model::none, .spot = spot_model::none,
-    .attenuate_ambient = true, .two_sided = facing::none, .view = view_model::perspective,
+    .attenuate_ambient = true, .two_sided = facing::none, .view = view_model::eye_at_origin,
     .emission = false, .alpha = false, .mode = evaluation::exact};
 
-/// Seed 003, diffuse.vert: Ld Kd max(s.n, 0) only.
-inline constexpr features seed003_diffuse{
+/// Diffuse only (Lambert; source document 003's diffuse.vert): Ld Kd max(s.n, 0).
+inline constexpr features diffuse_only{
     .scene_ambient = false, .light_ambient = false, .diffuse = true,
     .specular = specular_model::none, .specular_gate = true, .lights = light_kind::positional,
     .attenuation = attenuation_model::none, .spot = spot_model::none,
-    .attenuate_ambient = true, .two_sided = facing::none, .view = view_model::perspective,
+    .attenuate_ambient = true, .two_sided = facing::none, .view = view_model::eye_at_origin,
     .emission = false, .alpha = false, .mode = evaluation::exact};
 
-/// The same feature set evaluated in another mode (e.g. with_mode(seed000_classic, stable)).
+/// Older names, after the source documents (docs/models.md).
+inline constexpr features seed000_classic = classic_phong;
+inline constexpr features seed001_raytracer = blinn_phong_per_light_ambient;
+inline constexpr features seed003_ads = glsl_ads;
+inline constexpr features seed003_diffuse = diffuse_only;
+
+/// The same feature set evaluated in another mode (e.g. with_mode(classic_phong, evaluation::stable)).
 PHONG_HD constexpr features with_mode(features f, evaluation mode)
 {
     f.mode = mode;

@@ -9,7 +9,7 @@ namespace phong {
 
 /// One light source, in the coordinates the surface is shaded in (eye coordinates for seeds 000
 /// and 003, world coordinates for seed 001's ray tracer).
-/// Seed 000's single strength L_i is diffuse = specular = L_i (use light::seed000); seed 001's
+/// Seed 000's single strength L_i is diffuse = specular = L_i (use light::with_strength); seed 001's
 /// lightamb / lightdiff / lightspec and seed 003's La / Ld / Ls map one to one.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct light {
@@ -20,9 +20,10 @@ struct light {
     falloff<T> attenuation{};         ///< read when features::attenuation is not none (positional lights only)
     spot_cone<T, Q> spot{};           ///< read when features::spot is not none
 
-    /// Seed 000's light: homogeneous position and one strength L_i for diffuse and specular.
-    PHONG_HD static constexpr light seed000(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
-                                            falloff<T> attenuation = {})
+    /// A light with one strength for diffuse and specular and no ambient term (source document
+    /// 000's L_i): homogeneous position (w = 1 positional, w = 0 directional), strength, falloff.
+    PHONG_HD static constexpr light with_strength(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
+                                                  falloff<T> attenuation = {})
     {
         light l;
         l.position = position;
@@ -31,6 +32,12 @@ struct light {
         l.specular = strength;
         l.attenuation = attenuation;
         return l;
+    }
+    /// The older name of with_strength (after source document 000).
+    PHONG_HD static constexpr light seed000(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
+                                            falloff<T> attenuation = {})
+    {
+        return with_strength(position, strength, attenuation);
     }
 };
 

@@ -17,9 +17,12 @@
 #include "material.hpp"
 #include "normal.hpp"
 #include "view.hpp"
+#include "visibility.hpp"
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <ranges>
 #include <type_traits>
 #include <utility>
 
@@ -29,6 +32,23 @@ namespace phong {
 template <features F, class T, glm::qualifier Q = glm::defaultp>
 using color = std::conditional_t<F.alpha, glm::vec<4, T, Q>, glm::vec<3, T, Q>>;
 
+/// The model's terms at one point, each an rgb (shade_terms<F>). Their sum in this order,
+///   emission + ambient + diffuse + specular,
+/// is shade<F>'s colour bit for bit (terms F leaves out are 0). emission is the material's
+/// emission (features::emission), ambient ka (La + sum_i f_i La_i), diffuse kd sum_i f_i Ld_i
+/// max(n.l_i, 0), specular ks sum_i f_i Ls_i s_i; alpha the material's alpha. For a point with
+/// NaN or inf input every term is NaN.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct shading_terms {
+    glm::vec<3, T, Q> emission;
+    glm::vec<3, T, Q> ambient;
+    glm::vec<3, T, Q> diffuse;
+    glm::vec<3, T, Q> specular;
+    T alpha;
+    /// emission + ambient + diffuse + specular, in that order.
+    PHONG_HD constexpr glm::vec<3, T, Q> sum() const { return emission + ambient + diffuse + specular; }
+};
+
 namespace detail {
 
 /// The per-point frame of F's evaluation route.
@@ -36,43 +56,67 @@ template <features F, class T, glm::qualifier Q>
 using frame_t = std::conditional_t<F.mode == evaluation::stable, stable::surface_frame<T, Q>, exact::surface_frame<T, Q>>;
 
 /// The point's frame (unit normal, view vector, whether both exist, poison), by F's route.
+/// given_view: the view vector for view_model::given (not read otherwise).
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
-                                            const environment<T, Q>& env, mask_t<T> front_facing)
+                                            const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
+                                            mask_t<T> front_facing)
 {
-    if constexpr (F.mode == evaluation::stable) return stable::prepare<F>(position, normal, env, front_facing);
-    else return exact::prepare<F>(position, normal, env, front_facing);
+    if constexpr (F.mode == evaluation::stable) return stable::prepare<F>(position, normal, given_view, env, front_facing);
+    else return exact::prepare<F>(position, normal, given_view, env, front_facing);
 }
 
-/// One light's terms added to the sums, by F's route (U: the light's scalar type).
-template <features F, class T, glm::qualifier Q, class U>
-PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, T m)
+/// One light's terms added to the sums, by F's route (U: the light's scalar type; visibility:
+/// unweighted, or a weight that multiplies f).
+template <features F, class T, glm::qualifier Q, class U, class W = unweighted>
+PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, T m,
+                                  W visibility = {})
 {
-    if constexpr (F.mode == evaluation::stable) stable::add_light<F>(sums, s, L, m);
-    else exact::add_light<F>(sums, s, L, m);
+    if constexpr (F.mode == evaluation::stable) stable::add_light<F>(sums, s, L, m, visibility);
+    else exact::add_light<F>(sums, s, L, m, visibility);
 }
 
-/// The colour from the per-light sums: emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i
-/// max(n.l_i, 0) + ks sum_i f_i Ls_i s_i, plus the point's poison in every channel; alpha appended.
+/// The model's terms at the point, from the per-light sums (poison: the NaN policy's 0 or NaN).
+template <features F, class T, glm::qualifier Q, class Frame>
+PHONG_HD constexpr shading_terms<T, Q> terms_of(const light_sums<T, Q>& sums, const Frame& s, const material<T, Q>& mat,
+                                                const environment<T, Q>& env)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    shading_terms<T, Q> t{vec3(s.poison), vec3(T(0)), vec3(T(0)), vec3(T(0)), mat.alpha + s.poison};
+    if constexpr (F.emission) t.emission += mat.emission;
+    if constexpr (F.scene_ambient && F.light_ambient) t.ambient = mat.ka * (env.ambient + sums.ambient);
+    else if constexpr (F.scene_ambient) t.ambient = mat.ka * env.ambient;
+    else if constexpr (F.light_ambient) t.ambient = mat.ka * sums.ambient;
+    if constexpr (F.diffuse) t.diffuse = mat.kd * sums.diffuse;
+    if constexpr (F.specular != specular_model::none) t.specular = mat.ks * sums.specular;
+    return t;
+}
+
+/// The colour: emission + ambient + diffuse + specular, summed in that order (the terms F leaves
+/// out are not added), alpha appended.
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const frame_t<F, T, Q>& s,
-                                         const material<T, Q>& mat, const environment<T, Q>& env)
+PHONG_HD constexpr color<F, T, Q> total_of(const shading_terms<T, Q>& t)
 {
-    glm::vec<3, T, Q> c(s.poison);
-    if constexpr (F.emission) c += mat.emission;
-    if constexpr (F.scene_ambient && F.light_ambient) c += mat.ka * (env.ambient + sums.ambient);
-    else if constexpr (F.scene_ambient) c += mat.ka * env.ambient;
-    else if constexpr (F.light_ambient) c += mat.ka * sums.ambient;
-    if constexpr (F.diffuse) c += mat.kd * sums.diffuse;
-    if constexpr (F.specular != specular_model::none) c += mat.ks * sums.specular;
-    if constexpr (F.alpha) return glm::vec<4, T, Q>(c, mat.alpha + s.poison);
+    glm::vec<3, T, Q> c = t.emission;
+    if constexpr (F.scene_ambient || F.light_ambient) c += t.ambient;
+    if constexpr (F.diffuse) c += t.diffuse;
+    if constexpr (F.specular != specular_model::none) c += t.specular;
+    if constexpr (F.alpha) return glm::vec<4, T, Q>(c, t.alpha);
     else return c;
 }
 
-/// validate() every parameter: a compile error in constant evaluation, an assertion in debug
-/// builds, nothing at all under NDEBUG (the checks are not even evaluated).
-template <class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const Lights& lights)
+/// The colour from the per-light sums (the batch path's last step).
+template <features F, class T, glm::qualifier Q, class Frame>
+PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const Frame& s, const material<T, Q>& mat,
+                                         const environment<T, Q>& env)
+{
+    return total_of<F>(terms_of<F>(sums, s, mat, env));
+}
+
+/// validate(material): a compile error in constant evaluation, an assertion in debug builds,
+/// nothing at all under NDEBUG (not even evaluated).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr void check_material([[maybe_unused]] const material<T, Q>& mat)
 {
     if constexpr (std::is_floating_point_v<T>) {
 #if defined(NDEBUG)
@@ -80,10 +124,6 @@ PHONG_HD constexpr void check_parameters([[maybe_unused]] const material<T, Q>& 
 #endif
         const validation vm = phong::validate(mat);
         require(static_cast<bool>(vm), vm.message());
-        for (const light<T, Q>& L : lights) {
-            const validation vl = phong::validate(L);
-            require(static_cast<bool>(vl), vl.message());
-        }
     }
 }
 
@@ -113,32 +153,114 @@ PHONG_HD constexpr environment<W, Q> widen(const environment<T, Q>& e)
     return {glm::vec<3, W, Q>(e.ambient), glm::vec<4, W, Q>(e.eye)};
 }
 
-/// prepare, every light, finish: the whole model at one point in arithmetic type T (the lights'
-/// scalar type may be narrower: the wider path).
-template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr color<F, T, Q> evaluate(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
-                                           const material<T, Q>& mat, const Lights& lights,
-                                           const environment<T, Q>& env, bool front_facing)
+/// Checks one light against validate(): a compile error in constant evaluation, an assertion in
+/// debug builds, nothing under NDEBUG (not even evaluated). Done as the light is shaded, so a
+/// single-pass range of lights is read once.
+template <class U, glm::qualifier Q>
+PHONG_HD constexpr void check_light([[maybe_unused]] const light<U, Q>& L)
 {
-    const frame_t<F, T, Q> s = prepare<F>(position, normal, env, front_facing);
-    light_sums<T, Q> sums{};
-    if constexpr (is_std_array<Lights>::value) {
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (detail::add_light<F>(sums, s, lights[I], mat.shininess), ...);
-        }(std::make_index_sequence<std::tuple_size_v<Lights>>{});
-    } else {
-        if constexpr (std::is_floating_point_v<T>) {
-            // The same loop twice, so each copy is compiled knowing whether the point has a
-            // normal and a view vector (g++ does not unswitch it by itself).
-            if (s.defined) for (const auto& L : lights) detail::add_light<F>(sums, s, L, mat.shininess);
-            else for (const auto& L : lights) detail::add_light<F>(sums, s, L, mat.shininess);
-        } else {
-            for (const auto& L : lights) detail::add_light<F>(sums, s, L, mat.shininess);
-        }
+    if constexpr (std::is_floating_point_v<U>) {
+#if defined(NDEBUG)
+        if (!std::is_constant_evaluated()) return;
+#endif
+        const validation v = phong::validate(L);
+        require(static_cast<bool>(v), v.message());
     }
-    return finish<F>(sums, s, mat, env);
 }
 
+/// features::unit_inputs' precondition: |v| = 1 within 1e-3 and finite (debug builds, constant evaluation).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>& v, [[maybe_unused]] const char* message)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+#if defined(NDEBUG)
+        if (!std::is_constant_evaluated()) return;
+#endif
+        const T vv = phong::dot(v, v);
+        require(vv >= T(0.998) && vv <= T(1.002), message);
+    }
+}
+
+template <class R> struct is_masked : std::false_type {};
+template <class R> struct is_masked<masked_lights<R>> : std::true_type {};
+template <class R> struct is_weighted : std::false_type {};
+template <class R, class W> struct is_weighted<weighted_lights<R, W>> : std::true_type {};
+
+/// Every light's terms added to the sums: a std::array unrolled at compile time, a masked or
+/// weighted list (visibility.hpp), or any input range of lights (views included).
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr void add_lights(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
+{
+    using R = std::remove_cvref_t<Lights>;
+    if constexpr (is_std_array<R>::value) {
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((check_light(lights[I]), detail::add_light<F>(sums, s, lights[I], m, unweighted{})), ...);
+        }(std::make_index_sequence<std::tuple_size_v<R>>{});
+    } else if constexpr (is_masked<R>::value) {
+        std::uint64_t bits = lights.mask;
+        for (auto&& L : lights.lights) {
+            check_light(L);
+            if (bits & 1u) detail::add_light<F>(sums, s, L, m, unweighted{});
+            bits >>= 1;
+        }
+    } else if constexpr (is_weighted<R>::value) {
+        std::size_t i = 0;
+        for (auto&& L : lights.lights) {
+            PHONG_ASSERT(i < lights.weights.size(), "phong::weighted: fewer weights than lights");
+            check_light(L);
+            const auto weight = lights.weights[i++];
+            if (weight != 0) detail::add_light<F>(sums, s, L, m, weight); // 0: the light is not seen
+        }
+    } else if constexpr (std::is_floating_point_v<T>) {
+        // The same loop twice, so each copy is compiled knowing whether the point has a normal
+        // and a view vector (g++ does not unswitch it by itself).
+        if (s.defined) {
+            for (auto&& L : lights) check_light(L), detail::add_light<F>(sums, s, L, m, unweighted{});
+        } else {
+            for (auto&& L : lights) check_light(L), detail::add_light<F>(sums, s, L, m, unweighted{});
+        }
+    } else {
+        for (auto&& L : lights) detail::add_light<F>(sums, s, L, m, unweighted{});
+    }
+}
+
+/// prepare, every light, finish: the terms of the model at one point in arithmetic type T (the
+/// lights' scalar type may be narrower: the wider route).
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                                const glm::vec<3, T, Q>& given_view, const material<T, Q>& mat,
+                                                Lights&& lights, const environment<T, Q>& env, bool front_facing)
+{
+    const frame_t<F, T, Q> s = detail::prepare<F>(position, normal, given_view, env, front_facing);
+    light_sums<T, Q> sums{};
+    add_lights<F>(sums, s, static_cast<Lights&&>(lights), mat.shininess);
+    return terms_of<F>(sums, s, mat, env);
+}
+
+/// The arithmetic type of shade<F> on T: double for float's stable mode (the wider route), else T.
+template <features F, class T>
+using arithmetic_t = std::conditional_t<widened<F, T>, double, T>;
+
+/// shade<F>'s body for either view argument: parameters checked, then the route (float's stable
+/// mode: the exact route in double). The terms come in the arithmetic type.
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                                                 const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
+                                                                 Lights&& lights, const environment<T, Q>& env, bool front_facing)
+{
+    check_material(mat);
+    if constexpr (F.unit_inputs) {
+        check_unit(normal, "shade: normal must be unit length (features::unit_inputs)");
+        if constexpr (F.view == view_model::given) check_unit(view, "shade: view vector must be unit length (features::unit_inputs)");
+    }
+    if constexpr (widened<F, T>) {
+        using W = double;
+        return evaluate<exact_of<F>>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view),
+                                     widen<W>(mat), static_cast<Lights&&>(lights), widen<W>(env), front_facing);
+    } else {
+        return evaluate<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing);
+    }
+}
 
 } // namespace detail
 
@@ -149,8 +271,15 @@ PHONG_HD constexpr color<F, T, Q> evaluate(const glm::vec<3, T, Q>& position, co
 ///   f_i = attenuation(d_i) * spot_i,   l_i = normalize(L_i.xyz - L_i.w Q),
 /// with rgba = (I, alpha) when F.alpha. Each term is compiled only when F asks for it.
 ///
-/// position, normal: Q and its normal (any length; normalized here) in the lights' coordinates.
-/// lights: a std::array<light, N> (unrolled at compile time), std::span, std::vector, ...
+/// position, normal: Q and its normal (any length, normalized here; unit and used as given with
+/// features::unit_inputs) in the lights' coordinates.
+/// lights: light<T> (or light<U>) values from any input range: a std::array<light, N> (unrolled
+/// at compile time), std::span, std::vector, a view (std::views::filter of the lights a shadow
+/// test lets through; std::views::transform from the renderer's own light type: nothing is
+/// copied per point once inlined), or masked(lights, bits) / weighted(lights, weights)
+/// (visibility.hpp). Each light is read once.
+/// The viewer: per features::view (eye_at_origin: v = normalize(-Q); fixed_direction, eye_point:
+/// from env.eye). For view_model::given, use the overload below that takes v.
 /// front_facing: read only for facing::flag.
 ///
 /// Pre: validate(mat) and validate(L) for every light (checked: a compile error in constant
@@ -161,7 +290,8 @@ PHONG_HD constexpr color<F, T, Q> evaluate(const glm::vec<3, T, Q>& position, co
 ///  * Blinn with l = -v: n.h taken as 0 (0 for m > 0, 1 for m = 0);
 ///  * m = 0: the specular base^0 = 1 wherever the specular term is on (pow(0, 0) = 1);
 ///  * c0 = 0 and d -> 0: f capped at 1 / attenuation_denominator_min<T>;
-///  * NaN or inf in position, normal or (eye_point) eye: every channel is NaN.
+///  * NaN or inf in position, normal or the view input read (eye_point: env.eye; given: v):
+///    every channel is NaN (not kept when features::unit_inputs' precondition is broken).
 /// Accuracy: per F.mode and input class, the constants phong::accuracy::bounds<M, T, P> (tested in
 /// tests/accuracy.test.cpp, table in README.md). exact: a vector whose squared length is not a
 /// normal number (|L - Q|, |n| or |Q| below ~1.1e-19 or above ~1.8e19 in float, 1.5e-154 and
@@ -173,17 +303,66 @@ PHONG_HD constexpr color<F, T, Q> evaluate(const glm::vec<3, T, Q>& position, co
 /// chords carried twofold (detail/twofold.hpp), within a few ulp on the same classes.
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
-                                        const material<T, Q>& mat, const Lights& lights,
+                                        const material<T, Q>& mat, Lights&& lights,
                                         const environment<T, Q>& env = {}, bool front_facing = true)
 {
-    detail::check_parameters(mat, lights);
-    if constexpr (detail::widened<F, T>) {
-        using W = double;
-        return color<F, T, Q>(detail::evaluate<detail::exact_of<F>>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal),
-                                                                     detail::widen<W>(mat), lights, detail::widen<W>(env), front_facing));
-    } else {
-        return detail::evaluate<F>(position, normal, mat, lights, env, front_facing);
-    }
+    static_assert(F.view != view_model::given, "view_model::given: pass the view vector, shade<F>(position, normal, view, ...)");
+    const glm::vec<3, T, Q> unused(T(0));
+    return color<F, T, Q>(detail::total_of<F>(detail::shade_at<F>(position, normal, unused, mat, static_cast<Lights&&>(lights), env, front_facing)));
+}
+
+/// shade<F> with the view vector given per call (features::view = view_model::given): view is
+/// the vector from the point toward the viewer, any length (unit with features::unit_inputs).
+/// A ray tracer passes -ray.dir: right for primary, reflected and refracted rays alike (an eye
+/// point is right for primary rays only). Everything else as above; a NaN or inf view vector
+/// makes every channel NaN, a zero one gives no diffuse or specular term.
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                        const glm::vec<3, T, Q>& view, const material<T, Q>& mat, Lights&& lights,
+                                        const environment<T, Q>& env = {}, bool front_facing = true)
+{
+    static_assert(F.view == view_model::given, "a view vector is read only with features::view = view_model::given");
+    return color<F, T, Q>(detail::total_of<F>(detail::shade_at<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing)));
+}
+
+namespace detail {
+/// The public terms: the point's poison in every one, so that a NaN point has every term NaN.
+template <class A, glm::qualifier Q>
+PHONG_HD constexpr shading_terms<A, Q> poisoned(shading_terms<A, Q> t)
+{
+    const A poison = t.alpha - t.alpha; // 0, or NaN for a NaN point (alpha carries the poison)
+    t.ambient += poison;
+    t.diffuse += poison;
+    t.specular += poison;
+    return t;
+}
+} // namespace detail
+
+/// The same model as shade<F>, with its terms returned separately (emission, ambient, diffuse,
+/// specular, alpha; see shading_terms), for renderers that weight, tone-map or store them apart.
+/// terms.sum() (emission + ambient + diffuse + specular, in that order) is shade<F>'s colour bit
+/// for bit. The terms are in shade<F>'s arithmetic type: double for float's stable mode (the
+/// wider route, whose colour is the double sum rounded once: float(terms.sum()) is shade<F>'s
+/// colour), T otherwise. Arguments, preconditions and edges as shade<F>.
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                                                            const material<T, Q>& mat, Lights&& lights,
+                                                                            const environment<T, Q>& env = {}, bool front_facing = true)
+{
+    static_assert(F.view != view_model::given, "view_model::given: pass the view vector, shade_terms<F>(position, normal, view, ...)");
+    const glm::vec<3, T, Q> unused(T(0));
+    return detail::poisoned(detail::shade_at<F>(position, normal, unused, mat, static_cast<Lights&&>(lights), env, front_facing));
+}
+
+/// shade_terms<F> with the view vector given per call (view_model::given).
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                                                            const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
+                                                                            Lights&& lights, const environment<T, Q>& env = {},
+                                                                            bool front_facing = true)
+{
+    static_assert(F.view == view_model::given, "a view vector is read only with features::view = view_model::given");
+    return detail::poisoned(detail::shade_at<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing));
 }
 
 /// Seed 003's per-vertex pipeline (phong.vert, diffuse.vert): object-space position and normal,
@@ -194,12 +373,13 @@ PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_HD constexpr color<F, T, Q> shade_vertex(const glm::vec<3, T, Q>& vertex_position, const glm::vec<3, T, Q>& vertex_normal,
                                                const glm::mat<4, 4, T, Q>& model_view, const glm::mat<3, 3, T, Q>& normal_mat,
-                                               const material<T, Q>& mat, const Lights& lights,
+                                               const material<T, Q>& mat, Lights&& lights,
                                                const environment<T, Q>& env = {})
 {
     const glm::vec<4, T, Q> eye = model_view[0] * vertex_position.x + model_view[1] * vertex_position.y +
                                   model_view[2] * vertex_position.z + model_view[3];
-    return shade<F>(glm::vec<3, T, Q>(eye.x, eye.y, eye.z), phong::transform_normal(normal_mat, vertex_normal), mat, lights, env);
+    return shade<F>(glm::vec<3, T, Q>(eye.x, eye.y, eye.z), phong::transform_normal(normal_mat, vertex_normal), mat,
+                    static_cast<Lights&&>(lights), env);
 }
 
 } // namespace phong

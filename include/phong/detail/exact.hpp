@@ -57,18 +57,22 @@ PHONG_HD constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T sig
     }
 }
 
-/// The view vector v at Q: normalize(-Q) (perspective), the environment's direction
-/// (orthographic), or normalize(E.xyz - E.w Q) (eye_point). Its square tells whether the inputs
-/// may be non-finite (orthographic: |Q|^2 does).
+/// The view vector v at Q: normalize(-Q) (eye_at_origin), the given vector normalized (given; as
+/// is with unit_inputs), the environment's direction (fixed_direction), or normalize(E.xyz - E.w Q)
+/// (eye_point). Its square tells whether the inputs may be non-finite (fixed_direction: |Q|^2 does).
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& position, const environment<T, Q>& env)
+PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& given_view,
+                                                 const environment<T, Q>& env)
 {
     using vec3 = glm::vec<3, T, Q>;
     const vec3 eye(env.eye.x, env.eye.y, env.eye.z);
-    if constexpr (F.view == view_model::orthographic) {
+    if constexpr (F.view == view_model::given) {
+        if constexpr (F.unit_inputs) return {given_view, T(1), mask_t<T>(true)}; // unit by precondition
+        else return view_unit<F>(given_view, T(1));
+    } else if constexpr (F.view == view_model::fixed_direction) {
         const vec3 v = phong::normalize(eye);
         return {v, phong::dot(position, position), phong::dot(v, v) > T(0)};
-    } else if constexpr (F.view == view_model::perspective) {
+    } else if constexpr (F.view == view_model::eye_at_origin) {
         return view_unit<F>(position, T(-1)); // -Q, as Q times -1/|Q|
     } else {
         return view_unit<F>(detail::homogeneous_difference(eye, env.eye.w, position), T(1));
@@ -79,14 +83,15 @@ PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& positi
 /// mean finite inputs and poison 0, so the exact test runs only in the rare other case.
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
-                                  const environment<T, Q>& env, T normal_square, T view_square)
+                                  const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env, T normal_square,
+                                  T view_square)
 {
     if constexpr (std::is_floating_point_v<T>) {
         if (!(normal_square <= largest<T>() && view_square <= largest<T>())) [[unlikely]]
-            return poison_of<F>(position, normal, env);
+            return poison_of<F>(position, normal, given_view, env);
         return T(0);
     } else {
-        return poison_of<F>(position, normal, env);
+        return poison_of<F>(position, normal, given_view, env);
     }
 }
 
@@ -94,12 +99,14 @@ PHONG_HD constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::
 /// whether both exist, the poison, and n.v.
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
-                                               const environment<T, Q>& env, mask_t<T> front_facing)
+                                               const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
+                                               mask_t<T> front_facing)
 {
     using vec3 = glm::vec<3, T, Q>;
-    const unit_vector<T, Q> n = unit_of(normal);
-    const unit_vector<T, Q> v = view_vector<F>(position, env);
-    const T poison = point_poison<F>(position, normal, env, n.square, v.square);
+    unit_vector<T, Q> n{normal, T(1), mask_t<T>(true)}; // unit_inputs: unit by precondition
+    if constexpr (!F.unit_inputs) n = unit_of(normal);
+    const unit_vector<T, Q> v = view_vector<F>(position, given_view, env);
+    const T poison = point_poison<F>(position, normal, given_view, env, n.square, v.square);
     vec3 unit_normal = n.unit;
     if constexpr (F.two_sided != facing::none) unit_normal = unit_normal * facing_sign<F>(unit_normal, v.unit, front_facing);
     else (void)front_facing;
@@ -143,11 +150,11 @@ PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& 
 }
 
 /// One light's terms added to the sums. U is the light's scalar type (U = T, or float lights in
-/// double arithmetic: the stable mode's wider route).
+/// double arithmetic: the stable mode's wider route); visibility: unweighted or a weight in [0, 1].
 /// Dot products are taken with d = L.xyz - w Q itself and scaled by 1/|d| only for lit pairs:
 /// the signs that decide the branches do not wait for a square root and a division.
-template <features F, class T, glm::qualifier Q, class U>
-PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m)
+template <features F, class T, glm::qualifier Q, class U, class W>
+PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m, W visibility)
 {
     using vec3 = glm::vec<3, T, Q>;
     const T w = light_w<F, T>(L);
@@ -164,7 +171,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
     }
     T distance = T(0); // only attenuation reads it
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = phong::sqrt(dd);
-    const T f = light_factor<F>(L, distance, w, l);
+    const T f = light_factor<F>(L, distance, w, l, visibility);
     add_ambient<F>(sums, L, f);
 
     const mask_t<T> on = lit<F>(s, dd, nd);

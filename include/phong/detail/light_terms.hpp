@@ -40,15 +40,21 @@ PHONG_HD constexpr T light_w(const light<U, Q>& L)
     else return T(L.position.w);
 }
 
-/// x * 0 is 0 for finite x and NaN for NaN or inf: the NaN policy's poison of a point.
+/// x * 0 is 0 for finite x and NaN for NaN or inf: the NaN policy's poison of a point (its
+/// position, normal, and the view input F reads: the given view vector or the eye point).
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr T poison_of(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal, const environment<T, Q>& env)
+PHONG_HD constexpr T poison_of(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                               [[maybe_unused]] const glm::vec<3, T, Q>& given_view, [[maybe_unused]] const environment<T, Q>& env)
 {
     const glm::vec<3, T, Q> zero(T(0));
     T poison = phong::dot(position, zero) + phong::dot(normal, zero);
     if constexpr (F.view == view_model::eye_point) poison += phong::dot(glm::vec<4, T, Q>(env.eye), glm::vec<4, T, Q>(T(0)));
+    if constexpr (F.view == view_model::given) poison += phong::dot(given_view, zero);
     return poison;
 }
+
+/// The weight of a light that is fully visible: no multiplication at all.
+struct unweighted {};
 
 /// Two-sided lighting: the sign that faces the normal n toward the viewer (or the caller's flag).
 template <features F, class T, glm::qualifier Q>
@@ -58,14 +64,15 @@ PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T
     else return phong::select(front_facing, T(1), T(-1));
 }
 
-/// f_i(Q) = attenuation(distance) * spot(l): the light's weight at the point.
+/// f_i(Q) = attenuation(distance) * spot(l) * visibility: the light's weight at the point.
 /// distance = |L.xyz - w Q| (divided by w here for light_kind::any), read only with attenuation;
 /// l = the unit light vector (0 if none), read only with a spot. Directional lights (w = 0) are
 /// not attenuated. U is the light's own scalar type: float lights shaded in double keep float's
 /// cap on f (attenuation.hpp), so a light at Q gives the same large finite value as in float.
-template <features F, class T, glm::qualifier Q, class U>
+/// visibility: unweighted, or the caller's weight in [0, 1] (phong::weighted: soft shadows).
+template <features F, class T, glm::qualifier Q, class U, class W>
 PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
-                                  [[maybe_unused]] const glm::vec<3, T, Q>& l)
+                                  [[maybe_unused]] const glm::vec<3, T, Q>& l, [[maybe_unused]] W visibility)
 {
     T f = T(1);
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) {
@@ -81,6 +88,7 @@ PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T dista
     }
     if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, in_type<T>(L.spot.direction), T(L.spot.exponent), T(L.spot.cos_cutoff));
     if constexpr (F.spot == spot_model::smooth) f = f * phong::spot_smooth(l, in_type<T>(L.spot.direction), T(L.spot.cos_inner), T(L.spot.cos_outer));
+    if constexpr (!std::is_same_v<W, unweighted>) f = f * T(visibility);
     return f;
 }
 

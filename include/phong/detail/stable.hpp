@@ -62,17 +62,21 @@ PHONG_HD constexpr twofold_vector<T, Q> difference_twofold(const glm::vec<3, T, 
     return d;
 }
 
-/// The per-point frame: n and v twofold from the exact normal and the exact E.xyz - E.w Q.
+/// The per-point frame: n and v twofold from the exact normal and the exact view vector (-Q, the
+/// given v, E.xyz - E.w Q). features::unit_inputs does not skip this: the twofold unit vectors are
+/// what the stable mode's accuracy rests on.
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
-                                               const environment<T, Q>& env, mask_t<T> front_facing)
+                                               const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
+                                               mask_t<T> front_facing)
 {
     using vec3 = glm::vec<3, T, Q>;
     surface_frame<T, Q> s{};
     s.position = position;
     const vec3 eye(env.eye.x, env.eye.y, env.eye.z);
-    twofold_vector<T, Q> e{eye, vec3(T(0))};                                             // orthographic
-    if constexpr (F.view == view_model::perspective) e.hi = -position;
+    twofold_vector<T, Q> e{eye, vec3(T(0))};                                             // fixed_direction
+    if constexpr (F.view == view_model::eye_at_origin) e.hi = -position;
+    if constexpr (F.view == view_model::given) e.hi = given_view;
     if constexpr (F.view == view_model::eye_point) e = difference_twofold<light_kind::any>(eye, env.eye.w, position);
     const unit_twofold<T, Q> uv = unit_of(e.hi, e.lo);
     s.view = uv.hi;
@@ -82,7 +86,7 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     s.normal_lo = un.lo;
     s.normal_scaled = phong::rescaled(normal);
     s.inv_normal_length = un.inv_scaled;
-    s.poison = poison_of<F>(position, normal, env);
+    s.poison = poison_of<F>(position, normal, given_view, env);
     s.defined = math_traits<T>::both(phong::dot(s.normal, s.normal) > T(0), phong::dot(s.view, s.view) > T(0));
     if constexpr (F.two_sided != facing::none) {
         const T sign = facing_sign<F>(s.normal, s.view, front_facing);
@@ -151,8 +155,8 @@ PHONG_HD constexpr T specular_factor(const surface_frame<T, Q>& s, const light_u
 }
 
 /// One light's terms added to the sums. A SIMD batch takes the twofold depth when any lane needs it.
-template <features F, class T, glm::qualifier Q, class U>
-PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m)
+template <features F, class T, glm::qualifier Q, class U, class W>
+PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m, W visibility)
 {
     using vec3 = glm::vec<3, T, Q>;
     const T w = light_w<F, T>(L);
@@ -170,7 +174,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
             u = light_twofold(s, d);
         }
     }
-    const T f = light_factor<F>(L, u.length, w, u.l);
+    const T f = light_factor<F>(L, u.length, w, u.l, visibility);
     add_ambient<F>(sums, L, f);
 
     mask_t<T> on = math_traits<T>::both(s.defined, u.inv > T(0));
