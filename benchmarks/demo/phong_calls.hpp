@@ -2,25 +2,15 @@
 // small functions, so that they can be switched to new API options in one place. The renderers
 // themselves only see glm types, their own light and material structs, and these functions.
 //
-// Today's API, as a user calls it:
-//  * shade<F> takes the lights as a range: a ray tracer's per-hit shadow mask becomes a copy of
-//    the visible lights (shade_phong_scalar);
-//  * the view vector comes from env.eye: a ray tracer's v = -ray.dir is passed as the direction
-//    eye = (v, 0) with view_model::eye_point (not perspective: its eye at the origin is wrong for
-//    secondary rays), and shade<F> normalizes it again;
+// How the ray tracer calls phong (the renderer-facing API):
+//  * shade<F> with view_model::given takes v = -ray.dir itself, right for primary, reflected and
+//    refracted rays; features::unit_inputs says that n and v are unit already (no normalization);
+//  * the per-hit shadow mask is passed with the whole light list, masked(lights, visible): no
+//    per-hit copy of the visible lights;
 //  * shade_batch<F> takes one light list and one environment per call: primary hits are grouped
 //    by shadow mask, packed into SoA arrays, and the eye is the camera position (w = 1), so
 //    v = normalize(E - P), equal to -ray.dir up to rounding (shade_phong_batch).
-//
-// Where the planned options go (nothing else in the renderers needs to change):
-//  * unit-length normal and view promised (features flag): whitted_exact / whitted_stable (the
-//    tracer's n and v = -ray.dir are unit); raster_* only for shade_vertex (the per-pixel normal is
-//    interpolated, not unit);
-//  * view vector per call: shade_phong_scalar passes v itself instead of env.eye = (v, 0);
-//    shade_phong_batch takes each hit's v (SoA) instead of the camera position;
-//  * per-call light mask / any input range of lights: shade_phong_scalar passes `visible` and the
-//    whole light list (no subset copy); shade_phong_batch passes per-point masks, no grouping;
-//  * terms returned separately: not needed by these renderers.
+// The rasterizer's per-pixel normal is interpolated, not unit: it keeps the normalizing path.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -41,14 +31,22 @@ namespace phong_calls {
 // ---- Whitted ray tracer ---------------------------------------------------------------------
 
 /// The ray tracer's lighting: ka La + sum over visible lights of L (kd max(n.l, 0) + ks max(r.v, 0)^m),
-/// r = reflect(-l, n), positional lights, no gate, no attenuation, v from env.eye.
-inline constexpr phong::features whitted_exact{
-    .scene_ambient = true, .light_ambient = false, .diffuse = true,
-    .specular = phong::specular_model::phong, .specular_gate = false, .lights = phong::light_kind::positional,
-    .attenuation = phong::attenuation_model::none, .spot = phong::spot_model::none,
-    .attenuate_ambient = true, .two_sided = phong::facing::none, .view = phong::view_model::eye_point,
-    .emission = false, .alpha = false, .mode = phong::evaluation::exact};
+/// r = reflect(-l, n), positional lights, no gate (as the inline code), no attenuation, v given
+/// per call and, with n, unit already: presets::raytracer_phong without its gate, unit inputs.
+inline constexpr phong::features whitted_exact = [] {
+    phong::features f = phong::presets::raytracer_phong;
+    f.specular_gate = false;
+    f.unit_inputs = true;
+    return f;
+}();
 inline constexpr phong::features whitted_stable = phong::presets::with_mode(whitted_exact, phong::evaluation::stable);
+/// The batch path (primary hits): the same model with the eye at the camera position.
+inline constexpr phong::features whitted_batch = [] {
+    phong::features f = whitted_exact;
+    f.view = phong::view_model::eye_point;
+    f.unit_inputs = false;
+    return f;
+}();
 
 inline constexpr std::size_t max_lights = 4;
 
@@ -68,21 +66,15 @@ inline phong::material<float> make_material(const glm::vec3& ka, const glm::vec3
     return {.ka = ka, .kd = kd, .ks = ks, .emission = glm::vec3(0.0f), .shininess = shininess, .alpha = 1.0f};
 }
 
-/// One hit, scalar shade<F>: the lights of `visible` (bit i: lights[i] not in shadow) copied out
-/// (all of them: the span itself), v = -ray.dir passed as the eye direction (w = 0).
+/// One hit, scalar shade<F>: v = -ray.dir given, the lights seen from the hit by the bits of
+/// `visible` (bit i: lights[i] not in shadow), nothing copied per hit.
 template <phong::features F>
 inline glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, const glm::vec3& v, unsigned visible,
                                     std::span<const phong::light<float>> lights, const phong::material<float>& mat,
                                     const glm::vec3& ambient)
 {
-    const phong::environment<float> env{.ambient = ambient, .eye = glm::vec4(v, 0.0f)};
-    const unsigned all = (1u << lights.size()) - 1u;
-    if (visible == all) return phong::shade<F>(P, n, mat, lights, env);
-    std::array<phong::light<float>, max_lights> subset;
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < lights.size(); ++i)
-        if (visible & (1u << i)) subset[k++] = lights[i];
-    return phong::shade<F>(P, n, mat, std::span<const phong::light<float>>(subset.data(), k), env);
+    const phong::environment<float> env{.ambient = ambient};
+    return phong::shade<F>(P, n, v, mat, phong::masked(lights, visible), env);
 }
 
 /// Scratch arrays of shade_phong_batch, kept between calls.

@@ -259,7 +259,7 @@ struct primary_arrays {
 void shade_all_batch(const primary_arrays& a, const scene& sc, const phong_scene& ps, std::vector<vec3>& out,
                      phong_calls::batch_scratch& scratch)
 {
-    phong_calls::shade_phong_batch<phong_calls::whitted_exact>(a.P, a.n, a.visible, a.material, ps.materials, ps.lights, sc.ambient,
+    phong_calls::shade_phong_batch<phong_calls::whitted_batch>(a.P, a.n, a.visible, a.material, ps.materials, ps.lights, sc.ambient,
                                                                sc.eye, out, scratch);
 }
 
