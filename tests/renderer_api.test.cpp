@@ -22,6 +22,14 @@
 using namespace phong;
 using namespace phong_test;
 
+// clang++ before 16 cannot compile libstdc++'s range views (llvm/llvm-project#44178): the view
+// checks run with g++ (and newer clang); masked(), weighted() and every other check run everywhere.
+#if defined(__clang__) && __clang_major__ < 16 && defined(__GLIBCXX__)
+#  define PHONG_TEST_RANGE_VIEWS 0
+#else
+#  define PHONG_TEST_RANGE_VIEWS 1
+#endif
+
 namespace {
 
 template <class T> using vec3 = glm::vec<3, T>;
@@ -188,11 +196,11 @@ TEST_CASE_TEMPLATE("lights: a masked light equals a removed light; weights 0 and
             const auto removed = shade<F>(s.position, s.normal, v, s.mat, kept, s.env);
             CHECK(same_bits(shade<F>(s.position, s.normal, v, s.mat, masked(s.lights, mask), s.env), removed));
             CHECK(same_bits(shade<F>(s.position, s.normal, v, s.mat, weighted(s.lights, std::span<const T>(weights)), s.env), removed));
+#if PHONG_TEST_RANGE_VIEWS
             // std::views::filter over the list (the natural way to drop shadowed lights).
-            std::size_t index = 0;
             auto visible = s.lights | std::views::filter([&, start = &s.lights[0]](const light<T>& L) { return (mask >> (&L - start) & 1u) != 0; });
             CHECK(same_bits(shade<F>(s.position, s.normal, v, s.mat, visible, s.env), removed));
-            (void)index;
+#endif
             // A span and a std::array of the same lights.
             CHECK(same_bits(shade<F>(s.position, s.normal, v, s.mat, std::span<const light<T>>(s.lights), s.env),
                             shade<F>(s.position, s.normal, v, s.mat, s.lights, s.env)));
@@ -224,6 +232,7 @@ TEST_CASE_TEMPLATE("lights: a weight scales the light's whole contribution", T, 
     CHECK(worst <= 16 * double(std::numeric_limits<T>::epsilon()));
 }
 
+#if PHONG_TEST_RANGE_VIEWS
 TEST_CASE("lights: the renderer's own light type through std::views::transform, nothing else to write")
 {
     using T = float;
@@ -238,8 +247,9 @@ TEST_CASE("lights: the renderer's own light type through std::views::transform, 
     CHECK(same_bits(shade<F>(Q, n, v, mat, masked(mine | std::views::transform(as_phong), 0b10)),
                     shade<F>(Q, n, v, mat, std::span<const light<T>>(copied).subspan(1))));
 }
+#endif
 
-TEST_CASE("given view: a zero view vector gives no diffuse or specular, a NaN one NaN in every channel")
+TEST_CASE("given view: a zero view vector keeps the diffuse term and has no specular, a NaN one gives NaN in every channel")
 {
     using T = double;
     constexpr features F = presets::raytracer_phong;
@@ -249,7 +259,9 @@ TEST_CASE("given view: a zero view vector gives no diffuse or specular, a NaN on
     env.ambient = vec3<T>(0.5);
     const vec3<T> Q(0, 0, -2), n(0, 0, 1);
     const vec3<T> zero_view = shade<F>(Q, n, vec3<T>(0), mat, lights, env);
-    CHECK(zero_view == mat.ka * env.ambient); // the scene's ambient term only
+    // By hand: d = (1, 2, 5), n.l = 5/sqrt(30); ka La + kd Ld n.l, no specular term.
+    const vec3<T> expected = mat.ka * env.ambient + mat.kd * (5 / std::sqrt(30.0));
+    for (int k = 0; k < 3; ++k) CHECK(zero_view[k] == doctest::Approx(expected[k]).epsilon(1e-14));
     const vec3<T> nan_view = shade<F>(Q, n, vec3<T>(0, std::numeric_limits<T>::quiet_NaN(), 1), mat, lights, env);
     CHECK((std::isnan(nan_view.x) && std::isnan(nan_view.y) && std::isnan(nan_view.z)));
     // Any length: v and 7 v give the same colour (normalized here without unit_inputs).

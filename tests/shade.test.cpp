@@ -278,15 +278,26 @@ TEST_CASE_TEMPLATE("shade: documented edges, exact and stable", T, float, double
             CHECK(close(phong::shade<U>(Qm, n, test_material<T>(T(0)), below, env), mat.ks * below[0].specular, 4));
         });
     }
-    SUBCASE("Q at the eye: no diffuse or specular")
+    SUBCASE("Q at the eye: the diffuse term is kept (it does not need v), no specular")
     {
+        // By hand, n = (0, 0, 1), f = 1 (c0 = 1): from Q = 0 the positional light at (2, 3, 1)
+        // has n.l = 1/sqrt(14), the directional (-1, 0.5, 2) n.l = 2/sqrt(5.25); from
+        // Q = (1, -1, -4) the positional one has d = (1, 4, 5), n.l = 5/sqrt(42).
+        const vec3<T> directional = two[1].diffuse * T(2 / std::sqrt(5.25));
+        const vec3<T> at_origin = ambient_only(mat, env, two) + mat.kd * (two[0].diffuse * T(1 / std::sqrt(14.0)) + directional);
+        const vec3<T> at_Q = ambient_only(mat, env, two) + mat.kd * (two[0].diffuse * T(5 / std::sqrt(42.0)) + directional);
         both([&](auto mode) {
             constexpr features F = with(all_terms, decltype(mode)::value);
-            CHECK(close(phong::shade<F>(vec3<T>(0), n, mat, two, env), ambient_only(mat, env, two), 4));
+            CHECK(close(phong::shade<F>(vec3<T>(0), n, mat, two, env), at_origin, 8));
             constexpr features E = [] { features f = with(all_terms, decltype(mode)::value); f.view = phong::view_model::eye_point; return f; }();
             phong::environment<T> at = env;
             at.eye = vec4<T>(Q, T(1));
-            CHECK(close(phong::shade<E>(Q, n, mat, two, at), ambient_only(mat, env, two), 4));
+            CHECK(close(phong::shade<E>(Q, n, mat, two, at), at_Q, 8));
+            // Blinn (whose h = normalize(l + v) would be l with v = 0) and m = 0 (pow(0, 0) = 1
+            // where a specular term is on): still no specular term without a view vector.
+            constexpr features B = [] { features f = with(all_terms, decltype(mode)::value); f.specular = phong::specular_model::blinn; return f; }();
+            CHECK(close(phong::shade<B>(vec3<T>(0), n, mat, two, env), at_origin, 8));
+            CHECK(close(phong::shade<F>(vec3<T>(0), n, test_material<T>(T(0)), two, env), at_origin, 8));
         });
     }
     SUBCASE("every edge is finite")

@@ -7,7 +7,7 @@
 //   fc_phong_ads                  vs fc_hand_ads                   (seed 003: no attenuation, spot,
 //                                                                   two-sided, emission, alpha)
 // The hand-written kernels implement the same documented model, edge cases included (a zero
-// normal, Q at the eye, a light at Q give no diffuse or specular; NaN/inf geometry gives NaN), the
+// normal or a light at Q gives no diffuse or specular, Q at the eye no specular; NaN/inf geometry gives NaN), the
 // leanest direct way, with the same scalar kernels (phong::sqrt, phong::pow_unit) and the same
 // formulas (dot products with d = L - Q, scaled by 1/|d| only for pairs that are on; the cheap
 // sign test first), so the counts measure what shade<F>'s generic machinery adds; this program
@@ -112,10 +112,10 @@ FC_KERNEL fc_hand_diffuse_directional(const vec3* q, const vec3* n, std::size_t 
         const float nn = dot3(n[i], n[i]);
         const float in = nn >= tiny ? 1 / phong::sqrt(nn) : 0.0f;
         const vec3 nh = n[i] * in;
-        const float qq = dot3(q[i], q[i]); // Q at the eye (|Q|^2 not a normal number): no diffuse
+        const float qq = dot3(q[i], q[i]); // only for the NaN test: the diffuse term does not need v
         float poison = 0;
         if (!(nn <= FLT_MAX && qq <= FLT_MAX)) poison = nan_poison(q[i], n[i]);
-        const bool defined = in > 0 && qq >= tiny && qq <= FLT_MAX && poison == 0;
+        const bool defined = in > 0 && poison == 0;
         vec3 sum(0);
         for (std::size_t j = 0; j < k; ++j) {
             const vec3 d(L[j].position.x, L[j].position.y, L[j].position.z);
@@ -147,7 +147,7 @@ FC_KERNEL fc_hand_ads(const vec3* q, const vec3* n, std::size_t count, const lig
         const vec3 nh = n[i] * in, v = -q[i] * iv;
         float poison = 0;
         if (!(nn <= FLT_MAX && qq <= FLT_MAX)) poison = nan_poison(q[i], n[i]);
-        const bool defined = in > 0 && iv > 0 && poison == 0;
+        const bool defined = in > 0 && poison == 0; // Q at the eye (iv = 0): diffuse kept, no specular
         const float nv = dot3(nh, v);
         vec3 ambient(0), diffuse(0), specular(0);
         for (std::size_t j = 0; j < k; ++j) {
@@ -161,7 +161,7 @@ FC_KERNEL fc_hand_ads(const vec3* q, const vec3* n, std::size_t count, const lig
                 const float inv = 1 / phong::sqrt(dd);
                 diffuse += L[j].diffuse * (nd * inv);
                 if (rvd > 0) specular += L[j].specular * phong::pow_unit(std::min(rvd * inv, 1.0f), mat.shininess);
-                else if (mat.shininess == 0) specular += L[j].specular;
+                else if (mat.shininess == 0 && iv > 0) specular += L[j].specular;
             }
         }
         out[i] = vec3(poison) + mat.ka * ambient + mat.kd * diffuse + mat.ks * specular;

@@ -278,7 +278,7 @@ void shade_step(std::size_t i, std::size_t count, const soa3<T>& positions, cons
     const frame_t<F, V, Q> s = prepare<F>(glm::vec<3, V, Q>(lanes[0], lanes[1], lanes[2]),
                                              glm::vec<3, V, Q>(lanes[3], lanes[4], lanes[5]), glm::vec<3, V, Q>(V(T(0))), env, front);
     light_sums<V, Q> sums{};
-    for (const light<V, Q>& L : lights) detail::add_light<F>(sums, s, L, mat.shininess);
+    add_lights<F>(sums, s, lights, mat.shininess);
     const color<F, V, Q> c = finish<F>(sums, s, mat, env);
 
     constexpr int channels = F.alpha ? 4 : 3;

@@ -22,7 +22,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <ranges>
 #include <type_traits>
 #include <utility>
 
@@ -186,10 +185,18 @@ template <class R> struct is_masked<masked_lights<R>> : std::true_type {};
 template <class R> struct is_weighted : std::false_type {};
 template <class R, class W> struct is_weighted<weighted_lights<R, W>> : std::true_type {};
 
+/// F without its specular term.
+template <features F>
+inline constexpr features without_specular = [] {
+    features f = F;
+    f.specular = specular_model::none;
+    return f;
+}();
+
 /// Every light's terms added to the sums: a std::array unrolled at compile time, a masked or
 /// weighted list (visibility.hpp), or any input range of lights (views included).
 template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr void add_lights(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
+PHONG_HD constexpr void each_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
 {
     using R = std::remove_cvref_t<Lights>;
     if constexpr (is_std_array<R>::value) {
@@ -222,6 +229,21 @@ PHONG_HD constexpr void add_lights(light_sums<T, Q>& sums, const frame_t<F, T, Q
     } else {
         for (auto&& L : lights) detail::add_light<F>(sums, s, L, m, unweighted{});
     }
+}
+
+/// Every light's terms added to the sums (each_light). A point without a view vector (at the
+/// eye, or a zero given v) keeps its diffuse term, which does not need v, and has no specular
+/// term: scalars run it with F's specular term removed (no per-light test), SIMD lanes mask it.
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_HD constexpr void add_lights(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
+{
+    if constexpr (F.specular != specular_model::none && std::is_floating_point_v<T>) {
+        if (s.defined && !s.sees_viewer) [[unlikely]] {
+            each_light<without_specular<F>>(sums, s, static_cast<Lights&&>(lights), m);
+            return;
+        }
+    }
+    each_light<F>(sums, s, static_cast<Lights&&>(lights), m);
 }
 
 /// prepare, every light, finish: the terms of the model at one point in arithmetic type T (the
@@ -286,7 +308,9 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
 /// evaluation, an assertion in debug builds). Edges (finite input never gives NaN or inf):
 ///  * a light at Q (or a directional light with xyz = 0): no direction; that light adds only its
 ///    ambient term;
-///  * normal = 0 or Q at the eye (v = 0): no diffuse or specular from any light;
+///  * normal = 0: no diffuse or specular from any light;
+///  * no view vector (Q at the eye, a zero given v): the diffuse terms are kept (they do not need
+///    v; as OpenGL implementations do), no specular term;
 ///  * Blinn with l = -v: n.h taken as 0 (0 for m > 0, 1 for m = 0);
 ///  * m = 0: the specular base^0 = 1 wherever the specular term is on (pow(0, 0) = 1);
 ///  * c0 = 0 and d -> 0: f capped at 1 / attenuation_denominator_min<T>;

@@ -22,8 +22,9 @@ template <class T, glm::qualifier Q>
 struct surface_frame {
     glm::vec<3, T, Q> position; ///< Q
     glm::vec<3, T, Q> normal;   ///< unit normal after two-sided negation (0 if undefined)
-    glm::vec<3, T, Q> view;     ///< unit view vector v (0 if undefined; without a term reading v: 1 or 0)
-    mask_t<T> defined;          ///< normal and view both nonzero, inputs finite
+    glm::vec<3, T, Q> view;     ///< unit view vector v (0 if undefined, and where no term reads v)
+    mask_t<T> defined;          ///< the normal is nonzero and the inputs finite: diffuse and specular can be on
+    mask_t<T> sees_viewer;      ///< the view vector exists (not at the eye, not a zero given v): specular can be on
     T poison;                   ///< 0, or NaN when the point's inputs are not finite
     T nv = T(0);                ///< with a specular term: n.v
 };
@@ -44,14 +45,13 @@ PHONG_HD constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T sign 
     return {v * (inv * sign), dd, inv > T(0)};
 }
 
-/// unit(e * sign), or, when no term reads v, only whether it exists (no normalization left behind).
+/// unit(e * sign), or, when no term reads v, only its square (the NaN test reads it): no
+/// normalization left behind.
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T sign)
 {
     if constexpr (F.specular == specular_model::none && F.two_sided != facing::view) {
-        const T square = phong::dot(e, e);
-        const mask_t<T> ok = math_traits<T>::both(square >= exact_min_square<T>(), square <= largest<T>());
-        return {glm::vec<3, T, Q>(phong::select(ok, T(1), T(0))), square, ok};
+        return {glm::vec<3, T, Q>(T(0)), phong::dot(e, e), mask_t<T>(true)};
     } else {
         return unit_of(e, sign);
     }
@@ -111,17 +111,17 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     if constexpr (F.two_sided != facing::none) unit_normal = unit_normal * facing_sign<F>(unit_normal, v.unit, front_facing);
     else (void)front_facing;
     // A NaN point has every channel NaN through poison; its terms are off, so no NaN power runs.
-    const mask_t<T> defined = math_traits<T>::both(math_traits<T>::both(n.ok, v.ok), poison == T(0));
+    const mask_t<T> defined = math_traits<T>::both(n.ok, poison == T(0));
     T nv = T(0);
     if constexpr (F.specular != specular_model::none) nv = phong::dot(unit_normal, v.unit);
     // Built from components: copied whole, g++ moved the vectors through the stack.
     return {vec3(position.x, position.y, position.z), vec3(unit_normal.x, unit_normal.y, unit_normal.z),
-            vec3(v.unit.x, v.unit.y, v.unit.z), defined, poison, nv};
+            vec3(v.unit.x, v.unit.y, v.unit.z), defined, v.ok, poison, nv};
 }
 
 /// Whether a pair is lit, from dd = |d|^2 and nd = n.d (d = L.xyz - w Q): the light has a
-/// direction (|d|^2 a normal number: not at Q, no overflow), the point a normal and a view
-/// vector, and, where gated, n.l > 0. Scalars: one short-circuit condition, the sign first (it
+/// direction (|d|^2 a normal number: not at Q, no overflow), the point a normal, and, where
+/// gated, n.l > 0. Scalars: one short-circuit condition, the sign first (it
 /// rejects about a third of a typical scene's pairs, and g++ then branches on each compare).
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
@@ -136,7 +136,9 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 }
 
 /// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale (specular.hpp's
-/// cosine_power). Scalars add nothing where the power is 0 (x <= 0 and m > 0).
+/// cosine_power). Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes
+/// that are lit and see the viewer (scalars: shade's light loop runs a point without a view
+/// vector with the specular term removed, detail::add_lights).
 template <class T, glm::qualifier Q, class U>
 PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
                                      [[maybe_unused]] mask_t<T> on)
@@ -184,13 +186,14 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         nl = nd * inv;
     }
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, on);
+    [[maybe_unused]] const mask_t<T> specular_on = math_traits<T>::both(on, s.sees_viewer);
     if constexpr (F.specular == specular_model::phong) {
-        add_specular(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, on);
+        add_specular(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn) {
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)
             l = vec3(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
-        add_specular(sums, L, f, nl + s.nv, detail::inverse_halfway_length(l, s.view), m, on);
+        add_specular(sums, L, f, nl + s.nv, detail::inverse_halfway_length(l, s.view), m, specular_on);
     }
 }
 

@@ -26,7 +26,8 @@ struct surface_frame {
     glm::vec<3, T, Q> position;        ///< Q
     glm::vec<3, T, Q> normal{T(0)};    ///< unit normal after two-sided negation, rounded (0 if undefined)
     glm::vec<3, T, Q> view{T(0)};      ///< unit view vector, rounded (0 if undefined)
-    mask_t<T> defined;                 ///< normal and view both nonzero, inputs finite
+    mask_t<T> defined;                 ///< the normal is nonzero and the inputs finite
+    mask_t<T> sees_viewer;             ///< the view vector is nonzero (specular can be on)
     T poison;                          ///< 0, or NaN when the point's inputs are not finite
     glm::vec<3, T, Q> normal_scaled;   ///< the normal before its last rounding, rescaled exactly
     T inv_normal_length;               ///< 1 / |normal_scaled|
@@ -87,7 +88,8 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     s.normal_scaled = phong::rescaled(normal);
     s.inv_normal_length = un.inv_scaled;
     s.poison = poison_of<F>(position, normal, given_view, env);
-    s.defined = math_traits<T>::both(phong::dot(s.normal, s.normal) > T(0), phong::dot(s.view, s.view) > T(0));
+    s.defined = phong::dot(s.normal, s.normal) > T(0);
+    s.sees_viewer = phong::dot(s.view, s.view) > T(0);
     if constexpr (F.two_sided != facing::none) {
         const T sign = facing_sign<F>(s.normal, s.view, front_facing);
         s.normal = s.normal * sign;
@@ -183,7 +185,8 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, u.nl, on);
     if constexpr (F.specular != specular_model::none) {
         T spec = specular_factor<F>(s, u, twofold, m);
-        if constexpr (!std::is_floating_point_v<T>) spec = phong::select(on, spec, T(0)); // lanes computed but off
+        if constexpr (!std::is_floating_point_v<T>) // lanes computed but off, or without a view vector
+            spec = phong::select(math_traits<T>::both(on, s.sees_viewer), spec, T(0));
         sums.specular += in_type<T>(L.specular) * (f * spec);
     }
 }
