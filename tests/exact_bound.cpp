@@ -115,7 +115,7 @@ void check_scene(const Scene& s, tally& t, const char* what, const phong::accura
             t.max_ratio = std::max(t.max_ratio, r);
             if (err > 0) t.ratios.push_back(r);
         }
-        if (r > 1 || (verbose && r > 0.5 && relative)) {
+        if (r > 1 || (verbose && r > 0.25 && relative)) {
             if (r > 1) ++t.failures;
             std::printf("%s %s (%s, %s): channel %d computed %.17g exact %.17g error %.3g bound %.3g (ratio %.3g), m %.6g, K %zu\n",
                         r > 1 ? "FAIL" : "note", what, sizeof(T) == 4 ? "float" : "double",
