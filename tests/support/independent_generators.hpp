@@ -250,7 +250,15 @@ inline l3 at_angle(xoshiro& g, l3 a, long double theta)
     }
 }
 
-template <class T> glm::vec<3, T> to_t(l3 a) { return {T(a.x), T(a.y), T(a.z)}; }
+/// x rounded to T; beyond T's range +-inf explicitly (no out-of-range conversion; such a scene
+/// is drawn again).
+template <class T> T to_t(long double x)
+{
+    const long double top = (long double)std::numeric_limits<T>::max();
+    if (x > top || x < -top) return x > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+    return T(x);
+}
+template <class T> glm::vec<3, T> to_t(l3 a) { return {to_t<T>(a.x), to_t<T>(a.y), to_t<T>(a.z)}; }
 
 /// The exponent range of T's coordinates: squares of |x| <= 2^half stay normal (with a margin).
 template <class T> int half_range() { return std::numeric_limits<T>::max_exponent / 2 - 3; }
