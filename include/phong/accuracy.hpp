@@ -136,9 +136,10 @@ using table = std::array<bound, input_class_count>;
 // sum |x_k y_k| for any order and any mix of fma). Nothing here depends on -O1/-O2/-O3 or -march:
 // the exact path has no compensated (error-free) steps that contraction could break; the one
 // place where contraction would change a result qualitatively (Blinn's l = -v) is guarded in
-// shade.hpp by rounded products. First-order coefficients k u are used as g(k) = k u (1 + 2^-10):
-// every coefficient here is below 200, so k u <= 2^-16 and the neglected second-order terms are
-// below 2^-10 of the first-order ones. pow_unit's own documented bound (detail/power.hpp) enters
+// shade.hpp by rounded products. First-order coefficients k u are used as g(k) = k u (1 + 2^-10)
+// / (1 - 2 k u), which is at least Higham's gamma_k = k u / (1 - k u) (a product of k factors
+// (1 + delta), |delta| <= u) and covers the products of two such errors (for w = 0 or 1 every k
+// is below 200: k u <= 2^-16). pow_unit's own documented bound (detail/power.hpp) enters
 // as a stated input: double 3 (|y| + m + 4) 2^-53 with y = m log2(base); float the rounding to
 // float plus its short polynomials' truncation (m 2^-50 + 2^-34).
 //
@@ -186,8 +187,13 @@ struct pair_conditioning {
 
 namespace detail {
 template <class T> inline constexpr double unit_roundoff = double(std::numeric_limits<T>::epsilon()) / 2;
-/// First-order coefficient k (in units of u) with the margin for second-order terms.
-template <class T> constexpr double g(double k) { return k * unit_roundoff<T> * (1 + 0x1p-10); }
+/// First-order coefficient k (in units of u) as a bound with its second-order terms:
+/// k u (1 + 2^-10) / (1 - 2 k u), at least Higham's gamma_k = k u / (1 - k u) (+inf for 2 k u >= 1).
+template <class T> constexpr double g(double k)
+{
+    const double ku = k * unit_roundoff<T>;
+    return 2 * ku < 1 ? ku * (1 + 0x1p-10) / (1 - 2 * ku) : inf;
+}
 /// (1 + a)(1 + b) - 1: relative errors of a product.
 constexpr double compose(double a, double b) { return (a < inf && b < inf) ? a + b + a * b : inf; }
 /// An upper bound of expm1(t) for t >= 0.
