@@ -71,7 +71,7 @@ TEST_CASE("exact_bound: the diffuse term, first order 7 u + 11 u / n.l for w = 0
     CHECK(exact_diffuse_bound<double>(k) > 35 * u + 200 * 3 * u);
 }
 
-TEST_CASE("exact_bound: monotone in m, n.l, c; Blinn worse as |l + v| shrinks")
+TEST_CASE("exact_bound: monotone in m, n.l and c, and larger for Blinn as |l + v| shrinks")
 {
     double last = 0;
     for (double m : {1.0, 10.0, 1e3, 1e5, 1e6}) {
