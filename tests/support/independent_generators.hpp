@@ -266,7 +266,8 @@ template <class T> int half_range() { return std::numeric_limits<T>::max_exponen
 /// One scene: a point with a view, a normal at a chosen n.v, one to four lights each aimed at a
 /// chosen conditioning (a highlight window, a grazing n.l, or a random direction), placed as a
 /// directional, positional or homogeneous light at a log-uniform distance, coordinates scaled by a
-/// power of two from the whole range of T (mostly within its squares' range, sometimes beyond).
+/// power of two from the whole range of T (55 % within its squares' range, 20 % anywhere, 10 %
+/// at the edges of the squares' range, where the exact mode keeps or drops a vector).
 template <class T> bool finite_scene(const scene<T>& s)
 {
     bool ok = std::isfinite(s.position.x) && std::isfinite(s.position.y) && std::isfinite(s.position.z) &&
@@ -296,8 +297,16 @@ scene<T> make_scene_once(xoshiro& g)
     const int full = std::numeric_limits<T>::max_exponent - 8;
     int e = 0;
     const long double pick = g.unit();
+    // At a range edge: |Q| (and, below, |L - wQ|) within a factor 8 of sqrt(min) or sqrt(max),
+    // where squares underflow or overflow and the exact mode's keep-or-drop decision is made.
+    const int lo_edge = std::numeric_limits<T>::min_exponent / 2, hi_edge = std::numeric_limits<T>::max_exponent / 2;
+    const bool edge = pick >= 0.9L;
     if (pick < 0.55L) e = int(g.range(-half, half));
     else if (pick < 0.75L) e = int(g.range(-full, full)); // vectors may leave the range: dropped
+    else if (edge) { // (one draw per statement: argument order is unspecified, the scenes must not depend on the compiler)
+        const int side = g.chance(0.5) ? lo_edge : hi_edge;
+        e = side + int(g.range(-3, 3)) - 4; // distance in [0.5, 100]
+    }
     const long double scale = std::ldexp(1.0L, e);
     const l3 v = sphere(g);
     const long double distance = g.log_range(0.5L, 100);
@@ -306,7 +315,8 @@ scene<T> make_scene_once(xoshiro& g)
     // (times the scale: the normal's length is free).
     const long double nv = g.chance(0.3) ? g.log_range(1e-7L, 1) : g.range(0.05L, 1);
     const l3 n = at_cosine(g, v, nv);
-    const long double normal_length = g.log_range(1e-3L, 1e3L) * (g.chance(0.5) ? scale : 1);
+    const long double normal_base = g.log_range(1e-3L, 1e3L);
+    const long double normal_length = normal_base * (g.chance(0.5) ? scale : 1);
     s.normal = to_t<T>(n * normal_length);
     // Material: m log-uniform up to 1e6 (sometimes 0 or below 1), coefficients in [0, 1], some 0.
     const long double mp = g.unit();
@@ -333,12 +343,18 @@ scene<T> make_scene_once(xoshiro& g)
             const l3 h = at_angle(g, n, theta);
             l = h * (2 * ldot(h, v)) - v;
         } else if (aim == 2) { // grazing: n.l log-uniform in [1e-7, 1e-2], either side
-            l = at_cosine(g, n, g.log_range(1e-7L, 1e-2L) * (g.chance(0.8) ? 1 : -1));
+            const long double t = g.log_range(1e-7L, 1e-2L);
+            l = at_cosine(g, n, g.chance(0.8) ? t : -t);
         } else { // random
             l = sphere(g);
         }
         const int kind = g.below(4);
-        const long double reach = g.log_range(1e-6L, 1e6L) * distance * scale;
+        long double reach = g.log_range(1e-6L, 1e6L) * distance * scale;
+        if (edge && g.chance(0.5)) {
+            const long double mantissa = g.range(0.5L, 2);
+            const int side = g.chance(0.5) ? lo_edge : hi_edge;
+            reach = std::ldexp(mantissa, side + int(g.range(-3, 3)));
+        }
         if (kind == 0) { // directional: |xyz| log-uniform
             const long double length = g.chance(0.2) ? std::ldexp(1.0L, int(g.range(-full, full))) : reach;
             L.position = glm::vec<4, T>(to_t<T>(l * length), T(0));
