@@ -25,3 +25,12 @@ if grep -qw fma /proc/cpuinfo; then
   check build/phong_accuracy_table_fma 4
   check build/phong_accuracy_table_fma 6 --twofold
 fi
+# The exact mode's derived bound (accuracy::exact_bound, docs/accuracy.md): the independent
+# generator family and the project's classes, every channel within the bound evaluated at its own
+# conditioning, in two of tests/bounds_matrix.sh's twelve builds, those where the compilers
+# contract into FMA differently (~1 min: one translation unit each).
+if grep -qw fma /proc/cpuinfo; then
+  tests/bounds_matrix.sh 20000 8 clang++:-O1:-march=native g++:-O3:-march=native
+else
+  tests/bounds_matrix.sh 20000 8 clang++:-O1: g++:-O3:
+fi
