@@ -1,17 +1,32 @@
 #!/usr/bin/env bash
-# Packaging proof (issue 2): install phong to a temporary prefix with `cmake --install`, then build
-# the separate project tests/consumer against it (find_package(phong CONFIG REQUIRED) +
-# phong::phong) with CMAKE_PREFIX_PATH, with g++ and clang++, and run it.
+# The README's user instructions, tested (issue 2's packaging proof, issue 13's README): first check
+# that tests/consumer/CMakeLists.txt and main.cpp are exactly the README's blocks marked
+# "<!-- tests/consumer/<file>: ... -->"; then install phong to a temporary prefix with the README's
+# install command, and build the separate project tests/consumer against it
+# (find_package(phong CONFIG REQUIRED) + phong::phong) with CMAKE_PREFIX_PATH, with g++ and
+# clang++, and run it.
 set -euo pipefail
 root="$PWD"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
-cmake -S "$root" -B "$tmp/build" -G Ninja -DPHONG_BUILD_TESTS=OFF -DPHONG_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --install "$tmp/build" --prefix "$tmp/prefix"
+readme_block() { # the fenced block that follows the line "<!-- $1: ..."
+  awk -v key="<!-- $1:" 'index($0, key) == 1 { f = 1; next } f == 1 && /^```/ { f = 2; next }
+                         f == 2 && /^```$/ { exit } f == 2 { print }' "$root/README.md"
+}
+for f in CMakeLists.txt main.cpp; do
+  readme_block "tests/consumer/$f" >"$tmp/readme_$f"
+  [[ -s "$tmp/readme_$f" ]] || { echo "15-install-consumer: README.md has no block marked tests/consumer/$f"; exit 1; }
+  diff -u "$tmp/readme_$f" "$root/tests/consumer/$f" ||
+    { echo "15-install-consumer: tests/consumer/$f differs from README.md's block (above)"; exit 1; }
+done
+echo "15-install-consumer: tests/consumer/{CMakeLists.txt,main.cpp} are the README's blocks"
+# The README's install command, into the temporary prefix.
+(cd "$tmp" && cmake -S "$root" -B build -G Ninja -DPHONG_BUILD_TESTS=OFF -DPHONG_BUILD_BENCHMARKS=OFF >/dev/null &&
+  cmake --install build --prefix "$tmp/prefix")
 for cxx in g++ clang++; do
   cmake -S "$root/tests/consumer" -B "$tmp/consumer-$cxx" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" \
     -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Werror"
   grep -q "phong_DIR:PATH=$tmp/prefix/" "$tmp/consumer-$cxx/CMakeCache.txt" # found the installed copy
   cmake --build "$tmp/consumer-$cxx"
-  "$tmp/consumer-$cxx/consumer"
+  "$tmp/consumer-$cxx/app"
 done
