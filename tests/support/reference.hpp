@@ -75,7 +75,7 @@ wcolor reference_shade(const phong::features& F, const glm::vec<3, T>& position,
             }
         }
         if (F.spot != spot_model::none) {
-            const wvec3 s = widen(L.spot.direction);
+            const wvec3 s = wnormalize(widen(L.spot.direction)); // the model reads the axis's direction
             const wide c = -wdot(l, s);
             if (F.spot == spot_model::opengl) {
                 const wide cut = wide(L.spot.cos_cutoff);

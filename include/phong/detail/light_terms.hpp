@@ -86,8 +86,14 @@ PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T dista
         if constexpr (F.lights == light_kind::any) f = phong::select(w > T(0), fa, T(1));
         else f = fa;
     }
-    if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, in_type<T>(L.spot.direction), T(L.spot.exponent), T(L.spot.cos_cutoff));
-    if constexpr (F.spot == spot_model::smooth) f = f * phong::spot_smooth(l, in_type<T>(L.spot.direction), T(L.spot.cos_inner), T(L.spot.cos_outer));
+    if constexpr (F.spot != spot_model::none) {
+        // The axis as given (validate: unit within 1e-3); float lights shaded in double take its
+        // direction, normalized there, so the wider route rounds the model once with spots too.
+        glm::vec<3, T, Q> s(L.spot.direction);
+        if constexpr (!std::is_same_v<U, T>) s = phong::normalize(s);
+        if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, s, T(L.spot.exponent), T(L.spot.cos_cutoff));
+        else f = f * phong::spot_smooth(l, s, T(L.spot.cos_inner), T(L.spot.cos_outer));
+    }
     if constexpr (!std::is_same_v<W, unweighted>) f = f * T(visibility);
     return f;
 }
