@@ -323,9 +323,8 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
 /// finite input. Float with F.precision = wider (the default): the exact formulas evaluated in
 /// double (every float input is exact there and no square of one overflows or underflows) and
 /// rounded once: within 1 ulp, correctly rounded but for near-ties, m = 1e5 and n.l ~ 1e-6
-/// included, spot lights too (the axis's direction, normalized in double: the model reads the
-/// direction of a spot axis, which validate accepts within 1e-3 of unit length; the exact and
-/// twofold routes use the axis as given). Double, and float with F.precision = twofold: unit vectors, n.l and the specular
+/// included, spot lights too (the model reads the direction of a spot axis, which validate
+/// accepts within 1e-3 of unit length: every route normalizes it, the wider route in double). Double, and float with F.precision = twofold: unit vectors, n.l and the specular
 /// chords carried twofold (detail/twofold.hpp), within a few ulp on the same classes.
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,

@@ -87,10 +87,12 @@ PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T dista
         else f = fa;
     }
     if constexpr (F.spot != spot_model::none) {
-        // The axis as given (validate: unit within 1e-3); float lights shaded in double take its
-        // direction, normalized there, so the wider route rounds the model once with spots too.
+        // The model reads the axis's direction: validate accepts an axis within 1e-3 of unit
+        // length, and a float axis is unit only to float precision (float lights shaded in double
+        // would otherwise carry that rounding into the wider route's once-rounded colour).
         glm::vec<3, T, Q> s(L.spot.direction);
-        if constexpr (!std::is_same_v<U, T>) s = phong::normalize(s);
+        if constexpr (std::is_same_v<U, T>) s = phong::normalize_unscaled(s); // |s| within 1e-3 of 1: in range
+        else s = phong::normalize(s);
         if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, s, T(L.spot.exponent), T(L.spot.cos_cutoff));
         else f = f * phong::spot_smooth(l, s, T(L.spot.cos_inner), T(L.spot.cos_outer));
     }
