@@ -268,7 +268,9 @@ template <class T> void describe()
 //    for m < 1 Hoelder again: delta^m.
 //  * the smooth spot smoothstep((c - cos_outer) / width) has slope <= 1.5 / width: 1.5 K eps / width.
 // Tolerance per channel: K0 eps S + sum_i a_i [(ka La_i [attenuate_ambient] + kd Ld_i + ks Ls_i)
-// spot_error_i + ks Ls_i spec_error_i] + 64 denorm_min (results in the subnormal range).
+// spot_error_i + ks Ls_i spec_error_i] + 64 denorm_min (results in the subnormal range); a light
+// whose a_i is below T's normal range (denominator beyond max, or f subnormal) is uncertain as a
+// whole: a_i (ka La_i + kd Ld_i + ks Ls_i) more.
 // ---------------------------------------------------------------------------------------------
 
 constexpr wide K = 16;
@@ -417,6 +419,10 @@ tolerance_result tolerance(const scene<T>& s, std::size_t i)
             scale[c] += a * lit;
             const wide spotted = lit + (F.light_ambient && F.attenuate_ambient ? ambient : 0);
             extra[c] += a * (spotted * spot_error + (F.specular != specular_model::none ? wide(mat.ks[c]) * wide(L.specular[c]) : 0) * spec_error);
+            // An attenuation below T's normal range (a denominator beyond max, or a subnormal f)
+            // is lost in T arithmetic, while float's wider route (double) keeps it: the whole
+            // term is uncertain (found by fuzz_batch_native: 1e-40 against 0 at d = 9e19).
+            if (a < wide(std::numeric_limits<T>::min())) extra[c] += a * spotted;
         }
     }
     out.comparable = true;
