@@ -150,10 +150,10 @@ TEST_CASE_TEMPLATE("NaN policy: finite degenerate input gives finite output", T,
     for_each_feature_set<T>([&](scene<T>& s) { s.position = glm::vec<3, T>(huge, -huge, tiny); }, check_finite);
     for_each_feature_set<T>([&](scene<T>& s) { s.normal = glm::vec<3, T>(tiny, 0, tiny); }, check_finite);
     for_each_feature_set<T>([&](scene<T>& s) { s.normal = glm::vec<3, T>(huge, huge, huge); }, check_finite);
-    // L.xyz - w Q and E.xyz - E.w Q overflow although every input is finite (|w Q| > max): that
-    // light (or the view) has no direction, never NaN (the smooth spot used to turn inf * 0 into NaN).
+    // L.xyz - w Q and E.xyz - E.w Q overflow although every input is finite (|w Q| > max, or
+    // |L.xyz - Q| > max with w = 1; a light's w is 0 or 1, validate(light)): that light (or the
+    // view) has no direction, never NaN (the smooth spot used to turn inf * 0 into NaN).
     const T top = std::numeric_limits<T>::max();
-    for_each_feature_set<T>([&](scene<T>& s) { s.lights[0].position.w = top; }, check_finite);
     for_each_feature_set<T>([&](scene<T>& s) { s.env.eye.w = top; }, check_finite);
     for_each_feature_set<T>([&](scene<T>& s) { s.lights[0].position = glm::vec<4, T>(top, -top, top, T(1)); s.position = glm::vec<3, T>(-top, top, -top); }, check_finite);
     // A far light exactly opposite the viewer (l = -v in the high parts, l + v carried only by the
@@ -359,8 +359,10 @@ TEST_CASE_TEMPLATE("NaN policy: validate(light) rejects NaN, inf and out-of-rang
     L.spot.cos_outer = T(-1);
     CHECK(static_cast<bool>(validate(L)));
     L.spot.cos_cutoff = T(1);
-    L.position.w = T(0.5);
+    L.position.w = T(1);
     CHECK(static_cast<bool>(validate(L)));
+    L.position.w = T(0.5); // only w = 0 and w = 1 (light.hpp)
+    expect_rejected(L, "light.position.w");
 }
 
 // validate() is constexpr: the same answers in constant evaluation.

@@ -204,9 +204,8 @@ TEST_CASE_TEMPLATE("shade: documented edges, exact and stable", T, float, double
             const vec3<T> with_it = phong::shade<F>(Q, n, mat, lights, env);
             const vec3<T> without = phong::shade<F>(Q, n, mat, two, env);
             CHECK(close(with_it, without + mat.ka * T(0.5), 4));
-            // Homogeneous: w = 2 at 2 Q is the same point.
-            lights.back().position = vec4<T>(Q * T(2), T(2));
-            CHECK(close(phong::shade<F>(Q, n, mat, lights, env), without + mat.ka * T(0.5), 4));
+            // (A homogeneous w = 2 at 2 Q, once the same point, is outside the domain: a light's
+            // w is 0 or 1, validate(light).)
         });
     }
     SUBCASE("c0 = 0 and d -> 0: f capped at 1 / attenuation_denominator_min")

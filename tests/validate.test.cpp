@@ -49,10 +49,34 @@ TEST_CASE_TEMPLATE("validate(light): valid lights are accepted", T, float, doubl
     CHECK(static_cast<bool>(phong::validate(zero)));
     zero.spot.cos_cutoff = T(1);
     CHECK(static_cast<bool>(phong::validate(zero)));
-    // A w other than 0 or 1 but positive is a homogeneous point: accepted.
-    zero.position = vec4<T>(2, 2, 2, 2);
+    // w = -0 is w = 0 (IEEE: -0 == 0): a directional light.
+    zero.position = vec4<T>(1, 2, 3, -T(0));
     CHECK(static_cast<bool>(phong::validate(zero)));
 }
+
+// Issue 15 item 5: light_kind::any shaded a light with w = 2 at xyz / w, while ::positional and
+// ::directional ignore w (xyz and direction xyz). The document's convention, w = 1 positional and
+// w = 0 directional, is now the domain: every other w is rejected, with a message naming the field.
+TEST_CASE_TEMPLATE("validate(light): w must be exactly 0 or 1", T, float, double)
+{
+    using L = phong::light<T>;
+    const T eps = std::numeric_limits<T>::epsilon();
+    const T denorm = std::numeric_limits<T>::denorm_min();
+    for (T w : {T(2), T(0.5), T(1) + eps, T(1) - eps / 2, denorm, -denorm, T(-1), std::numeric_limits<T>::max(), T(3)}) {
+        CAPTURE(w);
+        const L light = L::seed000(vec4<T>(1, 2, 3, w), vec3<T>(1));
+        const phong::validation r = phong::validate(light);
+        CHECK_FALSE(static_cast<bool>(r));
+        CHECK(std::string(r.message()).find("light.position.w") != std::string::npos);
+    }
+    for (T w : {T(0), -T(0), T(1)}) {
+        CAPTURE(w);
+        CHECK(static_cast<bool>(phong::validate(L::seed000(vec4<T>(1, 2, 3, w), vec3<T>(1)))));
+    }
+}
+static_assert(!phong::validate(phong::light<float>{.position = {1.0f, 2.0f, 3.0f, 2.0f}}));
+static_assert(!phong::validate(phong::light<double>{.position = {1.0, 2.0, 3.0, 0.5}}));
+static_assert(static_cast<bool>(phong::validate(phong::light<double>{.position = {1.0, 2.0, 3.0, 1.0}})));
 
 TEST_CASE_TEMPLATE("light::seed000: one strength L_i for diffuse and specular, no ambient", T, float, double)
 {
@@ -84,6 +108,8 @@ TEST_CASE_TEMPLATE("validate(light): each documented rejection", T, float, doubl
         {"light.position", [](light& L) { L.position.y = pinf<T>; }},
         {"light.position", [](light& L) { L.position.w = pinf<T>; }},
         {"light.position.w", [](light& L) { L.position.w = T(-1); }},
+        {"light.position.w", [](light& L) { L.position.w = T(2); }},
+        {"light.position.w", [](light& L) { L.position.w = T(0.5); }},
         {"light.ambient", [](light& L) { L.ambient.r = T(-0.1); }},
         {"light.ambient", [](light& L) { L.ambient.g = qnan<T>; }},
         {"light.ambient", [](light& L) { L.ambient.b = pinf<T>; }},

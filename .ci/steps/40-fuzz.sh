@@ -1,21 +1,37 @@
 #!/usr/bin/env bash
-# libFuzzer + ASan + UBSan on phong::shade and phong::validate (tests/fuzz/fuzz_shade.cpp) for a
-# bounded time, starting from the committed seed corpus (copied: new units are not kept). Any
-# check failure or sanitizer report stops the fuzzer with a non-zero status and saves the input
-# as crash-* in the printed directory; reproduce with `<binary> <that file>`.
+# libFuzzer + ASan + UBSan, each target for a bounded time from its committed seed corpus (copied:
+# new units are not kept):
+#  * fuzz_shade (tests/fuzz/fuzz_shade.cpp): phong::shade and phong::validate, PHONG_FUZZ_SECONDS (60);
+#  * fuzz_batch and fuzz_batch_native (tests/fuzz/fuzz_batch.cpp): shade_batch against shade at the
+#    baseline ISA and with -march=native, PHONG_FUZZ_BATCH_SECONDS each (30).
+# Any check failure or sanitizer report stops the fuzzer with a non-zero status and saves the input
+# as crash-* in build/fuzz-artifacts/; reproduce with `<binary> <that file>`.
 set -euo pipefail
 seconds="${PHONG_FUZZ_SECONDS:-60}"
+batch_seconds="${PHONG_FUZZ_BATCH_SECONDS:-30}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-tests/fuzz/build.sh "$work/fuzz_shade"
-mkdir -p "$work/corpus" "$work/artifacts"
-cp tests/fuzz/corpus/* "$work/corpus/"
-if ! "$work/fuzz_shade" "$work/corpus" -max_total_time="$seconds" \
-     -artifact_prefix="$work/artifacts/" -print_final_stats=1 > "$work/log" 2>&1; then
-  tail -n 80 "$work/log"
-  mkdir -p build/fuzz-artifacts && cp "$work"/artifacts/* build/fuzz-artifacts/ 2>/dev/null || true
-  echo "40-fuzz: FAILED; inputs saved in build/fuzz-artifacts/"
-  exit 1
-fi
-grep -h "^stat::\|^Done" "$work/log" || true
-echo "40-fuzz: no finding in ${seconds} s"
+tests/fuzz/build.sh "$work/fuzz_shade" &
+build_shade=$!
+tests/fuzz/build_batch.sh "$work"
+wait "$build_shade"
+
+# fuzz <binary> <corpus directory> <seconds>
+fuzz() {
+  local binary="$1" corpus="$2" time="$3" name
+  name="$(basename "$binary")"
+  mkdir -p "$work/$name.corpus" "$work/$name.artifacts"
+  cp "$corpus"/* "$work/$name.corpus/"
+  if ! "$binary" "$work/$name.corpus" -max_total_time="$time" \
+       -artifact_prefix="$work/$name.artifacts/" -print_final_stats=1 > "$work/$name.log" 2>&1; then
+    tail -n 80 "$work/$name.log"
+    mkdir -p build/fuzz-artifacts && cp "$work/$name.artifacts"/* build/fuzz-artifacts/ 2>/dev/null || true
+    echo "40-fuzz: $name FAILED; inputs saved in build/fuzz-artifacts/"
+    exit 1
+  fi
+  grep -h "^stat::number_of_executed_units\|^Done\|^fuzz_batch:" "$work/$name.log" || true
+  echo "40-fuzz: $name, no finding in $time s"
+}
+fuzz "$work/fuzz_shade" tests/fuzz/corpus "$seconds"
+fuzz "$work/fuzz_batch" tests/fuzz/corpus_batch "$batch_seconds"
+fuzz "$work/fuzz_batch_native" tests/fuzz/corpus_batch "$batch_seconds"

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -68,30 +69,47 @@ struct math_traits<xsimd::batch<T, A>> {
             return V(T(1)) / xsimd::sqrt(x);
         }
     }
-    PHONG_LANES_INLINE static V exp(const V& x) { return xsimd::exp(x); }
+    /// e^x, lane-wise: xsimd::exp on the argument clamped to [minlog, maxlog] (xsimd's own
+    /// thresholds: -88.38 / 88.38 in float, -708.40 / 709.78 in double), NaN passed through.
+    /// Why: xsimd 8.1's exp converts round(x / ln 2) to an integer before it looks at the range,
+    /// and where the ISA has no vector conversion (double below AVX-512DQ: SSE2, AVX, AVX2) that
+    /// is a scalar static_cast, undefined (UBSan: float-cast-overflow) for |x| beyond 2^63 and for
+    /// NaN. Such x are in the model's domain: the stable mode's exp(m log1p(-x)) with m = 1e30 in
+    /// double, or pow(x, y) with y = 1e38 in float. The clamp cannot change a result: xsimd's exp
+    /// returns exactly 0 for every x <= minlog and +inf for every x >= maxlog (its final selects),
+    /// so exp(clamp(x)) == exp(x) for every non-NaN x; and exp(NaN) = NaN here as before.
+    PHONG_LANES_INLINE static V exp(const V& x)
+    {
+        const V lo = xsimd::constants::minlog<V>(), hi = xsimd::constants::maxlog<V>();
+        const V clamped = xsimd::select(x > lo, xsimd::select(x < hi, x, hi), lo); // NaN: lo
+        return xsimd::select(x == x, xsimd::exp(clamped), x);
+    }
+    /// log and log1p: xsimd's (no integer conversion of the argument: defined for every input).
     PHONG_LANES_INLINE static V log(const V& x) { return xsimd::log(x); }
     PHONG_LANES_INLINE static V log1p(const V& x) { return xsimd::log1p(x); }
     /// x^y for x in [0, 1], y >= 0 (the lighting model's domain): exp(y log x) with xsimd's
-    /// kernels, pow(0, 0) = 1, pow(0, y > 0) = 0 (xsimd's own pow returns 0 for pow(0, 0)).
+    /// kernels (exp clamped as above: y log x is -inf or below -1e300 for large y), pow(0, 0) = 1,
+    /// pow(0, y > 0) = 0 (xsimd's own pow returns 0 for pow(0, 0)).
     PHONG_LANES_INLINE static V pow(const V& x, const V& y)
     {
-        const V p = xsimd::exp(y * xsimd::log(xsimd::select(x > V(T(0)), x, V(T(1)))));
+        const V p = exp(y * xsimd::log(xsimd::select(x > V(T(0)), x, V(T(1)))));
         return xsimd::select(x > V(T(0)), p, xsimd::select(y == V(T(0)), V(T(1)), V(T(0))));
     }
     /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
-    /// xsimd's kernels; x >= 1 gives 0, and 1 for m = 0.
+    /// xsimd's kernels (exp clamped as above: m log1p(-x) reaches -1e30 and below for the
+    /// shininess validate accepts); x >= 1 gives 0, and 1 for m = 0.
     PHONG_LANES_INLINE static V pow_one_minus(const V& x, const V& m)
     {
         const V xc = xsimd::min(x, V(T(1)));
         const auto inside = xc < V(T(1));
         const V lg = xsimd::log1p(-xsimd::select(inside, xc, V(T(0))));
-        const V r = xsimd::exp(m * lg);
+        const V r = exp(m * lg);
         return xsimd::select(inside, r, xsimd::select(m == V(T(0)), V(T(1)), V(T(0))));
     }
     /// a * b + c rounded once. xsimd 8.1's fma is a separate multiply and add on AVX-512 and on
     /// targets without FMA (found by the stable mode's error-free products losing their error
     /// term), so the fused instructions are called directly, and without FMA hardware the exact
-    /// product comes from Dekker's split (as the scalar constant-evaluation path does).
+    /// product comes from Dekker's split (`split_fma` below).
     PHONG_LANES_INLINE static V fma(const V& a, const V& b, const V& c)
     {
 #  if defined(__AVX512F__)
@@ -109,7 +127,30 @@ struct math_traits<xsimd::batch<T, A>> {
             else return V(_mm_fmadd_pd(a, b, c));
         }
 #  endif
-        return detail::dekker_fma<V, T>(a, b, c);
+        return split_fma(a, b, c);
+    }
+    /// Dekker's product a * b = p + e exactly, then (p + c) + e: exact whenever c = -fl(a * b)
+    /// (the error-free products of the stable mode), else within 1 ulp. Veltkamp's split forms
+    /// (2^h + 1) x (h = 12 for float, 27 for double), which overflows for |x| above
+    /// max / 2^(h + 1) (8.3e34 in float, 1.1e300 in double): the error term became inf - inf = NaN
+    /// and the stable mode lost the view vector of a point at |Q| = 1e38 in float (found by
+    /// tests/fuzz/fuzz_batch.cpp at the baseline ISA, where the scalar path's std::fma is exact).
+    /// So e is computed for a 2^-(h+1) (and b 2^-(h+1)) where those are that large, and scaled
+    /// back by the same powers of two: exact, since e of such a product (|a b| >= 8.3e34 * 1.4e-45
+    /// in float) is far from the subnormal range.
+    PHONG_LANES_INLINE static V split_fma(const V& a, const V& b, const V& c)
+    {
+        constexpr int h = (std::numeric_limits<T>::digits + 1) / 2;
+        const V limit(std::numeric_limits<T>::max() / T(1ull << (h + 1)));
+        const V down(T(1) / T(1ull << (h + 1))), up(T(1ull << (h + 1))), one(T(1)), splitter(T((1ull << h) + 1));
+        const auto big_a = xsimd::abs(a) > limit, big_b = xsimd::abs(b) > limit;
+        const V as = xsimd::select(big_a, a * down, a), bs = xsimd::select(big_b, b * down, b);
+        const V scale = xsimd::select(big_a, up, one) * xsimd::select(big_b, up, one);
+        const V ca = splitter * as, ah = ca - (ca - as), al = as - ah;
+        const V cb = splitter * bs, bh = cb - (cb - bs), bl = bs - bh;
+        const V ps = as * bs;
+        const V es = ((ah * bh - ps) + ah * bl + al * bh) + al * bl;
+        return (a * b + c) + es * scale;
     }
     static V select(const mask& m, const V& a, const V& b) { return xsimd::select(m, a, b); }
     static bool any(const mask& m) { return xsimd::any(m); }
@@ -302,6 +343,58 @@ void shade_step(std::size_t i, std::size_t count, const soa3<T>& positions, cons
     }
 }
 
+/// The bytes [p, p + bytes) and [q, q + bytes_q) share at least one byte (std::less: a total
+/// order on pointers, also between unrelated objects).
+inline bool bytes_overlap(const void* p, std::size_t bytes, const void* q, std::size_t bytes_q)
+{
+    if (bytes == 0 || bytes_q == 0) return false;
+    const auto* a = static_cast<const unsigned char*>(p);
+    const auto* b = static_cast<const unsigned char*>(q);
+    const std::less<const unsigned char*> before;
+    return before(a, b + bytes_q) && before(b, a + bytes);
+}
+
+/// shade_batch's aliasing rule, checked in debug builds: the memory it writes (the first n
+/// elements of each output channel, or of the interleaved colours) overlaps no memory it reads
+/// point by point (the first n coordinates, materials when per point, front_facing flags), nor
+/// another output channel. One exception: an SoA output channel may be exactly an input
+/// coordinate span (same data(), whole length n), i.e. shading in place. That is safe because
+/// each step reads its points' coordinates (into lanes, or padded copies for the tail) before it
+/// stores their colours, and never stores to an element a later step reads. Lights, a shared
+/// material and the environment are copied into lanes before the first store: no constraint.
+template <int channels, class T, glm::qualifier Q, class Materials, class Output>
+bool output_overlaps_input(const soa3<T>& positions, const soa3<T>& normals, const Materials& materials,
+                           const Output& out, std::span<const bool> front_facing, std::size_t n)
+{
+    struct range {
+        const void* p;
+        std::size_t bytes;
+    };
+    constexpr bool soa = std::is_same_v<Output, soa_rgba<T>>;
+    range writes[4]{};
+    int write_count = 0;
+    if constexpr (soa) {
+        const std::span<T> channel[4] = {out.r, out.g, out.b, out.a};
+        for (int k = 0; k < channels; ++k) writes[write_count++] = {channel[k].data(), n * sizeof(T)};
+    } else {
+        writes[write_count++] = {out.data(), n * sizeof(typename Output::value_type)};
+    }
+    const std::span<const T> coords[6] = {positions.x, positions.y, positions.z, normals.x, normals.y, normals.z};
+    for (int w = 0; w < write_count; ++w) {
+        for (const std::span<const T>& c : coords)
+            if (bytes_overlap(writes[w].p, writes[w].bytes, c.data(), n * sizeof(T)) &&
+                !(soa && writes[w].p == static_cast<const void*>(c.data())))
+                return true;
+        if constexpr (!std::is_same_v<Materials, material<T, Q>>)
+            if (bytes_overlap(writes[w].p, writes[w].bytes, materials.data(), n * sizeof(material<T, Q>))) return true;
+        if (!front_facing.empty() && bytes_overlap(writes[w].p, writes[w].bytes, front_facing.data(), n * sizeof(bool)))
+            return true;
+        for (int other = 0; other < w; ++other)
+            if (bytes_overlap(writes[w].p, writes[w].bytes, writes[other].p, writes[other].bytes)) return true;
+    }
+    return false;
+}
+
 template <features F, class T, glm::qualifier Q, class Materials, class Output>
 void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Materials& materials,
                       std::span<const light<T, Q>> lights, const Output& out, const environment<T, Q>& env,
@@ -317,19 +410,27 @@ void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Ma
         out_size = std::min({out.r.size(), out.g.size(), out.b.size(), F.alpha ? out.a.size() : out.r.size()});
     else
         out_size = out.size();
-    PHONG_ASSERT(positions.y.size() == n && positions.z.size() == n && normals.x.size() == n &&
-                     normals.y.size() == n && normals.z.size() == n && out_size >= n,
-                 "shade_batch: spans of different lengths");
+    [[maybe_unused]] bool lengths_ok = positions.y.size() == n && positions.z.size() == n && normals.x.size() == n &&
+                                       normals.y.size() == n && normals.z.size() == n && out_size >= n;
+    PHONG_ASSERT(lengths_ok, "shade_batch: spans of different lengths");
     PHONG_ASSERT(front_facing.empty() || front_facing.size() == n, "shade_batch: front_facing length");
+    lengths_ok = lengths_ok && (front_facing.empty() || front_facing.size() == n);
     if constexpr (per_point_material) {
         PHONG_ASSERT(materials.size() == n, "shade_batch: one material per point");
+        lengths_ok = lengths_ok && materials.size() == n;
+    }
 #if !defined(NDEBUG)
+    // A precondition handler that returns (set_precondition_handler) must not lead to reads or
+    // writes past a span: nothing is shaded then.
+    if (!lengths_ok) return;
+    PHONG_ASSERT((!output_overlaps_input<F.alpha ? 4 : 3, T, Q>(positions, normals, materials, out, front_facing, n)),
+                 "shade_batch: an output span overlaps an input span (only an output channel equal to an input "
+                 "coordinate span, the same data() and size(), may alias it)");
+    if constexpr (per_point_material) {
         for (const material<T, Q>& m : materials) PHONG_ASSERT(static_cast<bool>(validate(m)), validate(m).message());
-#endif
     } else {
         PHONG_ASSERT(static_cast<bool>(validate(materials)), validate(materials).message());
     }
-#if !defined(NDEBUG)
     for (const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
 #endif
 
@@ -360,8 +461,15 @@ void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Ma
 ///   out: SoA channels (soa_rgba: r, g, b, and a when F.alpha), or a span of N interleaved
 ///        colours (std::span<color<F, T>>: glm::vec3, or glm::vec4 when F.alpha);
 ///   front_facing: N flags, read only for facing::flag; empty means all front-facing.
-/// Pre: spans of length N (out may be longer); validate(material) and validate(L) (debug
-/// assertions). Edges and NaN policy: those of shade<F>, point by point.
+/// Pre (checked in debug builds through the precondition handler, detail/config.hpp): spans of
+/// length N (out may be longer; only its first N elements are written); validate(material) and
+/// validate(L); no aliasing: the N output elements overlap neither the inputs read per point
+/// (the N coordinates, the N materials when per point, front_facing) nor each other, except that
+/// an SoA output channel may be exactly one of the coordinate spans (same data(), in-place
+/// shading: each point is read before its colour is stored). An output shifted against an input
+/// would otherwise overwrite points before they are read. Lights, a shared material and env are
+/// copied before the first store and may alias anything.
+/// Edges and NaN policy: those of shade<F>, point by point.
 /// Accuracy: within the published bound of F.mode (phong/accuracy.hpp), tested against the
 /// __float128 reference; against the scalar shade<F> the results differ by the SIMD rsqrt
 /// estimate (< 2 ulp, float lanes) and the exp/log implementations, amplified by the exponent m in

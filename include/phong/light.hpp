@@ -13,7 +13,11 @@ namespace phong {
 /// lightamb / lightdiff / lightspec and seed 003's La / Ld / Ls map one to one.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct light {
-    glm::vec<4, T, Q> position{T(0), T(0), T(1), T(0)}; ///< homogeneous: w = 1 positional, w = 0 directional
+    /// Homogeneous position: w = 1 positional (xyz is the light's point), w = 0 directional (xyz
+    /// points from the surface toward the light). No other w: validate rejects it, since
+    /// light_kind::positional and ::directional do not read w (a point with w != 1 would be shaded
+    /// at xyz there, at xyz / w with light_kind::any). Divide xyz by w yourself for other w > 0.
+    glm::vec<4, T, Q> position{T(0), T(0), T(1), T(0)};
     glm::vec<3, T, Q> ambient{T(0)};  ///< per-light ambient strength (seed 001 lightamb, seed 003 La)
     glm::vec<3, T, Q> diffuse{T(1)};  ///< diffuse strength (seed 001 lightdiff, seed 003 Ld, seed 000 L_i)
     glm::vec<3, T, Q> specular{T(1)}; ///< specular strength (seed 001 lightspec, seed 003 Ls, seed 000 L_i)
@@ -41,7 +45,8 @@ struct light {
     }
 };
 
-/// Checks a light against the model's domain. Rejected: a non-finite position or w < 0; NaN,
+/// Checks a light against the model's domain. Rejected: a non-finite position or a w other than
+/// 0 or 1 (-0 counts as 0); NaN,
 /// inf or negative strengths; attenuation coefficients that are negative, non-finite or all
 /// zero; range <= 0 or NaN; a spot exponent that is negative or non-finite; a cutoff cosine
 /// outside [0, 1] other than -1 (180 degrees); smooth cone cosines outside [-1, 1] or with
@@ -54,7 +59,8 @@ PHONG_HD constexpr validation validate(const light<T, Q>& L)
     using detail::finite;
     using detail::finite_non_negative;
     if (!finite(L.position)) return {"light.position: not finite"};
-    if (L.position.w < T(0)) return {"light.position.w: negative (use w = 1 positional or w = 0 directional)"};
+    if (!(L.position.w == T(0) || L.position.w == T(1)))
+        return {"light.position.w: must be 1 (positional) or 0 (directional)"};
     if (!finite_non_negative(L.ambient)) return {"light.ambient: negative, NaN or inf"};
     if (!finite_non_negative(L.diffuse)) return {"light.diffuse: negative, NaN or inf"};
     if (!finite_non_negative(L.specular)) return {"light.specular: negative, NaN or inf"};

@@ -219,7 +219,7 @@ template <class T> bool material_in_domain(const phong::material<T>& m)
 
 enum class verdict { reject, accept, either };
 
-/// light.hpp: position finite with w >= 0; strengths finite and >= 0; c0, c1, c2 finite, >= 0 and
+/// light.hpp: position finite with w = 0 or w = 1 (-0 is 0); strengths finite and >= 0; c0, c1, c2 finite, >= 0 and
 /// not all zero; range > 0 (inf allowed); spot exponent finite and >= 0; cos_cutoff -1 or in
 /// [0, 1]; cos_inner, cos_outer in [-1, 1] with cos_outer <= cos_inner; |axis| = 1 "within 1e-3",
 /// read as |axis|^2 in (0.998, 1.002). Within 1e-6 (relative) of those two ends either answer is
@@ -229,7 +229,7 @@ template <class T> verdict light_in_domain(const phong::light<T>& L)
     const auto& a = L.attenuation;
     const auto& s = L.spot;
     const wide w = L.position.w;
-    const bool ok = all_fin(L.position) && w >= 0 && all_fin_nonneg(L.ambient) && all_fin_nonneg(L.diffuse) &&
+    const bool ok = all_fin(L.position) && (w == 0 || w == 1) && all_fin_nonneg(L.ambient) && all_fin_nonneg(L.diffuse) &&
                     all_fin_nonneg(L.specular) && fin_nonneg(a.constant) && fin_nonneg(a.linear) &&
                     fin_nonneg(a.quadratic) && !(a.constant == 0 && a.linear == 0 && a.quadratic == 0) &&
                     static_cast<wide>(a.range) > 0 && fin_nonneg(s.exponent) &&
@@ -442,8 +442,8 @@ void dispatch(std::size_t index, const scene<T>& s, bool valid, std::index_seque
 }
 
 /// Moves every material and light parameter into the documented domain, keeping magnitudes: NaN
-/// and inf become 1, negatives their absolute value, alpha and cosines are folded into their
-/// ranges, the spot axis is normalized (in long double) and all-zero attenuation gets c0 = 1.
+/// and inf become 1, negatives their absolute value, a light's w becomes 1 if it was > 0 (else 0),
+/// alpha and cosines are folded into their ranges, the spot axis is normalized (in long double) and all-zero attenuation gets c0 = 1.
 /// Geometry (Q, n, eye, light positions' xyz) is left as decoded.
 template <class T> T repaired(T x) { return std::isfinite(x) ? std::fabs(x) : T(1); }
 template <class T> T folded(T x, T lo, T hi) { return std::isfinite(x) ? std::clamp(x, lo, hi) : hi; }
@@ -462,7 +462,7 @@ template <class T> void repair(scene<T>& s)
             if (!std::isfinite(L.position[k])) L.position[k] = T(1);
             L.ambient[k] = repaired(L.ambient[k]), L.diffuse[k] = repaired(L.diffuse[k]), L.specular[k] = repaired(L.specular[k]);
         }
-        L.position.w = repaired(L.position.w);
+        L.position.w = repaired(L.position.w) > 0 ? T(1) : T(0); // w > 0 positional, else directional
         auto& a = L.attenuation;
         a.constant = repaired(a.constant), a.linear = repaired(a.linear), a.quadratic = repaired(a.quadratic);
         if (a.constant == 0 && a.linear == 0 && a.quadratic == 0) a.constant = T(1);

@@ -1,6 +1,7 @@
 // Compile-time half of the NaN / bad-input policy: shade() in constant evaluation with parameters
 // that validate() rejects must not compile, and the compiler must name
-// phong::detail::precondition_failed_see_phong_validate (detail/config.hpp). Compiled once per case
+// phong::detail::precondition_failed_see_phong_validate (detail/config.hpp) and print validate()'s
+// message, which names the field (checked per case by tests/nan_policy/expect_compile_error.cmake). Compiled once per case
 // by ctest (tests/nan_policy/checks.cmake) with -DPHONG_REJECT_CASE=N; case 0 is the valid control,
 // which must compile cleanly (so a failure of the others is not a broken command line).
 #include <phong/phong.hpp>
@@ -38,6 +39,8 @@ constexpr light<double> make_light()
     L.position.w = -1;
 #elif PHONG_REJECT_CASE == 7
     L.diffuse.x = std::numeric_limits<double>::infinity();
+#elif PHONG_REJECT_CASE == 8
+    L.position = {2, 4, 6, 2}; // homogeneous w = 2: only w = 0 and w = 1 (light.hpp)
 #endif
     return L;
 }

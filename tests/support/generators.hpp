@@ -79,7 +79,7 @@ public:
         return m;
     }
 
-    /// A light near the point Q: positional (w = 1, or sometimes another w > 0 when `any_w`) or
+    /// A light near the point Q: positional (w = 1; `any_w` only consumes the draws that once chose w = 0.5 or 2) or
     /// directional, with strengths in [0, 1], attenuation coefficients, a range beyond Q and spot
     /// cones (both parametrizations) whose axis points roughly at Q.
     phong::light<T> light(const glm::vec<3, T>& Q, bool directional, bool any_w = false)
@@ -93,8 +93,10 @@ public:
             to_light = glm::vec<3, double>(L.position);
         } else {
             const glm::vec<3, T> p = {T(Q.x + uniform(-5, 5)), T(Q.y + uniform(-5, 5)), T(Q.z + uniform(-5, 5))};
-            const T w = any_w && coin(0.3) ? T(coin() ? 0.5 : 2) : T(1);
-            L.position = {p.x * w, p.y * w, p.z * w, w}; // exact: w is a power of two
+            // validate(light) accepts w = 1 only for a positional light (issue 15): the draws that
+            // picked w = 0.5 or 2 here are kept, so the rest of the random stream is unchanged.
+            if (any_w && coin(0.3)) (void)coin();
+            L.position = {p.x, p.y, p.z, T(1)};
             to_light = glm::vec<3, double>(p) - glm::vec<3, double>(Q);
         }
         L.ambient = color(0, 0.5);

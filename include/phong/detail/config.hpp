@@ -1,9 +1,15 @@
-// phong: configuration macros shared by every header.
+// phong: configuration macros shared by every header, and the precondition handler.
 // SPDX-License-Identifier: MIT
 #pragma once
 
 #include <cassert>
 #include <type_traits>
+
+#if !defined(__CUDA_ARCH__)
+#  include <atomic>
+#  include <cstdio>
+#  include <cstdlib>
+#endif
 
 /// PHONG_HD marks every function so the headers compile in CUDA device code.
 /// Empty unless compiled by nvcc (or clang in CUDA mode).
@@ -13,30 +19,123 @@
 #  define PHONG_HD
 #endif
 
-/// PHONG_ASSERT(cond, msg): a debug-build check of a precondition. In constant evaluation a
-/// failed check is a compile error (see detail::precondition_failed); at run time it is
-/// `assert` (gone under NDEBUG). Define PHONG_ASSERT yourself before including to replace it.
-#ifndef PHONG_ASSERT
-#  define PHONG_ASSERT(cond, msg) assert((cond) && (msg))
+namespace phong {
+
+/// A precondition handler: called with the failed check's message (validate's, naming the field
+/// and the reason, e.g. "material.kd: negative, NaN or inf"; or shade_batch's), and the file and
+/// line of the check. See set_precondition_handler.
+using precondition_handler = void (*)(const char* message, const char* file, int line);
+
+#if !defined(__CUDA_ARCH__)
+namespace detail {
+
+/// The default handler: prints "phong: precondition failed: <message> (<file>:<line>)" to stderr
+/// and calls std::abort().
+[[noreturn]] inline void default_precondition_handler(const char* message, const char* file, int line) noexcept
+{
+    std::fprintf(stderr, "phong: precondition failed: %s (%s:%d)\n", message, file, line);
+    std::fflush(stderr);
+    std::abort();
+}
+
+inline std::atomic<precondition_handler> current_precondition_handler{&default_precondition_handler};
+
+} // namespace detail
+
+/// Installs the handler that debug-build precondition checks (PHONG_ASSERT: shade's validate()
+/// of every parameter, shade_batch's span checks) call when they fail, and returns the previous
+/// one; nullptr restores the default (print "phong: precondition failed: <message> (file:line)" to
+/// stderr, then std::abort()). Thread-safe (an atomic pointer); process-wide.
+/// A handler may return (e.g. a test recording the message; throwing terminates, the checks are in
+/// noexcept functions): the call then goes on as an NDEBUG
+/// build would, with the result unspecified but no undefined behaviour (shade on out-of-domain
+/// parameters gives some value, possibly NaN; shade_batch with spans of wrong lengths writes
+/// nothing). Not consulted in constant evaluation (a compile error instead) nor in CUDA device
+/// code (plain assert there), nor under NDEBUG (no check at all).
+inline precondition_handler set_precondition_handler(precondition_handler handler) noexcept
+{
+    return detail::current_precondition_handler.exchange(handler ? handler : &detail::default_precondition_handler);
+}
+
+/// The handler set_precondition_handler installed (the default one if none).
+inline precondition_handler get_precondition_handler() noexcept
+{
+    return detail::current_precondition_handler.load();
+}
+
+namespace detail {
+/// What a failed PHONG_ASSERT calls at run time on the host: the installed handler.
+inline void precondition_failed(const char* message, const char* file, int line) noexcept
+{
+    current_precondition_handler.load()(message, file, line);
+}
+} // namespace detail
+#endif
+
+} // namespace phong
+
+/// PHONG_ASSERT(cond, msg): a debug-build check of a precondition. Under NDEBUG nothing is
+/// evaluated. Otherwise a false cond calls the precondition handler with msg (a const char*, may
+/// be computed at run time, e.g. validate(x).message()) and __FILE__, __LINE__; see
+/// phong::set_precondition_handler (default: print "phong: precondition failed: <msg> (file:line)"
+/// and abort). In CUDA device code it is the plain assert((cond) && (msg)). Define PHONG_ASSERT
+/// yourself before including any phong header to replace it altogether (detail::require then
+/// uses it too).
+#if defined(PHONG_ASSERT)
+#  define PHONG_DETAIL_ASSERT_AT(cond, msg, file, line) PHONG_ASSERT(cond, msg)
+#else
+#  if defined(NDEBUG)
+#    define PHONG_DETAIL_ASSERT_AT(cond, msg, file, line) ((void)0)
+#  elif defined(__CUDA_ARCH__)
+#    define PHONG_DETAIL_ASSERT_AT(cond, msg, file, line) assert((cond) && (msg))
+#  else
+#    define PHONG_DETAIL_ASSERT_AT(cond, msg, file, line) \
+        (static_cast<bool>(cond) ? void(0) : ::phong::detail::precondition_failed((msg), (file), (line)))
+#  endif
+#  define PHONG_ASSERT(cond, msg) PHONG_DETAIL_ASSERT_AT(cond, msg, __FILE__, __LINE__)
+#endif
+
+/// The file and line of the caller, as default arguments (g++ and clang builtins; std::source_location
+/// needs clang 15): detail::require reports its caller's location, not its own.
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDACC__)
+#  define PHONG_DETAIL_CALLER_FILE __builtin_FILE()
+#  define PHONG_DETAIL_CALLER_LINE __builtin_LINE()
+#else
+#  define PHONG_DETAIL_CALLER_FILE __FILE__
+#  define PHONG_DETAIL_CALLER_LINE __LINE__
 #endif
 
 namespace phong::detail {
 
-/// Called only when a precondition fails during constant evaluation. It is deliberately not
-/// constexpr, so the compiler rejects the constant expression and names this function.
-PHONG_HD inline void precondition_failed_see_phong_validate(const char*) noexcept {}
+/// Called only when a precondition fails during constant evaluation, and never a constant
+/// expression then: it orders the message's address against a local's, a comparison whose result
+/// is unspecified ([expr.const]: not a core constant expression). So the evaluation is rejected,
+/// the compiler names this function, and both g++ 12 and clang 14 print the message literal (g++
+/// in the failed comparison, clang in the call), which names the field (checked by
+/// tests/nan_policy/checks.cmake). A null message would be a constant expression: require never
+/// passes one.
+PHONG_HD constexpr void precondition_failed_see_phong_validate(const char* message) noexcept
+{
+    const char unrelated = 0;
+    if (message != nullptr && message < &unrelated) return;
+}
 
-/// Checks `ok`: a compile error in constant evaluation, an assertion at run time (debug builds).
-PHONG_HD constexpr void require(bool ok, const char* message) noexcept
+/// Checks `ok`: a compile error in constant evaluation (naming the message), PHONG_ASSERT at run
+/// time (the precondition handler in debug builds, with the caller's file and line; nothing under
+/// NDEBUG or in CUDA device code).
+PHONG_HD constexpr void require(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
+                                int line = PHONG_DETAIL_CALLER_LINE) noexcept
 {
     if (std::is_constant_evaluated()) {
         if (!ok) precondition_failed_see_phong_validate(message);
     } else {
 #if !defined(__CUDA_ARCH__)
-        PHONG_ASSERT(ok, message);
+        PHONG_DETAIL_ASSERT_AT(ok, message, file, line);
 #endif
         (void)ok;
         (void)message;
+        (void)file;
+        (void)line;
     }
 }
 

@@ -1,0 +1,81 @@
+// detail/config.hpp, issue 15 item 3: a failed precondition reaches the user with validate()'s
+// message (which field, why) through a replaceable handler. The default handler (print, abort) is
+// checked by tests/nan_policy/checks.cmake (a program that must die with the field in stderr);
+// here: installing, restoring, and a custom handler receiving the message, file and line.
+#include <phong/phong.hpp>
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+using namespace phong;
+
+namespace {
+
+struct call {
+    std::string message, file;
+    int line;
+};
+std::vector<call> calls;
+void record(const char* message, const char* file, int line) { calls.push_back({message, file, line}); }
+void other(const char*, const char*, int) {}
+
+const std::array<light<float>, 1> one_light{light<float>::seed000({0, 0, 1, 0}, {1, 1, 1})};
+
+} // namespace
+
+TEST_CASE("set_precondition_handler: returns the previous handler; nullptr restores the default")
+{
+    // (Compared into bools: doctest cannot print function pointers.)
+    const precondition_handler original = get_precondition_handler();
+    REQUIRE(static_cast<bool>(original));
+    bool same = set_precondition_handler(&record) == original;
+    CHECK(same);
+    same = get_precondition_handler() == &record;
+    CHECK(same);
+    same = set_precondition_handler(&other) == &record;
+    CHECK(same);
+    same = set_precondition_handler(nullptr) == &other;
+    CHECK(same);
+    same = get_precondition_handler() == original; // the default again
+    CHECK(same);
+}
+
+TEST_CASE("a failed precondition calls the installed handler with validate()'s message, file and line")
+{
+    calls.clear();
+    const precondition_handler previous = set_precondition_handler(&record);
+    material<float> mat{};
+    mat.kd.y = -0.5f;
+    const glm::vec3 c = shade<features{}>(glm::vec3(0, 0, -2), glm::vec3(0, 0, 1), mat, one_light);
+    light<float> w2 = one_light[0];
+    w2.position = {0.0f, 0.0f, 2.0f, 2.0f};
+    const std::array<light<float>, 1> bad_light{w2};
+    (void)shade<features{}>(glm::vec3(0, 0, -2), glm::vec3(0, 0, 1), material<float>{}, bad_light);
+    set_precondition_handler(previous);
+    (void)c;
+#if defined(NDEBUG)
+    CHECK(calls.empty()); // no check at all in release builds
+#else
+    REQUIRE(calls.size() == 2);
+    // The field and the reason, as material.hpp and light.hpp document them.
+    CHECK(calls[0].message.find("material.kd") == 0);
+    CHECK(calls[0].message.find("negative") != std::string::npos);
+    CHECK(calls[1].message.find("light.position.w") == 0);
+    for (const call& k : calls) {
+        CHECK(k.file.find("phong") != std::string::npos);
+        CHECK(k.line > 0);
+    }
+#endif
+}
+
+TEST_CASE("valid parameters never call the handler")
+{
+    calls.clear();
+    const precondition_handler previous = set_precondition_handler(&record);
+    (void)shade<features{}>(glm::vec3(0, 0, -2), glm::vec3(0, 0, 1), material<float>{}, one_light);
+    set_precondition_handler(previous);
+    CHECK(calls.empty());
+}
