@@ -5,7 +5,7 @@
 // Independent of tests/support/{stiff_classes,reference,wide}.hpp on purpose: another generator
 // (xoshiro256**, not splitmix64), other distributions (log-uniform coordinates across the whole
 // float/double range, n.l down to 1e-7, highlight windows 1 - r.v up to 1e-4 around the peak,
-// m up to 1e6, one to four lights of every kind including homogeneous w = 0.5 and 3), and a
+// m up to 1e6, one to four lights, directional (w = 0) and positional (w = 1)), and a
 // reference that is the seed formula written literally in __float128 (libquadmath, declared here,
 // so clang++ gets it too), sharing no code with the library or the project's reference.
 #pragma once
@@ -358,8 +358,8 @@ scene<T> make_scene_once(xoshiro& g)
         if (kind == 0) { // directional: |xyz| log-uniform
             const long double length = g.chance(0.2) ? std::ldexp(1.0L, int(g.range(-full, full))) : reach;
             L.position = glm::vec<4, T>(to_t<T>(l * length), T(0));
-        } else if (kind == 3) { // homogeneous w: d = L.xyz - w Q
-            const long double w = g.chance(0.5) ? 0.5L : 3.0L;
+        } else if (kind == 3) { // positional again (validate accepts w = 0 or 1 only); the draw keeps the stream
+            const long double w = g.chance(0.5) ? 1.0L : 1.0L;
             const l3 Q{(long double)s.position.x, (long double)s.position.y, (long double)s.position.z};
             L.position = glm::vec<4, T>(to_t<T>(Q * w + l * reach), T(w));
         } else { // positional

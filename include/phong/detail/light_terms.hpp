@@ -65,7 +65,7 @@ PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T
 }
 
 /// f_i(Q) = attenuation(distance) * spot(l) * visibility: the light's weight at the point.
-/// distance = |L.xyz - w Q| (divided by w here for light_kind::any), read only with attenuation;
+/// distance = |L.xyz - Q| (validate: w is 0 or 1), read only with attenuation;
 /// l = the unit light vector (0 if none), read only with a spot. Directional lights (w = 0) are
 /// not attenuated. U is the light's own scalar type: float lights shaded in double keep float's
 /// cap on f (attenuation.hpp), so a light at Q gives the same large finite value as in float.
@@ -76,7 +76,6 @@ PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T dista
 {
     T f = T(1);
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) {
-        if constexpr (F.lights == light_kind::any) distance = distance / phong::select(w > T(0), w, T(1));
         T fa;
         if constexpr (F.attenuation == attenuation_model::polynomial)
             fa = phong::attenuation_polynomial(distance, T(L.attenuation.constant), T(L.attenuation.linear), T(L.attenuation.quadratic));
