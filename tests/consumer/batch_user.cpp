@@ -102,9 +102,11 @@ template <features F, class T> bool check(const char* name)
         }
         for (std::size_t i = 0; i < count; ++i) {
             const std::uint64_t visible = masked_lights ? h.masks[i] : ~std::uint64_t(0);
+            // A span: clang++ 14 with libstdc++ 12 cannot form ranges::ref_view<std::vector>.
+            const std::span<const light<T>> all_lights(lights);
             color<F, T> want;
-            if constexpr (given) want = shade<F>(h.p[i], h.n[i], h.v[i], mat, masked(lights, visible), env);
-            else want = shade<F>(h.p[i], h.n[i], mat, masked(lights, visible), env);
+            if constexpr (given) want = shade<F>(h.p[i], h.n[i], h.v[i], mat, masked(all_lights, visible), env);
+            else want = shade<F>(h.p[i], h.n[i], mat, masked(all_lights, visible), env);
             ok = close(from_soa[i], want, name, i) && ok;
             if (!(from_aos[i] == from_soa[i])) {
                 std::printf("batch_user: %s point %zu: AoS differs from SoA\n", name, i);
