@@ -4,7 +4,10 @@
 # "<!-- tests/consumer/<file>: ... -->"; then install phong to a temporary prefix with the README's
 # install command, and build the separate project tests/consumer against it
 # (find_package(phong CONFIG REQUIRED) + phong::phong) with CMAKE_PREFIX_PATH, with g++ and
-# clang++, and run it.
+# clang++, and run it. Then tests/consumer_batch: a renderer's translation unit calling shade_batch
+# with -march=native and -Wall -Wextra -Wpedantic -Werror, phong's headers not treated as system
+# headers (issue 13: warning-free in users' builds), at -O1 and -O3, with g++ and clang++; built once
+# more with -DPHONG_USE_XSIMD=OFF (g++), which must reach the code as PHONG_NO_XSIMD.
 set -euo pipefail
 root="$PWD"
 tmp="$(mktemp -d)"
@@ -30,3 +33,17 @@ for cxx in g++ clang++; do
   cmake --build "$tmp/consumer-$cxx"
   "$tmp/consumer-$cxx/app"
 done
+batch_user() { # batch_user <name> <compiler> [extra cmake args]
+  local name="$1" cxx="$2"
+  shift 2
+  cmake -S "$root/tests/consumer_batch" -B "$tmp/$name" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" \
+    -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Werror" "$@"
+  grep -q "phong_DIR:PATH=$tmp/prefix/" "$tmp/$name/CMakeCache.txt"
+  cmake --build "$tmp/$name" -j2
+  "$tmp/$name/batch_user_O1"
+  "$tmp/$name/batch_user_O3"
+}
+for cxx in g++ clang++; do
+  batch_user "batch-$cxx" "$cxx"
+done
+batch_user batch-no-xsimd g++ -DPHONG_USE_XSIMD=OFF

@@ -14,20 +14,27 @@
 #include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #if !defined(PHONG_NO_XSIMD) && !defined(__CUDACC__) && __has_include(<xsimd/xsimd.hpp>)
-#  include <xsimd/xsimd.hpp>
-#  define PHONG_HAS_XSIMD 1
 // g++ 12 reports the _mm512_undefined_* placeholders inside its own AVX-512 intrinsics (which
-// xsimd calls) as uninitialized once they are inlined here; they are not, by design.
+// xsimd calls) as (maybe) uninitialized once they are inlined; they are not, by design. g++
+// decides by the source position of each function in the inlining chain, innermost first, not
+// by where a template is instantiated: so the region opens *before* xsimd (and through it
+// <immintrin.h>) is included, and every chain that runs through xsimd's code is covered, also
+// from phong's templates instantiated in a user's file (tests/consumer/batch_user.cpp). Include
+// phong/batch.hpp before <xsimd/xsimd.hpp> for this to hold.
 #  if defined(__GNUC__) && !defined(__clang__)
 #    pragma GCC diagnostic push
 #    pragma GCC diagnostic ignored "-Wuninitialized"
 #    pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #    define PHONG_BATCH_POP_DIAGNOSTICS 1
 #  endif
+#  include <xsimd/xsimd.hpp>
+#  define PHONG_HAS_XSIMD 1
 #else
 #  define PHONG_HAS_XSIMD 0
 #endif
@@ -212,6 +219,35 @@ template <class T> struct soa_rgba {
     std::span<T> r, g, b, a;
 };
 
+/// The points of one shade_batch call, structure of arrays: a renderer's per-point inputs in
+/// one argument (designated initializers name the ones used). N = positions.x.size().
+///   positions, normals: N points and their normals (any length; as shade<F> takes them);
+///   views: N view vectors (from each point toward its viewer, e.g. -ray.dir), read only and
+///          required with features::view = view_model::given; leave empty otherwise;
+///   front_facing: N flags, read only for facing::flag; empty: all front-facing;
+///   light_masks: N masks, bit j set: light j is visible at that point (a shadow ray's result);
+///          a light whose bit is clear is skipped there exactly as if it were not in the list;
+///          empty: every light visible everywhere. Lights past the 64th are seen by no point
+///          when masks are given (as phong::masked).
+template <class T> struct soa_points {
+    soa3<T> positions;
+    soa3<T> normals;
+    soa3<T> views{};
+    std::span<const bool> front_facing{};
+    std::span<const std::uint64_t> light_masks{};
+};
+
+/// The same, array of structures: a ray tracer's hit records as glm vectors
+/// (std::vector<glm::vec3> converts), loaded into lanes per step with a small transpose, so
+/// nothing needs repacking. Fields as soa_points; N = positions.size().
+template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
+    std::span<const glm::vec<3, T, Q>> positions;
+    std::span<const glm::vec<3, T, Q>> normals;
+    std::span<const glm::vec<3, T, Q>> views{};
+    std::span<const bool> front_facing{};
+    std::span<const std::uint64_t> light_masks{};
+};
+
 namespace detail {
 
 template <class V, class T, glm::qualifier Q>
@@ -282,33 +318,139 @@ material<V, Q> gather(const material<T, Q>* m, std::size_t count)
     return out;
 }
 
-/// One batch step: shade_batch's kernel over `count` <= W points starting at index i. Loads
-/// straight from the spans when the step is full, through padded copies for the tail.
-template <features F, class V, class T, glm::qualifier Q, class Materials, class Output>
-void shade_step(std::size_t i, std::size_t count, const soa3<T>& positions, const soa3<T>& normals,
-                const Materials& materials, const material<V, Q>& shared_mat, std::span<const light<V, Q>> lights,
-                const environment<V, Q>& env, std::span<const bool> front_facing, const Output& out)
+/// Lanes [0, W) of a vector input for points i .. i + count - 1 (count <= W): SoA straight from
+/// the three spans when the step is full, else through a padded copy (lanes past count: pad).
+template <class V, glm::qualifier Q, class T>
+glm::vec<3, V, Q> load_vec3(const soa3<T>& in, std::size_t i, std::size_t count, const glm::vec<3, T, Q>& pad)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
+    if (count == W) return {load<V>(in.x.data() + i), load<V>(in.y.data() + i), load<V>(in.z.data() + i)};
+    alignas(64) T buf[3][W];
+    for (std::size_t k = 0; k < W; ++k) {
+        buf[0][k] = k < count ? in.x[i + k] : pad.x;
+        buf[1][k] = k < count ? in.y[i + k] : pad.y;
+        buf[2][k] = k < count ? in.z[i + k] : pad.z;
+    }
+    return {load<V>(buf[0]), load<V>(buf[1]), load<V>(buf[2])};
+}
+/// The same from an array of glm vectors (AoS): a W x 3 transpose through a small buffer. The
+/// lanes are the same values as from SoA spans, so both layouts give the same bits.
+template <class V, glm::qualifier Q, class T>
+glm::vec<3, V, Q> load_vec3(std::span<const glm::vec<3, T, Q>> in, std::size_t i, std::size_t count, const glm::vec<3, T, Q>& pad)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
+    alignas(64) T buf[3][W];
+    for (std::size_t k = 0; k < W; ++k) {
+        const glm::vec<3, T, Q>& p = k < count ? in[i + k] : pad;
+        buf[0][k] = p.x;
+        buf[1][k] = p.y;
+        buf[2][k] = p.z;
+    }
+    return {load<V>(buf[0]), load<V>(buf[1]), load<V>(buf[2])};
+}
+
+/// sums where `lanes` is set, else `before`: the lanes that do not see a light keep exactly the
+/// sums they had without it.
+template <class V, glm::qualifier Q>
+light_sums<V, Q> select_sums(const mask_t<V>& lanes, const light_sums<V, Q>& sums, const light_sums<V, Q>& before)
+{
+    light_sums<V, Q> r;
+    for (int c = 0; c < 3; ++c) {
+        r.ambient[c] = phong::select(lanes, sums.ambient[c], before.ambient[c]);
+        r.diffuse[c] = phong::select(lanes, sums.diffuse[c], before.diffuse[c]);
+        r.specular[c] = phong::select(lanes, sums.specular[c], before.specular[c]);
+    }
+    return r;
+}
+
+/// Every light's terms added to the sums of one step, light j only in the lanes whose mask has
+/// bit j (bits: one mask per lane, 0 past the tail; null: every light in every lane). A light no
+/// lane sees is skipped; one that every point of the step sees is added as without masks; else
+/// it is added and the lanes that do not see it get their sums back (select: exactly nothing
+/// from it, its ambient term included). Lights past the 64th are seen by no point. With masks,
+/// one call site of add_light for every case: a masked light and a removed one (the same call
+/// with the light left out) run the same compiled code.
+template <features F, class V, class T, glm::qualifier Q>
+void add_masked_lights(light_sums<V, Q>& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
+                       const V& m, const std::uint64_t* bits, std::size_t count)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
+    if constexpr (std::is_same_v<V, T>) { // scalar lanes (no xsimd): shade<F>'s own light loop
+        if (!bits) add_lights<F>(sums, s, lights, m);
+        else add_lights<F>(sums, s, masked(lights, bits[0]), m);
+        return;
+    }
+    if (!bits) { // no masks: the plain loop (the select-ready copy of the sums below costs ~8 %)
+        add_lights<F>(sums, s, lights, m);
+        return;
+    }
+    std::uint64_t any = 0, all = ~std::uint64_t(0);
+    for (std::size_t k = 0; k < W; ++k) {
+        any |= bits[k];
+        if (k < count) all &= bits[k];
+    }
+    const std::size_t n = std::min<std::size_t>(lights.size(), 64);
+    for (std::size_t j = 0; j < n; ++j) {
+        const std::uint64_t bit = std::uint64_t(1) << j;
+        if (!(any & bit)) continue;
+        const bool partial = !(all & bit);
+        mask_t<V> lanes(true);
+        if (partial) {
+            alignas(64) T seen[W];
+            for (std::size_t k = 0; k < W; ++k) seen[k] = (bits[k] & bit) ? T(1) : T(0);
+            lanes = load<V>(seen) > V(T(0));
+        }
+        const light_sums<V, Q> before = sums;
+        detail::add_light<F>(sums, s, lights[j], m);
+        if (partial) sums = select_sums<V, Q>(lanes, sums, before);
+    }
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+#  define PHONG_BATCH_NOINLINE __attribute__((noinline))
+#else
+#  define PHONG_BATCH_NOINLINE
+#endif
+
+/// The lanes' colour: prepare, every (visible) light, finish. Not inlined, on purpose: every
+/// layout (soa3, soa_points, aos_points; either output) calls this one compiled function, so the
+/// compiler's choices (FMA contraction above all) are the same for all of them and the layouts
+/// agree bit for bit (inlined, AoS and SoA differed by an ulp at -march=native). Cost of the
+/// call and of the mask-ready loop: about 12 % more instructions per step than the kernel inlined
+/// into the old SoA loop (exact Phong, 4 lights, AVX2, callgrind). bits: W light masks (0 past
+/// the tail), or null.
+template <features F, class V, class T, glm::qualifier Q>
+PHONG_BATCH_NOINLINE color<F, V, Q> shade_lanes(const glm::vec<3, V, Q>& position, const glm::vec<3, V, Q>& normal,
+                                                const glm::vec<3, V, Q>& view, const mask_t<V>& front, const material<V, Q>& mat,
+                                                std::span<const light<V, Q>> lights, const environment<V, Q>& env,
+                                                const std::uint64_t* bits, std::size_t count)
+{
+    const frame_t<F, V, Q> s = prepare<F>(position, normal, view, env, front);
+    light_sums<V, Q> sums{};
+    add_masked_lights<F, V, T, Q>(sums, s, lights, mat.shininess, bits, count);
+    return finish<F>(sums, s, mat, env);
+}
+
+/// One batch step over points of any layout (soa_points, aos_points): shade_batch's kernel over
+/// `count` <= W points starting at index i. Full steps load SoA spans directly; tails and AoS
+/// go through padded copies (the pad: Q = (0, 0, -1), n = v = (0, 0, 1), facing the eye).
+template <features F, class V, class Points, class T, glm::qualifier Q, class Materials, class Output>
+void shade_points_step(std::size_t i, std::size_t count, const Points& points, const Materials& materials,
+                       const material<V, Q>& shared_mat, std::span<const light<V, Q>> lights, const environment<V, Q>& env,
+                       const Output& out)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     constexpr bool per_point_material = !std::is_same_v<Materials, material<T, Q>>;
-    const std::span<const T> in[6] = {positions.x, positions.y, positions.z, normals.x, normals.y, normals.z};
-    V lanes[6];
-    if (count == W) {
-        for (int c = 0; c < 6; ++c) lanes[c] = load<V>(in[c].data() + i);
-    } else {
-        // Tail: padded with a harmless point, Q = (0, 0, -1) with n = (0, 0, 1) facing the eye.
-        alignas(64) T buf[W];
-        for (int c = 0; c < 6; ++c) {
-            const T pad = c == 2 ? T(-1) : c == 5 ? T(1) : T(0);
-            for (std::size_t k = 0; k < W; ++k) buf[k] = k < count ? in[c][i + k] : pad;
-            lanes[c] = load<V>(buf);
-        }
-    }
+    using vec3 = glm::vec<3, T, Q>;
+    const glm::vec<3, V, Q> position = load_vec3<V, Q>(points.positions, i, count, vec3(T(0), T(0), T(-1)));
+    const glm::vec<3, V, Q> normal = load_vec3<V, Q>(points.normals, i, count, vec3(T(0), T(0), T(1)));
+    glm::vec<3, V, Q> view(V(T(0)));
+    if constexpr (F.view == view_model::given) view = load_vec3<V, Q>(points.views, i, count, vec3(T(0), T(0), T(1)));
     mask_t<V> front(true);
     if constexpr (F.two_sided == facing::flag) {
-        if (!front_facing.empty()) {
+        if (!points.front_facing.empty()) {
             alignas(64) T buf[W];
-            for (std::size_t k = 0; k < W; ++k) buf[k] = k < count && !front_facing[i + k] ? T(0) : T(1);
+            for (std::size_t k = 0; k < W; ++k) buf[k] = k < count && !points.front_facing[i + k] ? T(0) : T(1);
             front = load<V>(buf) > V(T(0));
         }
     }
@@ -316,11 +458,11 @@ void shade_step(std::size_t i, std::size_t count, const soa3<T>& positions, cons
     if constexpr (per_point_material) gathered = gather<V>(materials.data() + i, count);
     const material<V, Q>& mat = per_point_material ? gathered : shared_mat;
 
-    const frame_t<F, V, Q> s = prepare<F>(glm::vec<3, V, Q>(lanes[0], lanes[1], lanes[2]),
-                                             glm::vec<3, V, Q>(lanes[3], lanes[4], lanes[5]), glm::vec<3, V, Q>(V(T(0))), env, front);
-    light_sums<V, Q> sums{};
-    add_lights<F>(sums, s, lights, mat.shininess);
-    const color<F, V, Q> c = finish<F>(sums, s, mat, env);
+    std::uint64_t bits[W] = {};
+    const bool masked = !points.light_masks.empty();
+    if (masked)
+        for (std::size_t k = 0; k < W; ++k) bits[k] = k < count ? points.light_masks[i + k] : 0;
+    const color<F, V, Q> c = shade_lanes<F, V, T, Q>(position, normal, view, front, mat, lights, env, masked ? bits : nullptr, count);
 
     constexpr int channels = F.alpha ? 4 : 3;
     if constexpr (std::is_same_v<Output, soa_rgba<T>>) {
@@ -395,12 +537,23 @@ bool output_overlaps_input(const soa3<T>& positions, const soa3<T>& normals, con
     return false;
 }
 
+/// One batch step of the SoA overloads without views or masks (shade_batch_impl's loop).
+template <features F, class V, class T, glm::qualifier Q, class Materials, class Output>
+void shade_step(std::size_t i, std::size_t count, const soa3<T>& positions, const soa3<T>& normals,
+                const Materials& materials, const material<V, Q>& shared_mat, std::span<const light<V, Q>> lights,
+                const environment<V, Q>& env, std::span<const bool> front_facing, const Output& out)
+{
+    const soa_points<T> points{positions, normals, {}, front_facing, {}};
+    shade_points_step<F, V, soa_points<T>, T, Q>(i, count, points, materials, shared_mat, lights, env, out);
+}
+
 template <features F, class T, glm::qualifier Q, class Materials, class Output>
 void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Materials& materials,
                       std::span<const light<T, Q>> lights, const Output& out, const environment<T, Q>& env,
                       std::span<const bool> front_facing)
 {
-    static_assert(F.view != view_model::given, "shade_batch: per-point view vectors are not supported yet; use eye_point");
+    static_assert(F.view != view_model::given,
+                  "shade_batch: view_model::given needs a view vector per point: pass soa_points/aos_points with .views");
     using V = simd_batch<T>;
     constexpr std::size_t W = batch_width<T>;
     constexpr bool per_point_material = !std::is_same_v<Materials, material<T, Q>>;
@@ -449,6 +602,78 @@ void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Ma
     if (i < n) shade_step<F, V>(i, n - i, positions, normals, materials, shared, lane_span, lane_env, front_facing, out);
 }
 
+/// Number of vectors in an SoA or AoS input (SoA: the three spans' common length, or a length
+/// no valid input has when they differ).
+template <class T> std::size_t vec3_count(const soa3<T>& v)
+{
+    return v.y.size() == v.x.size() && v.z.size() == v.x.size() ? v.x.size() : std::size_t(-1);
+}
+template <class T, glm::qualifier Q> std::size_t vec3_count(std::span<const glm::vec<3, T, Q>> v) { return v.size(); }
+
+/// shade_batch over soa_points or aos_points: preconditions checked (debug builds), lights,
+/// shared material and environment broadcast once, then one shade_points_step per W points.
+template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
+void shade_points_impl(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
+                       const Output& out, const environment<T, Q>& env)
+{
+    using V = simd_batch<T>;
+    constexpr std::size_t W = batch_width<T>;
+    constexpr bool per_point_material = !std::is_same_v<Materials, material<T, Q>>;
+    const std::size_t n = vec3_count(points.positions);
+    [[maybe_unused]] std::size_t out_size = 0;
+    if constexpr (std::is_same_v<Output, soa_rgba<T>>)
+        out_size = std::min({out.r.size(), out.g.size(), out.b.size(), F.alpha ? out.a.size() : out.r.size()});
+    else
+        out_size = out.size();
+    PHONG_ASSERT(vec3_count(points.positions) != std::size_t(-1), "shade_batch: position spans of different lengths");
+    PHONG_ASSERT(vec3_count(points.normals) == n && out_size >= n, "shade_batch: spans of different lengths");
+    if constexpr (F.view == view_model::given)
+        PHONG_ASSERT(vec3_count(points.views) == n, "shade_batch: view_model::given needs one view vector per point (.views)");
+    else
+        PHONG_ASSERT(vec3_count(points.views) == 0, "shade_batch: .views is read only with features::view = view_model::given");
+    PHONG_ASSERT(points.front_facing.empty() || points.front_facing.size() == n, "shade_batch: front_facing length");
+    PHONG_ASSERT(points.light_masks.empty() || points.light_masks.size() == n, "shade_batch: light_masks length");
+#if !defined(NDEBUG)
+    if constexpr (std::is_same_v<Points, soa_points<T>>) {
+        PHONG_ASSERT((!output_overlaps_input<F.alpha ? 4 : 3, T, Q>(points.positions, points.normals, materials, out, points.front_facing, n)),
+                     "shade_batch: an output span overlaps an input span (only an output channel equal to an input "
+                     "coordinate span, the same data() and size(), may alias it)");
+    } else { // AoS: the output overlaps none of the point arrays
+        const void* out_data = nullptr;
+        std::size_t out_bytes = 0;
+        if constexpr (std::is_same_v<Output, soa_rgba<T>>) out_data = out.r.data(), out_bytes = n * sizeof(T);
+        else out_data = out.data(), out_bytes = n * sizeof(typename Output::value_type);
+        bool overlap = false;
+        for (const auto& a : {points.positions, points.normals, points.views})
+            overlap = overlap || bytes_overlap(out_data, out_bytes, a.data(), a.size() * sizeof(glm::vec<3, T, Q>));
+        PHONG_ASSERT(!overlap, "shade_batch: the output overlaps the input points");
+    }
+#endif
+    if constexpr (per_point_material) {
+        PHONG_ASSERT(materials.size() == n, "shade_batch: one material per point");
+#if !defined(NDEBUG)
+        for (const material<T, Q>& m : materials) PHONG_ASSERT(static_cast<bool>(validate(m)), validate(m).message());
+#endif
+    } else {
+        PHONG_ASSERT(static_cast<bool>(validate(materials)), validate(materials).message());
+    }
+#if !defined(NDEBUG)
+    for (const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
+#endif
+
+    std::vector<light<V, Q>> lane_lights;
+    lane_lights.reserve(lights.size());
+    for (const light<T, Q>& L : lights) lane_lights.push_back(splat<V>(L));
+    material<V, Q> shared{};
+    if constexpr (!per_point_material) shared = splat<V>(materials);
+    const environment<V, Q> lane_env{splat<V>(env.ambient), splat<V>(env.eye)};
+    const std::span<const light<V, Q>> lane_span(lane_lights);
+
+    std::size_t i = 0;
+    for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, materials, shared, lane_span, lane_env, out);
+    if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, materials, shared, lane_span, lane_env, out);
+}
+
 } // namespace detail
 
 /// Shades N points at once: out[i] = shade<F>(position[i], normal[i], mat, lights, env,
@@ -461,6 +686,8 @@ void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Ma
 ///   out: SoA channels (soa_rgba: r, g, b, and a when F.alpha), or a span of N interleaved
 ///        colours (std::span<color<F, T>>: glm::vec3, or glm::vec4 when F.alpha);
 ///   front_facing: N flags, read only for facing::flag; empty means all front-facing.
+/// Per-point view vectors (view_model::given: a compile error here), per-point light masks and
+/// AoS glm::vec3 inputs: the soa_points / aos_points overloads below.
 /// Pre (checked in debug builds through the precondition handler, detail/config.hpp): spans of
 /// length N (out may be longer; only its first N elements are written); validate(material) and
 /// validate(L); no aliasing: the N output elements overlap neither the inputs read per point
@@ -509,9 +736,92 @@ void shade_batch(const soa3<T>& positions, const soa3<T>& normals, std::span<con
     detail::shade_batch_impl<F>(positions, normals, materials, lights, out, env, front_facing);
 }
 
+/// Shades N points given as soa_points (or aos_points, below): for every i,
+///   out[i] = shade<F>(p[i], n[i], [v[i],] mat, masked(lights, light_masks[i]), env, front_facing[i]),
+/// with v[i] = points.views (view_model::given only: secondary rays each with their own view
+/// vector), masked() only when light_masks is given (shadows: each point its own set of lights;
+/// a light whose bit is clear gives that point nothing, its ambient term included, exactly as if
+/// it were removed), front_facing only for facing::flag. Every other argument, the kernels,
+/// edges, NaN policy and accuracy are those of the shade_batch overloads above; masks and views
+/// change no other lane's result (but with features::stable_twofold_above > 0 the stable mode
+/// picks its depth per step from every lane).
+/// lights, materials and out are spans (a std::vector converts); N = the number of positions.
+/// Pre (debug assertions): normals, and views with view_model::given, N long (views empty
+/// otherwise); front_facing and light_masks empty or N long; out at least N long; per-point
+/// materials N long; validate(material) and validate(L). Masks with more than 64 lights: lights
+/// past the 64th are seen by no point.
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+void shade_batch(const soa_points<T>& points, const material<T, Q>& mat, std::type_identity_t<std::span<const light<T, Q>>> lights,
+                 const soa_rgba<T>& out, const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, mat, lights, out, env);
+}
+
+/// shade_batch over soa_points, one material per point.
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+void shade_batch(const soa_points<T>& points, std::type_identity_t<std::span<const material<T, Q>>> materials,
+                 std::type_identity_t<std::span<const light<T, Q>>> lights, const soa_rgba<T>& out,
+                 const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, materials, lights, out, env);
+}
+
+/// shade_batch over soa_points writing interleaved colours (glm::vec3, or vec4 when F.alpha).
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+void shade_batch(const soa_points<T>& points, const material<T, Q>& mat, std::type_identity_t<std::span<const light<T, Q>>> lights,
+                 std::type_identity_t<std::span<color<F, T, Q>>> out, const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, mat, lights, out, env);
+}
+
+/// shade_batch over soa_points, one material per point, interleaved colours.
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+void shade_batch(const soa_points<T>& points, std::type_identity_t<std::span<const material<T, Q>>> materials,
+                 std::type_identity_t<std::span<const light<T, Q>>> lights, std::type_identity_t<std::span<color<F, T, Q>>> out,
+                 const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, materials, lights, out, env);
+}
+
+/// shade_batch over aos_points (positions, normals and views as glm vectors): the same lanes as
+/// the SoA overloads, so the same results bit for bit. Everything else as above.
+template <features F, class T, glm::qualifier Q>
+void shade_batch(const aos_points<T, Q>& points, const material<T, Q>& mat, std::type_identity_t<std::span<const light<T, Q>>> lights,
+                 const soa_rgba<T>& out, const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, mat, lights, out, env);
+}
+
+/// shade_batch over aos_points, one material per point.
+template <features F, class T, glm::qualifier Q>
+void shade_batch(const aos_points<T, Q>& points, std::type_identity_t<std::span<const material<T, Q>>> materials,
+                 std::type_identity_t<std::span<const light<T, Q>>> lights, const soa_rgba<T>& out,
+                 const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, materials, lights, out, env);
+}
+
+/// shade_batch over aos_points writing interleaved colours: hit records in, colours out.
+template <features F, class T, glm::qualifier Q>
+void shade_batch(const aos_points<T, Q>& points, const material<T, Q>& mat, std::type_identity_t<std::span<const light<T, Q>>> lights,
+                 std::type_identity_t<std::span<color<F, T, Q>>> out, const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, mat, lights, out, env);
+}
+
+/// shade_batch over aos_points, one material per point, interleaved colours.
+template <features F, class T, glm::qualifier Q>
+void shade_batch(const aos_points<T, Q>& points, std::type_identity_t<std::span<const material<T, Q>>> materials,
+                 std::type_identity_t<std::span<const light<T, Q>>> lights, std::type_identity_t<std::span<color<F, T, Q>>> out,
+                 const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, materials, lights, out, env);
+}
+
 } // namespace phong
 
 #if defined(PHONG_BATCH_POP_DIAGNOSTICS)
 #  pragma GCC diagnostic pop
 #  undef PHONG_BATCH_POP_DIAGNOSTICS
 #endif
+#undef PHONG_BATCH_NOINLINE

@@ -44,3 +44,15 @@ if(NOT CMAKE_BUILD_TYPE MATCHES "^(Release|RelWithDebInfo|MinSizeRel)$")
                      -P ${CMAKE_CURRENT_LIST_DIR}/expect_abort.cmake)
   endforeach()
 endif()
+
+# 3. shade_batch with view_model::given without per-point views: a compile error with a message
+#    that names the fix (case 0: the valid call with views must compile).
+foreach(case RANGE 0 1)
+  add_test(NAME batch_given_reject_${case}
+           COMMAND ${CMAKE_CXX_COMPILER} -std=c++20 -fsyntax-only -Wall -Wextra -Wpedantic -Werror
+                   ${phong_reject_includes} -DPHONG_REJECT_CASE=${case} ${CMAKE_CURRENT_LIST_DIR}/batch_given_reject.cpp)
+  if(case EQUAL 1)
+    set_tests_properties(batch_given_reject_${case} PROPERTIES
+      PASS_REGULAR_EXPRESSION "view_model::given needs a view vector per point")
+  endif()
+endforeach()

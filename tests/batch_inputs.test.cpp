@@ -1,0 +1,305 @@
+// batch.hpp's inputs beyond G-buffers (issue 13, item 4): per-point view vectors
+// (view_model::given), per-point light masks, and AoS (glm::vec3) hit arrays, through
+// soa_points / aos_points. The oracle is the scalar shade<F> with the same view vector and
+// phong::masked(lights, mask) per point; AoS against SoA and a masked light against a removed
+// one are compared bit for bit (the lanes are the same values and the kernels lane-wise).
+#include "support/generators.hpp"
+
+#include <phong/batch.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+using namespace phong;
+using namespace phong_test;
+
+namespace {
+
+/// Tolerance of batch against scalar (as tests/batch.test.cpp, same reasons): both are within
+/// the mode's bound of the reference, but the SIMD rsqrt estimate (float lanes, < 2 ulp),
+/// xsimd's exp/log and FMA contraction shift the rounding; the exact mode's power amplifies
+/// that by up to m, the stable mode's by about sqrt(m).
+template <class T> double batch_tolerance(const features& F, double m)
+{
+    const double eps = std::numeric_limits<T>::epsilon();
+    const double amplification = F.mode == evaluation::exact ? 1 + m : 1 + 4 * std::sqrt(m);
+    return 64 * eps * amplification;
+}
+
+/// Relative difference of two colours, per channel, against the largest channel of the reference.
+template <class T, int N> double channel_difference(const glm::vec<N, T>& a, const glm::vec<N, T>& b)
+{
+    double scale = 0, diff = 0;
+    for (int k = 0; k < N; ++k) {
+        scale = std::max(scale, double(std::abs(b[k])));
+        diff = std::max(diff, double(std::abs(a[k] - b[k])));
+    }
+    return diff / std::max(scale, 1e-30);
+}
+
+/// N points with their own view vectors, facing flags, materials and light masks, in both layouts.
+template <class T> struct batch_case {
+    scene<T> base;
+    std::vector<glm::vec<3, T>> p, n, v;
+    std::vector<T> px, py, pz, nx, ny, nz, vx, vy, vz;
+    std::vector<material<T>> mats;
+    std::vector<std::uint64_t> masks;
+    std::unique_ptr<bool[]> front;
+
+    batch_case(scene_gen<T>& gen, const features& F, std::size_t count, int lights) : base(gen.make(F, lights))
+    {
+        front.reset(new bool[count + 1]);
+        for (std::size_t i = 0; i < count; ++i) {
+            p.push_back(gen.point());
+            const glm::vec<3, T> dir = gen.direction();
+            const glm::vec<3, T> view = gen.direction();
+            // unit_inputs: unit by precondition; else any length (shade normalizes).
+            n.push_back(F.unit_inputs ? dir : dir * gen.uniform(0.25, 4));
+            v.push_back(F.unit_inputs ? view : view * gen.uniform(0.25, 4));
+            px.push_back(p[i].x), py.push_back(p[i].y), pz.push_back(p[i].z);
+            nx.push_back(n[i].x), ny.push_back(n[i].y), nz.push_back(n[i].z);
+            vx.push_back(v[i].x), vy.push_back(v[i].y), vz.push_back(v[i].z);
+            mats.push_back(gen.material(1, 100));
+            // Random visibility, now and then none or all, with bits past the light list set
+            // (ignored, as by masked()).
+            const int kind = gen.integer(0, 9);
+            std::uint64_t bits = kind == 0 ? 0 : kind == 1 ? ~std::uint64_t(0) : 0;
+            if (kind > 1)
+                for (int j = 0; j < 64; ++j) bits |= std::uint64_t(gen.coin()) << j;
+            masks.push_back(bits);
+            front[i] = gen.coin();
+        }
+    }
+    std::size_t size() const { return p.size(); }
+    soa_points<T> soa(bool given, bool masked) const
+    {
+        return {soa3<T>{px, py, pz}, soa3<T>{nx, ny, nz}, given ? soa3<T>{vx, vy, vz} : soa3<T>{},
+                std::span<const bool>(front.get(), size()),
+                masked ? std::span<const std::uint64_t>(masks) : std::span<const std::uint64_t>()};
+    }
+    aos_points<T> aos(bool given, bool masked) const
+    {
+        return {p, n, given ? std::span<const glm::vec<3, T>>(v) : std::span<const glm::vec<3, T>>(),
+                std::span<const bool>(front.get(), size()),
+                masked ? std::span<const std::uint64_t>(masks) : std::span<const std::uint64_t>()};
+    }
+    /// The scene of point i as shade<F> sees it, for the conditioning test: a given view vector
+    /// becomes an eye point at Q + v (eye_point), where the same v results.
+    scene<T> point_scene(std::size_t i, const features& F, bool per_point_material) const
+    {
+        scene<T> s = base;
+        s.position = p[i];
+        s.normal = n[i];
+        s.front_facing = front[i];
+        if (per_point_material) s.mat = mats[i];
+        if (F.view == view_model::given) s.env.eye = glm::vec<4, T>(p[i] + v[i], T(1));
+        return s;
+    }
+};
+
+template <features F> constexpr features conditioning_features()
+{
+    features G = F;
+    if (G.view == view_model::given) G.view = view_model::eye_point;
+    return G;
+}
+
+/// The scalar oracle for point i: shade<F>(Q, n, [v,] mat, masked(lights, mask) or lights, env, front).
+template <features F, class T>
+color<F, T> scalar_shade(const batch_case<T>& c, std::size_t i, const material<T>& mat, bool masked_lights)
+{
+    const std::span<const light<T>> lights(c.base.lights);
+    const std::uint64_t mask = masked_lights ? c.masks[i] : ~std::uint64_t(0);
+    if constexpr (F.view == view_model::given)
+        return shade<F>(c.p[i], c.n[i], c.v[i], mat, masked(lights, mask), c.base.env, c.front[i]);
+    else
+        return shade<F>(c.p[i], c.n[i], mat, masked(lights, mask), c.base.env, c.front[i]);
+}
+
+/// Every layout and variant of the call for one feature set, against the scalar oracle, for
+/// every tail length; AoS against SoA bit for bit.
+template <class T, features F> void check_inputs(std::uint64_t seed)
+{
+    constexpr bool given = F.view == view_model::given;
+    constexpr std::size_t W = batch_width<T>;
+    constexpr int channels = F.alpha ? 4 : 3;
+    scene_gen<T> gen(seed);
+    int checked = 0;
+    for (std::size_t count : {std::size_t(0), std::size_t(1), W - 1, W, W + 1, 3 * W + 5, std::size_t(61)}) {
+        for (int masked_lights = 0; masked_lights < 2; ++masked_lights) {
+            for (int per_point_material = 0; per_point_material < 2; ++per_point_material) {
+                const batch_case<T> c(gen, F, count, 1 + gen.integer(0, 4));
+                CAPTURE(count);
+                CAPTURE(masked_lights);
+                CAPTURE(per_point_material);
+                const std::span<const light<T>> lights(c.base.lights);
+                const std::span<const material<T>> mats(c.mats);
+                std::vector<T> r(count, T(-1)), g(count, T(-1)), b(count, T(-1)), a(count, T(-1));
+                std::vector<color<F, T>> interleaved(count, color<F, T>(T(-2)));
+                const soa_rgba<T> out{r, g, b, a};
+                if (per_point_material) {
+                    shade_batch<F>(c.soa(given, masked_lights), mats, lights, out, c.base.env);
+                    shade_batch<F>(c.aos(given, masked_lights), mats, lights, std::span<color<F, T>>(interleaved), c.base.env);
+                } else {
+                    shade_batch<F>(c.soa(given, masked_lights), c.base.mat, lights, out, c.base.env);
+                    shade_batch<F>(c.aos(given, masked_lights), c.base.mat, lights, std::span<color<F, T>>(interleaved), c.base.env);
+                }
+                // The other two layout pairs (SoA in with interleaved out, AoS in with SoA out).
+                std::vector<color<F, T>> soa_interleaved(count, color<F, T>(T(-3)));
+                std::vector<T> r2(count), g2(count), b2(count), a2(count);
+                if (per_point_material) {
+                    shade_batch<F>(c.soa(given, masked_lights), mats, lights, std::span<color<F, T>>(soa_interleaved), c.base.env);
+                    shade_batch<F>(c.aos(given, masked_lights), mats, lights, soa_rgba<T>{r2, g2, b2, a2}, c.base.env);
+                } else {
+                    shade_batch<F>(c.soa(given, masked_lights), c.base.mat, lights, std::span<color<F, T>>(soa_interleaved), c.base.env);
+                    shade_batch<F>(c.aos(given, masked_lights), c.base.mat, lights, soa_rgba<T>{r2, g2, b2, a2}, c.base.env);
+                }
+                for (std::size_t i = 0; i < count; ++i) {
+                    const glm::vec<4, T> soa_rgba_i(r[i], g[i], b[i], a[i]);
+                    const glm::vec<4, T> aos_rgba_i(r2[i], g2[i], b2[i], a2[i]);
+                    color<F, T> got;
+                    for (int k = 0; k < channels; ++k) got[k] = soa_rgba_i[k];
+                    // Bit for bit: every layout loads the same lanes.
+                    CHECK(interleaved[i] == got);
+                    CHECK(soa_interleaved[i] == got);
+                    for (int k = 0; k < channels; ++k) CHECK(aos_rgba_i[k] == got[k]);
+                    for (int k = 0; k < channels; ++k) REQUIRE(std::isfinite(got[k]));
+
+                    const material<T>& mat = per_point_material ? c.mats[i] : c.base.mat;
+                    const color<F, T> scalar = scalar_shade<F>(c, i, mat, masked_lights != 0);
+                    if (!well_conditioned(conditioning_features<F>(), c.point_scene(i, F, per_point_material), 1e-3))
+                        continue; // a rounding may flip a gate or a cone edge
+                    ++checked;
+                    const double diff = channel_difference(got, scalar);
+                    const double tol = batch_tolerance<T>(F, double(mat.shininess));
+                    if (diff > tol) MESSAGE("point " << i << ": batch vs scalar relative difference " << diff << " > " << tol);
+                    CHECK(diff <= tol);
+                }
+            }
+        }
+    }
+    CHECK(checked > 100); // the comparison did run on most points
+}
+
+/// A light whose mask bit is clear equals that light removed, bit for bit: each point of a
+/// masked batch against the same point alone in a batch whose light list holds only the lights
+/// its mask lets through, all marked visible (lanes are independent, so the lane position does
+/// not matter; masks given to both, so both run the same compiled code: a call without masks
+/// takes a separate loop, whose FMA contraction may differ by an ulp).
+template <class T, features F> void check_masked_equals_removed(std::uint64_t seed)
+{
+    constexpr bool given = F.view == view_model::given;
+    constexpr std::size_t W = batch_width<T>;
+    scene_gen<T> gen(seed);
+    const std::size_t count = 2 * W + 3;
+    const batch_case<T> c(gen, F, count, 5);
+    std::vector<color<F, T>> got(count);
+    shade_batch<F>(c.aos(given, true), c.base.mat, c.base.lights, std::span<color<F, T>>(got), c.base.env);
+    for (std::size_t i = 0; i < count; ++i) {
+        std::vector<light<T>> kept;
+        for (std::size_t j = 0; j < c.base.lights.size(); ++j)
+            if (c.masks[i] >> j & 1u) kept.push_back(c.base.lights[j]);
+        std::vector<color<F, T>> alone(1);
+        const bool front = c.front[i];
+        const std::uint64_t all_visible = ~std::uint64_t(0);
+        aos_points<T> one{std::span(&c.p[i], 1), std::span(&c.n[i], 1), {}, std::span(&front, 1), std::span(&all_visible, 1)};
+        if (given) one.views = std::span(&c.v[i], 1);
+        shade_batch<F>(one, c.base.mat, kept, std::span<color<F, T>>(alone), c.base.env);
+        CAPTURE(i);
+        CAPTURE(c.masks[i]);
+        CHECK(got[i] == alone[0]);
+    }
+}
+
+// Per-point views (view_model::given) in both modes, Phong and Blinn, diffuse only, per-light
+// ambient not attenuated (a masked light must not leave its ambient term), unit inputs, facing
+// flags with alpha; and the other view models with masks.
+constexpr features input_feature_sets[] = {
+    presets::raytracer_phong,
+    presets::with_mode(presets::raytracer_phong, evaluation::stable),
+    features{.specular = specular_model::blinn, .view = view_model::given},
+    features{.light_ambient = true, .specular = specular_model::blinn, .lights = light_kind::any,
+             .attenuation = attenuation_model::polynomial, .attenuate_ambient = false, .view = view_model::given,
+             .mode = evaluation::stable},
+    features{.scene_ambient = false, .specular = specular_model::none, .lights = light_kind::positional, .view = view_model::given},
+    features{.scene_ambient = false, .specular = specular_model::none, .view = view_model::given, .mode = evaluation::stable},
+    features{.view = view_model::given, .unit_inputs = true},
+    features{.specular = specular_model::blinn, .specular_gate = false, .spot = spot_model::smooth, .two_sided = facing::flag,
+             .view = view_model::given, .emission = true, .alpha = true, .mode = evaluation::stable},
+    features{.light_ambient = true, .specular = specular_model::phong, .two_sided = facing::view, .view = view_model::given},
+    presets::classic_phong,
+    presets::with_mode(presets::classic_phong, evaluation::stable),
+    presets::blinn_phong_per_light_ambient,
+    presets::glsl_ads,
+    presets::diffuse_only,
+    features{.specular = specular_model::blinn, .lights = light_kind::directional, .view = view_model::fixed_direction,
+             .mode = evaluation::stable},
+};
+
+template <class T, std::size_t... I> void check_all_inputs(std::index_sequence<I...>)
+{
+    (check_inputs<T, input_feature_sets[I]>(7000 + I), ...);
+}
+template <class T, std::size_t... I> void check_all_masked(std::index_sequence<I...>)
+{
+    (check_masked_equals_removed<T, input_feature_sets[I]>(8000 + I), ...);
+}
+
+} // namespace
+
+TEST_CASE_TEMPLATE("shade_batch with per-point views and light masks equals shade<F> with masked(), AoS = SoA", T, float, double)
+{
+    check_all_inputs<T>(std::make_index_sequence<std::size(input_feature_sets)>{});
+}
+
+TEST_CASE_TEMPLATE("shade_batch: a masked light equals a removed light, bit for bit", T, float, double)
+{
+    check_all_masked<T>(std::make_index_sequence<std::size(input_feature_sets)>{});
+}
+
+TEST_CASE_TEMPLATE("shade_batch: soa_points without views or masks equals the soa3 overloads bit for bit", T, float, double)
+{
+    constexpr features F = presets::with_mode(presets::classic_phong, evaluation::stable);
+    scene_gen<T> gen(31);
+    const std::size_t count = 3 * batch_width<T> + 1;
+    const batch_case<T> c(gen, F, count, 3);
+    std::vector<T> r(count), g(count), b(count), a(count), r2(count), g2(count), b2(count), a2(count);
+    shade_batch<F>(soa3<T>{c.px, c.py, c.pz}, soa3<T>{c.nx, c.ny, c.nz}, c.base.mat, std::span<const light<T>>(c.base.lights),
+                   soa_rgba<T>{r, g, b, a}, c.base.env);
+    shade_batch<F>(soa_points<T>{.positions = {c.px, c.py, c.pz}, .normals = {c.nx, c.ny, c.nz}}, c.base.mat, c.base.lights,
+                   soa_rgba<T>{r2, g2, b2, a2}, c.base.env);
+    CHECK(r == r2);
+    CHECK(g == g2);
+    CHECK(b == b2);
+    CHECK(a == a2);
+}
+
+TEST_CASE_TEMPLATE("shade_batch: light masks on hand-made points", T, float, double)
+{
+    // Two white directional lights along +z and +x, diffuse only, unit normal +z at every point:
+    // light 0 gives n.l = 1, light 1 gives n.l = 0. A third light along +z with strength 0.5.
+    // Expected per point: kd (1 [bit 0] + 0.5 [bit 2]); bit 1 adds 0; bits past the list nothing.
+    constexpr features F{.scene_ambient = false, .specular = specular_model::none, .lights = light_kind::directional};
+    std::vector<light<T>> lights(3);
+    lights[0].position = {T(0), T(0), T(1), T(0)};
+    lights[1].position = {T(1), T(0), T(0), T(0)};
+    lights[2].position = {T(0), T(0), T(3), T(0)};
+    lights[2].diffuse = glm::vec<3, T>(T(0.5));
+    const std::size_t count = 2 * batch_width<T> + 1;
+    std::vector<glm::vec<3, T>> p(count, glm::vec<3, T>(T(0), T(0), T(-2))), n(count, glm::vec<3, T>(T(0), T(0), T(1)));
+    std::vector<std::uint64_t> masks(count);
+    for (std::size_t i = 0; i < count; ++i) masks[i] = (i % 8) | (i % 3 == 0 ? std::uint64_t(1) << 40 : 0);
+    const material<T> mat{.kd = glm::vec<3, T>(T(1))};
+    std::vector<glm::vec<3, T>> out(count);
+    shade_batch<F>(aos_points<T>{.positions = p, .normals = n, .light_masks = masks}, mat, lights, out);
+    for (std::size_t i = 0; i < count; ++i) {
+        const T expected = T((masks[i] & 1) ? 1 : 0) + T((masks[i] & 4) ? 0.5 : 0);
+        CAPTURE(i);
+        CHECK(out[i].r == doctest::Approx(double(expected)).epsilon(1e-6));
+        CHECK(out[i].g == out[i].r);
+    }
+}
