@@ -7,9 +7,8 @@
 //    refracted rays; features::unit_inputs says that n and v are unit already (no normalization);
 //  * the per-hit shadow mask is passed with the whole light list, masked(lights, visible): no
 //    per-hit copy of the visible lights;
-//  * shade_batch<F> takes one light list and one environment per call: primary hits are grouped
-//    by shadow mask, packed into SoA arrays, and the eye is the camera position (w = 1), so
-//    v = normalize(E - P), equal to -ray.dir up to rounding (shade_phong_batch).
+//  * shade_batch<F> takes the hit arrays as they are (aos_points: glm::vec3 positions, normals and
+//    view vectors -ray.dir, one shadow mask per point): one call for all primary hits.
 // The rasterizer's per-pixel normal is interpolated, not unit: it keeps the normalizing path.
 // SPDX-License-Identifier: MIT
 #pragma once
@@ -23,6 +22,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -40,13 +40,7 @@ inline constexpr phong::features whitted_exact = [] {
     return f;
 }();
 inline constexpr phong::features whitted_stable = phong::presets::with_mode(whitted_exact, phong::evaluation::stable);
-/// The batch path (primary hits): the same model with the eye at the camera position.
-inline constexpr phong::features whitted_batch = [] {
-    phong::features f = whitted_exact;
-    f.view = phong::view_model::eye_point;
-    f.unit_inputs = false;
-    return f;
-}();
+
 
 inline constexpr std::size_t max_lights = 4;
 
@@ -77,56 +71,28 @@ inline glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, cons
     return phong::shade<F>(P, n, v, mat, phong::masked(lights, visible), env);
 }
 
-/// Scratch arrays of shade_phong_batch, kept between calls.
+/// Scratch arrays of shade_phong_batch / shade_phong_fragments_batch, kept between calls.
 struct batch_scratch {
-    std::vector<std::size_t> order;            ///< hit indices grouped by mask
-    std::vector<float> px, py, pz, nx, ny, nz; ///< SoA positions and normals
     std::vector<phong::material<float>> mats;  ///< one per point
-    std::vector<float> r, g, b;                ///< SoA colours
+    std::vector<float> px, py, pz, nx, ny, nz; ///< SoA positions and normals (rasterizer)
+    std::vector<float> r, g, b;                ///< SoA colours (rasterizer)
 };
 
-/// Primary hits, shade_batch<F>: hits grouped by shadow mask (a counting sort), each group packed
-/// into SoA arrays with one material per point and shaded with its visible lights, eye = the
-/// camera position (w = 1); colours scattered back to out[i] (all of this is timed).
+/// Primary hits, shade_batch<F> on the hit arrays as the tracer keeps them (AoS glm::vec3), each
+/// point with its own view vector (-ray.dir) and shadow mask: one call, no grouping, no repacking
+/// but the per-point material looked up by id (all of this is timed).
 template <phong::features F>
-inline void shade_phong_batch(std::span<const glm::vec3> P, std::span<const glm::vec3> n, std::span<const unsigned> visible,
-                              std::span<const int> material_id, std::span<const phong::material<float>> materials,
-                              std::span<const phong::light<float>> lights, const glm::vec3& ambient,
-                              const glm::vec3& camera_position, std::span<glm::vec3> out, batch_scratch& s)
+inline void shade_phong_batch(std::span<const glm::vec3> P, std::span<const glm::vec3> n, std::span<const glm::vec3> v,
+                              std::span<const std::uint64_t> visible, std::span<const int> material_id,
+                              std::span<const phong::material<float>> materials, std::span<const phong::light<float>> lights,
+                              const glm::vec3& ambient, std::span<glm::vec3> out, batch_scratch& s)
 {
     const std::size_t N = P.size();
-    const std::size_t masks = std::size_t(1) << lights.size();
-    std::array<std::size_t, (1u << max_lights) + 1> start{};
-    for (std::size_t i = 0; i < N; ++i) ++start[visible[i] + 1];
-    for (std::size_t m = 0; m < masks; ++m) start[m + 1] += start[m];
-    std::array<std::size_t, 1u << max_lights> fill{};
-    for (std::size_t m = 0; m < masks; ++m) fill[m] = start[m];
-    s.order.resize(N);
-    for (std::size_t i = 0; i < N; ++i) s.order[fill[visible[i]]++] = i;
-    for (auto* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz, &s.r, &s.g, &s.b}) v->resize(N);
     s.mats.resize(N);
-    for (std::size_t k = 0; k < N; ++k) {
-        const std::size_t i = s.order[k];
-        s.px[k] = P[i].x, s.py[k] = P[i].y, s.pz[k] = P[i].z;
-        s.nx[k] = n[i].x, s.ny[k] = n[i].y, s.nz[k] = n[i].z;
-        s.mats[k] = materials[std::size_t(material_id[i])];
-    }
-    const phong::environment<float> env{.ambient = ambient, .eye = glm::vec4(camera_position, 1.0f)};
-    std::array<phong::light<float>, max_lights> subset;
-    for (std::size_t m = 0; m < masks; ++m) {
-        const std::size_t b = start[m], e = start[m + 1];
-        if (b == e) continue;
-        std::size_t k = 0;
-        for (std::size_t i = 0; i < lights.size(); ++i)
-            if (m & (std::size_t(1) << i)) subset[k++] = lights[i];
-        const auto sub = [&](const std::vector<float>& v) { return std::span<const float>(v.data() + b, e - b); };
-        const auto out_sub = [&](std::vector<float>& v) { return std::span<float>(v.data() + b, e - b); };
-        phong::shade_batch<F>(phong::soa3<float>{sub(s.px), sub(s.py), sub(s.pz)}, phong::soa3<float>{sub(s.nx), sub(s.ny), sub(s.nz)},
-                              std::span<const phong::material<float>>(s.mats.data() + b, e - b),
-                              std::span<const phong::light<float>>(subset.data(), k),
-                              phong::soa_rgba<float>{out_sub(s.r), out_sub(s.g), out_sub(s.b), {}}, env);
-    }
-    for (std::size_t k = 0; k < N; ++k) out[s.order[k]] = glm::vec3(s.r[k], s.g[k], s.b[k]);
+    for (std::size_t i = 0; i < N; ++i) s.mats[i] = materials[std::size_t(material_id[i])];
+    const phong::environment<float> env{.ambient = ambient};
+    phong::shade_batch<F>(phong::aos_points<float>{.positions = P, .normals = n, .views = v, .light_masks = visible},
+                          std::span<const phong::material<float>>(s.mats), lights, out, env);
 }
 
 // ---- Software rasterizer --------------------------------------------------------------------

@@ -251,16 +251,16 @@ void shade_all_phong(const std::vector<hit_record>& hits, const scene& sc, const
 
 /// The batch method's input, as a user would keep it (timed from here: grouping, packing, shading).
 struct primary_arrays {
-    std::vector<vec3> P, n;
-    std::vector<unsigned> visible;
+    std::vector<vec3> P, n, v;             ///< hit position, unit normal, unit view vector -ray.dir
+    std::vector<std::uint64_t> visible;   ///< bit i: lights[i] not in shadow
     std::vector<int> material;
 };
 
 void shade_all_batch(const primary_arrays& a, const scene& sc, const phong_scene& ps, std::vector<vec3>& out,
                      phong_calls::batch_scratch& scratch)
 {
-    phong_calls::shade_phong_batch<phong_calls::whitted_batch>(a.P, a.n, a.visible, a.material, ps.materials, ps.lights, sc.ambient,
-                                                               sc.eye, out, scratch);
+    phong_calls::shade_phong_batch<phong_calls::whitted_exact>(a.P, a.n, a.v, a.visible, a.material, ps.materials, ps.lights,
+                                                               sc.ambient, out, scratch);
 }
 
 /// Whitted's sum: the missed rays' background plus weight * local colour of every hit.
@@ -312,6 +312,7 @@ int main(int argc, char** argv)
         for (const hit_record& h : f.primary) {
             pa.P.push_back(h.position);
             pa.n.push_back(h.normal);
+            pa.v.push_back(h.view);
             pa.visible.push_back(h.visible);
             pa.material.push_back(h.material);
         }
