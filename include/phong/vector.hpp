@@ -110,7 +110,12 @@ template <class T> PHONG_HD constexpr T exact_min_square() { return T(std::numer
 template <class T>
 PHONG_HD constexpr T exact_inverse_length(T dd)
 {
-    return phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
+    if constexpr (std::is_floating_point_v<T>) {
+        if (dd >= exact_min_square<T>()) [[likely]] return phong::rsqrt(dd);
+        return T(0);
+    } else {
+        return phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
+    }
 }
 
 } // namespace detail
