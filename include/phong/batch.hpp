@@ -537,71 +537,6 @@ bool output_overlaps_input(const soa3<T>& positions, const soa3<T>& normals, con
     return false;
 }
 
-/// One batch step of the SoA overloads without views or masks (shade_batch_impl's loop).
-template <features F, class V, class T, glm::qualifier Q, class Materials, class Output>
-void shade_step(std::size_t i, std::size_t count, const soa3<T>& positions, const soa3<T>& normals,
-                const Materials& materials, const material<V, Q>& shared_mat, std::span<const light<V, Q>> lights,
-                const environment<V, Q>& env, std::span<const bool> front_facing, const Output& out)
-{
-    const soa_points<T> points{positions, normals, {}, front_facing, {}};
-    shade_points_step<F, V, soa_points<T>, T, Q>(i, count, points, materials, shared_mat, lights, env, out);
-}
-
-template <features F, class T, glm::qualifier Q, class Materials, class Output>
-void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Materials& materials,
-                      std::span<const light<T, Q>> lights, const Output& out, const environment<T, Q>& env,
-                      std::span<const bool> front_facing)
-{
-    static_assert(F.view != view_model::given,
-                  "shade_batch: view_model::given needs a view vector per point: pass soa_points/aos_points with .views");
-    using V = simd_batch<T>;
-    constexpr std::size_t W = batch_width<T>;
-    constexpr bool per_point_material = !std::is_same_v<Materials, material<T, Q>>;
-    const std::size_t n = positions.x.size();
-    [[maybe_unused]] std::size_t out_size = 0;
-    if constexpr (std::is_same_v<Output, soa_rgba<T>>)
-        out_size = std::min({out.r.size(), out.g.size(), out.b.size(), F.alpha ? out.a.size() : out.r.size()});
-    else
-        out_size = out.size();
-    [[maybe_unused]] bool lengths_ok = positions.y.size() == n && positions.z.size() == n && normals.x.size() == n &&
-                                       normals.y.size() == n && normals.z.size() == n && out_size >= n;
-    PHONG_ASSERT(lengths_ok, "shade_batch: spans of different lengths");
-    PHONG_ASSERT(front_facing.empty() || front_facing.size() == n, "shade_batch: front_facing length");
-    lengths_ok = lengths_ok && (front_facing.empty() || front_facing.size() == n);
-    if constexpr (per_point_material) {
-        PHONG_ASSERT(materials.size() == n, "shade_batch: one material per point");
-        lengths_ok = lengths_ok && materials.size() == n;
-    }
-#if !defined(NDEBUG)
-    // A precondition handler that returns (set_precondition_handler) must not lead to reads or
-    // writes past a span: nothing is shaded then.
-    if (!lengths_ok) return;
-    PHONG_ASSERT((!output_overlaps_input<F.alpha ? 4 : 3, T, Q>(positions, normals, materials, out, front_facing, n)),
-                 "shade_batch: an output span overlaps an input span (only an output channel equal to an input "
-                 "coordinate span, the same data() and size(), may alias it)");
-    if constexpr (per_point_material) {
-        for (const material<T, Q>& m : materials) PHONG_ASSERT(static_cast<bool>(validate(m)), validate(m).message());
-    } else {
-        PHONG_ASSERT(static_cast<bool>(validate(materials)), validate(materials).message());
-    }
-    for (const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
-#endif
-
-    // Lights, a shared material and the environment are the same for every lane: broadcast once.
-    std::vector<light<V, Q>> lane_lights;
-    lane_lights.reserve(lights.size());
-    for (const light<T, Q>& L : lights) lane_lights.push_back(splat<V>(L));
-    material<V, Q> shared{};
-    if constexpr (!per_point_material) shared = splat<V>(materials);
-    const environment<V, Q> lane_env{splat<V>(env.ambient), splat<V>(env.eye)};
-    const std::span<const light<V, Q>> lane_span(lane_lights);
-
-    std::size_t i = 0;
-    for (; i + W <= n; i += W)
-        shade_step<F, V>(i, W, positions, normals, materials, shared, lane_span, lane_env, front_facing, out);
-    if (i < n) shade_step<F, V>(i, n - i, positions, normals, materials, shared, lane_span, lane_env, front_facing, out);
-}
-
 /// Number of vectors in an SoA or AoS input (SoA: the three spans' common length, or a length
 /// no valid input has when they differ).
 template <class T> std::size_t vec3_count(const soa3<T>& v)
@@ -625,15 +560,23 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
         out_size = std::min({out.r.size(), out.g.size(), out.b.size(), F.alpha ? out.a.size() : out.r.size()});
     else
         out_size = out.size();
-    PHONG_ASSERT(vec3_count(points.positions) != std::size_t(-1), "shade_batch: position spans of different lengths");
-    PHONG_ASSERT(vec3_count(points.normals) == n && out_size >= n, "shade_batch: spans of different lengths");
-    if constexpr (F.view == view_model::given)
+    [[maybe_unused]] bool lengths_ok = vec3_count(points.positions) != std::size_t(-1) && vec3_count(points.normals) == n && out_size >= n;
+    PHONG_ASSERT(lengths_ok, "shade_batch: spans of different lengths");
+    if constexpr (F.view == view_model::given) {
         PHONG_ASSERT(vec3_count(points.views) == n, "shade_batch: view_model::given needs one view vector per point (.views)");
-    else
+        lengths_ok = lengths_ok && vec3_count(points.views) == n;
+    } else {
         PHONG_ASSERT(vec3_count(points.views) == 0, "shade_batch: .views is read only with features::view = view_model::given");
+    }
     PHONG_ASSERT(points.front_facing.empty() || points.front_facing.size() == n, "shade_batch: front_facing length");
     PHONG_ASSERT(points.light_masks.empty() || points.light_masks.size() == n, "shade_batch: light_masks length");
+    lengths_ok = lengths_ok && (points.front_facing.empty() || points.front_facing.size() == n) &&
+                 (points.light_masks.empty() || points.light_masks.size() == n);
+    if constexpr (per_point_material) lengths_ok = lengths_ok && materials.size() == n;
 #if !defined(NDEBUG)
+    // A precondition handler that returns (set_precondition_handler) must not lead to reads or
+    // writes past a span: nothing is shaded then.
+    if (!lengths_ok) return;
     if constexpr (std::is_same_v<Points, soa_points<T>>) {
         PHONG_ASSERT((!output_overlaps_input<F.alpha ? 4 : 3, T, Q>(points.positions, points.normals, materials, out, points.front_facing, n)),
                      "shade_batch: an output span overlaps an input span (only an output channel equal to an input "
@@ -672,6 +615,17 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     std::size_t i = 0;
     for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, materials, shared, lane_span, lane_env, out);
     if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, materials, shared, lane_span, lane_env, out);
+}
+
+/// The soa3 overloads: shade_points_impl on soa_points without views or masks.
+template <features F, class T, glm::qualifier Q, class Materials, class Output>
+void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Materials& materials,
+                      std::span<const light<T, Q>> lights, const Output& out, const environment<T, Q>& env,
+                      std::span<const bool> front_facing)
+{
+    static_assert(F.view != view_model::given,
+                  "shade_batch: view_model::given needs a view vector per point: pass soa_points/aos_points with .views");
+    shade_points_impl<F>(soa_points<T>{positions, normals, {}, front_facing, {}}, materials, lights, out, env);
 }
 
 } // namespace detail
