@@ -1,16 +1,16 @@
 // phong: the full multi-light sum, shade<features>(...), and the per-vertex pipeline of seed 003.
 // SPDX-License-Identifier: MIT
 //
-// This header only orchestrates: prepare the point, add every light, finish. The arithmetic of
-// each evaluation route lives in its own unit, one small function per step of the data flow:
+// This header only orchestrates: prepare the point, add every light, finish (detail/route.hpp
+// picks F's route and loops over the lights). The arithmetic of each evaluation route lives in
+// its own unit, one small function per step of the data flow:
 // detail/exact.hpp (the exact mode, and the stable mode's wider route for float: the exact route
 // in double) and detail/stable.hpp (the stable mode's twofold route); the steps that every route
 // shares are in detail/light_terms.hpp and in the public term headers (direction.hpp,
 // attenuation.hpp, specular.hpp).
 #pragma once
 
-#include "detail/exact.hpp"
-#include "detail/stable.hpp"
+#include "detail/route.hpp"
 #include "environment.hpp"
 #include "features.hpp"
 #include "light.hpp"
@@ -49,31 +49,6 @@ struct shading_terms {
 };
 
 namespace detail {
-
-/// The per-point frame of F's evaluation route.
-template <features F, class T, glm::qualifier Q>
-using frame_t = std::conditional_t<F.mode == evaluation::stable, stable::surface_frame<T, Q>, exact::surface_frame<T, Q>>;
-
-/// The point's frame (unit normal, view vector, whether both exist, poison), by F's route.
-/// given_view: the view vector for view_model::given (not read otherwise).
-template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
-                                            const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
-                                            mask_t<T> front_facing)
-{
-    if constexpr (F.mode == evaluation::stable) return stable::prepare<F>(position, normal, given_view, env, front_facing);
-    else return exact::prepare<F>(position, normal, given_view, env, front_facing);
-}
-
-/// One light's terms added to the sums, by F's route (U: the light's scalar type; visibility:
-/// unweighted, or a weight that multiplies f).
-template <features F, class T, glm::qualifier Q, class U, class W = unweighted>
-PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, T m,
-                                  W visibility = {})
-{
-    if constexpr (F.mode == evaluation::stable) stable::add_light<F>(sums, s, L, m, visibility);
-    else exact::add_light<F>(sums, s, L, m, visibility);
-}
 
 /// The model's terms at the point, from the per-light sums (poison: the NaN policy's 0 or NaN).
 template <features F, class T, glm::qualifier Q, class Frame>
@@ -126,9 +101,6 @@ PHONG_HD constexpr void check_material([[maybe_unused]] const material<T, Q>& ma
     }
 }
 
-template <class R> struct is_std_array : std::false_type {};
-template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::true_type {};
-
 /// The stable mode's wider path applies: float arithmetic carried out in double.
 template <features F, class T>
 inline constexpr bool widened = F.mode == evaluation::stable && F.precision == stable_precision::wider && std::is_same_v<T, float>;
@@ -152,21 +124,6 @@ PHONG_HD constexpr environment<W, Q> widen(const environment<T, Q>& e)
     return {glm::vec<3, W, Q>(e.ambient), glm::vec<4, W, Q>(e.eye)};
 }
 
-/// Checks one light against validate(): a compile error in constant evaluation, an assertion in
-/// debug builds, nothing under NDEBUG (not even evaluated). Done as the light is shaded, so a
-/// single-pass range of lights is read once.
-template <class U, glm::qualifier Q>
-PHONG_HD constexpr void check_light([[maybe_unused]] const light<U, Q>& L)
-{
-    if constexpr (std::is_floating_point_v<U>) {
-#if defined(NDEBUG)
-        if (!std::is_constant_evaluated()) return;
-#endif
-        const validation v = phong::validate(L);
-        require(static_cast<bool>(v), v.message());
-    }
-}
-
 /// features::unit_inputs' precondition: |v| = 1 within 1e-3 and finite (debug builds, constant evaluation).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>& v, [[maybe_unused]] const char* message)
@@ -178,72 +135,6 @@ PHONG_HD constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>& v, 
         const T vv = phong::dot(v, v);
         require(vv >= T(0.998) && vv <= T(1.002), message);
     }
-}
-
-template <class R> struct is_masked : std::false_type {};
-template <class R> struct is_masked<masked_lights<R>> : std::true_type {};
-template <class R> struct is_weighted : std::false_type {};
-template <class R, class W> struct is_weighted<weighted_lights<R, W>> : std::true_type {};
-
-/// F without its specular term.
-template <features F>
-inline constexpr features without_specular = [] {
-    features f = F;
-    f.specular = specular_model::none;
-    return f;
-}();
-
-/// Every light's terms added to the sums: a std::array unrolled at compile time, a masked or
-/// weighted list (visibility.hpp), or any input range of lights (views included).
-template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr void each_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
-{
-    using R = std::remove_cvref_t<Lights>;
-    if constexpr (is_std_array<R>::value) {
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            ((check_light(lights[I]), detail::add_light<F>(sums, s, lights[I], m, unweighted{})), ...);
-        }(std::make_index_sequence<std::tuple_size_v<R>>{});
-    } else if constexpr (is_masked<R>::value) {
-        std::uint64_t bits = lights.mask;
-        for (auto&& L : lights.lights) {
-            check_light(L);
-            if (bits & 1u) detail::add_light<F>(sums, s, L, m, unweighted{});
-            bits >>= 1;
-        }
-    } else if constexpr (is_weighted<R>::value) {
-        std::size_t i = 0;
-        for (auto&& L : lights.lights) {
-            PHONG_ASSERT(i < lights.weights.size(), "phong::weighted: fewer weights than lights");
-            check_light(L);
-            const auto weight = lights.weights[i++];
-            if (weight != 0) detail::add_light<F>(sums, s, L, m, weight); // 0: the light is not seen
-        }
-    } else if constexpr (std::is_floating_point_v<T>) {
-        // The same loop twice, so each copy is compiled knowing whether the point has a normal
-        // and a view vector (g++ does not unswitch it by itself).
-        if (s.defined) {
-            for (auto&& L : lights) check_light(L), detail::add_light<F>(sums, s, L, m, unweighted{});
-        } else {
-            for (auto&& L : lights) check_light(L), detail::add_light<F>(sums, s, L, m, unweighted{});
-        }
-    } else {
-        for (auto&& L : lights) detail::add_light<F>(sums, s, L, m, unweighted{});
-    }
-}
-
-/// Every light's terms added to the sums (each_light). A point without a view vector (at the
-/// eye, or a zero given v) keeps its diffuse term, which does not need v, and has no specular
-/// term: scalars run it with F's specular term removed (no per-light test), SIMD lanes mask it.
-template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr void add_lights(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
-{
-    if constexpr (F.specular != specular_model::none && std::is_floating_point_v<T>) {
-        if (s.defined && !s.sees_viewer) [[unlikely]] {
-            each_light<without_specular<F>>(sums, s, static_cast<Lights&&>(lights), m);
-            return;
-        }
-    }
-    each_light<F>(sums, s, static_cast<Lights&&>(lights), m);
 }
 
 /// prepare, every light, finish: the terms of the model at one point in arithmetic type T (the
