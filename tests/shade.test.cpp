@@ -394,6 +394,20 @@ struct sweep_result {
 // mode has the same input rounding, see specular.hpp).
 constexpr double tolerance_eps(double m) { return 32 + 2 * m; }
 
+// The spot factor's own conditioning: its cone cosine c = -l.s carries a few eps (l and the
+// normalized axis are rounded), which smoothstep multiplies by up to 1.5 / (cos_inner -
+// cos_outer) and OpenGL's c^e by e / c (c >= 0.1 where well_conditioned keeps the cutoff away).
+template <class T> double spot_slack_eps(const phong::features& F, const scene<T>& s)
+{
+    double slack = 0;
+    for (const auto& L : s.lights) {
+        if (F.spot == phong::spot_model::smooth && L.spot.cos_inner > L.spot.cos_outer)
+            slack = std::max(slack, 6 / double(L.spot.cos_inner - L.spot.cos_outer));
+        if (F.spot == phong::spot_model::opengl) slack = std::max(slack, 40 * double(L.spot.exponent));
+    }
+    return slack;
+}
+
 template <features F, class T> sweep_result sweep(std::uint64_t seed, int count)
 {
     scene_gen<T> g(seed);
@@ -405,7 +419,7 @@ template <features F, class T> sweep_result sweep(std::uint64_t seed, int count)
         const auto c = phong::shade<F>(s.position, s.normal, s.mat, std::span<const phong::light<T>>(s.lights), s.env, s.front_facing);
         const wcolor ref = reference_shade<T>(F, s.position, s.normal, s.mat, s.lights, s.env, s.front_facing);
         const double e = error_eps(c, ref);
-        r.worst = std::max(r.worst, e / tolerance_eps(double(s.mat.shininess)));
+        r.worst = std::max(r.worst, e / (tolerance_eps(double(s.mat.shininess)) + spot_slack_eps(F, s)));
         if (e > r.worst_eps) r.worst_eps = e, r.worst_m = double(s.mat.shininess);
         if constexpr (F.alpha) {
             if (c.a != s.mat.alpha) r.worst = std::numeric_limits<double>::infinity();

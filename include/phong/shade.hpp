@@ -215,7 +215,9 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
 /// double (every float input is exact there and no square of one overflows or underflows) and
 /// rounded once: within 1 ulp, correctly rounded but for near-ties, m = 1e5 and n.l ~ 1e-6
 /// included, spot lights too (the model reads the direction of a spot axis, which validate
-/// accepts within 1e-3 of unit length: every route normalizes it, the wider route in double). Double, and float with F.precision = twofold: unit vectors, n.l and the specular
+/// accepts within 1e-3 of unit length: every route normalizes it, the wider route in double).
+/// Elsewhere a spot adds its own conditioning: the cone cosine's few eps of rounding times the
+/// spot's slope (smoothstep: up to 1.5 / (cos_inner - cos_outer); OpenGL: e / c). Double, and float with F.precision = twofold: unit vectors, n.l and the specular
 /// chords carried twofold (detail/twofold.hpp), within a few ulp on the same classes.
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
