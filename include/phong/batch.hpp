@@ -1,5 +1,6 @@
-// phong: batch shading. The same templates as the scalar path (detail::prepare, add_light, finish
-// in shade.hpp), instantiated on a SIMD batch type, over structure-of-arrays spans of points.
+// phong: batch shading. The same templates as the scalar path (detail::prepare, add_lights in
+// detail/route.hpp, finish in shade.hpp), instantiated on a SIMD batch type, over structure-of-
+// arrays or array-of-structures points.
 // SPDX-License-Identifier: MIT
 //
 // SIMD layer: xsimd (Debian libxsimd-dev, header-only) when it is available, else a plain scalar
