@@ -410,6 +410,11 @@ tolerance_result tolerance(const scene<T>& s, std::size_t i)
             out.hoelder = out.hoelder || (m > 0 && m < 1);
             if (exact) spec_error = power_error(m, base_error);
             else spec_error = m >= 1 ? delta : power_error(m, delta) + delta;
+            // Float's stable scalar is the wider route: the exact formulas in double, whose cosine
+            // carries K 2^-53 that the power amplifies by m (shade.hpp: correctly rounded while
+            // m 2^-53 stays far below float's eps; m = 9e27 at the highlight found this).
+            if (!exact && std::is_same_v<T, float>)
+                spec_error = std::max(spec_error, power_error(m, K * std::ldexp(wide(1), -53)));
         }
         for (int c = 0; c < 3; ++c) {
             const wide ambient = wide(mat.ka[c]) * wide(L.ambient[c]);
