@@ -588,8 +588,8 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
         if constexpr (std::is_same_v<Output, soa_rgba<T>>) out_data = out.r.data(), out_bytes = n * sizeof(T);
         else out_data = out.data(), out_bytes = n * sizeof(typename Output::value_type);
         bool overlap = false;
-        for (const auto& a : {points.positions, points.normals, points.views})
-            overlap = overlap || bytes_overlap(out_data, out_bytes, a.data(), a.size() * sizeof(glm::vec<3, T, Q>));
+        const std::span<const glm::vec<3, T, Q>> arrays[3] = {points.positions, points.normals, points.views};
+        for (const auto& a : arrays) overlap = overlap || bytes_overlap(out_data, out_bytes, a.data(), a.size() * sizeof(glm::vec<3, T, Q>));
         PHONG_ASSERT(!overlap, "shade_batch: the output overlaps the input points");
     }
 #endif

@@ -74,8 +74,8 @@ inline constexpr features without_specular = [] {
 
 /// Every light's terms added to the sums: a std::array unrolled at compile time, a masked or
 /// weighted list (visibility.hpp), or any input range of lights (views included).
-template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr void each_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
+template <features F, class T, glm::qualifier Q, class Frame, class Lights>
+PHONG_HD constexpr void each_light(light_sums<T, Q>& sums, const Frame& s, Lights&& lights, T m) // Frame: frame_t<F, T, Q>
 {
     using R = std::remove_cvref_t<Lights>;
     if constexpr (is_std_array<R>::value) {
@@ -118,7 +118,8 @@ PHONG_HD constexpr void add_lights(light_sums<T, Q>& sums, const frame_t<F, T, Q
 {
     if constexpr (F.specular != specular_model::none && std::is_floating_point_v<T>) {
         if (s.defined && !s.sees_viewer) [[unlikely]] {
-            each_light<without_specular<F>>(sums, s, static_cast<Lights&&>(lights), m);
+            constexpr features G = without_specular<F>; // a local constant: nvcc 13 cannot take the variable template as an argument
+            each_light<G>(sums, s, static_cast<Lights&&>(lights), m);
             return;
         }
     }
