@@ -28,6 +28,8 @@
 //     from L.xyz - w Q or E.xyz - E.w Q overflowing T (no direction in T, one in float's wider
 //     route), and for the exact mode only on moderate geometry (documented as inaccurate outside).
 #include <phong/batch.hpp>
+#include "decode.hpp"
+
 #include <phong/phong.hpp>
 
 #include <algorithm>
@@ -112,33 +114,8 @@ struct reader {
     }
 };
 
-template <class T> T scalar(reader& in, bool signed_grid = false)
-{
-    using lim = std::numeric_limits<T>;
-    const std::uint8_t tag = in.byte();
-    if (tag < 0x20) {
-        unsigned char bytes[sizeof(T)];
-        for (auto& b : bytes) b = in.byte();
-        T x;
-        std::memcpy(&x, bytes, sizeof(T));
-        return x;
-    }
-    if (tag < 0x40) {
-        const T special[32] = {T(0), -T(0), T(1), T(-1), T(0.5), T(2), lim::infinity(), -lim::infinity(),
-                               lim::quiet_NaN(), -lim::quiet_NaN(), lim::max(), lim::lowest(), lim::min(), -lim::min(),
-                               lim::denorm_min(), -lim::denorm_min(), lim::epsilon(), T(1) + lim::epsilon(),
-                               T(1) - lim::epsilon() / 2, T(1e-20), T(1e20), T(1e-30), T(1e30), T(65536),
-                               T(3), T(200), T(1e5), T(0.998), T(1.002), T(0.999), T(1.0005), T(-1) - lim::epsilon()};
-        return special[tag - 0x20];
-    }
-    return signed_grid ? T(int(tag) - 0xA0) / T(8) : T(int(tag) - 0x40) / T(16);
-}
-template <int L, class T> glm::vec<L, T> vec(reader& in, bool signed_grid = false)
-{
-    glm::vec<L, T> v;
-    for (int k = 0; k < L; ++k) v[k] = scalar<T>(in, signed_grid);
-    return v;
-}
+using phong_fuzz::scalar;
+using phong_fuzz::vec;
 
 constexpr wide coefficient_cap = 65536; // strengths, reflectivities, emission, scene ambient
 
