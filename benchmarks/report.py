@@ -351,10 +351,11 @@ def picture_points(rows, typ, sets, n_cache):
 
 def pareto_frontier(points):
     """The points that no other point beats on both time and error, fastest first (so error falls along it).
-    Of two points with equal time the more accurate one is kept."""
+    Of two points with equal time the more accurate one is kept; an unbounded error (inf) fits no budget and
+    is never on it."""
     front = []
     for p in sorted(points, key=lambda p: (p["ns"], p["err"])):
-        if not front or p["err"] < front[-1]["err"]:
+        if math.isfinite(p["err"]) and (not front or p["err"] < front[-1]["err"]):
             front.append(p)
     return front
 
@@ -391,6 +392,9 @@ def budget_section(rows, n_cache, stiff_sets):
             nan = f", {p['nan']} NaN" if p["nan"] else ""
             w(f"- `{p['path']}.{p['mode']}`, {p['ns']:.2f} ns / pair, max error {fmt_err(p['err'])} "
               f"({in_units_of_u(p['err'], typ)}, {fits}{nan})")
+        if len(sets) == 1:
+            w("")
+            continue
         chain = " → ".join(f"`{p['path']}.{p['mode']}` ({fmt_err(p['err'])}, {p['ns']:.2f} ns)"
                            for p in pareto_frontier(typical))
         w(f"\nOn typical inputs alone the frontier is {chain}.\n")
@@ -543,6 +547,9 @@ def plot(rows, n_cache, stiff_sets, out_dir):
     named = missing[:3] + ([f"{len(missing) - 3} more"] if len(missing) > 3 else [])
     missing_note = f" Without stiff rows: {', '.join(named)}." if len(columns) > 1 and missing else ""
 
+    stiff_note = ("Stiff panels: per variant, the worst error and the worst time over the stiff input sets. "
+                  if len(columns) > 1 else "")
+
     png = os.path.join(out_dir, "error_vs_time.png")
     header = [f"set label 1 'phong: error against time, one point per variant. For an error budget, take the fastest "
               f"point under it.' at screen 0.5, screen {1 - 20 / H:.4f} center font ',15'",
@@ -552,8 +559,7 @@ def plot(rows, n_cache, stiff_sets, out_dir):
               f"set label 3 'Colour: path; marker: mode; black and grey: anchors (the naive GLM loop, the hand-written "
               f"SIMD kernel). Amber step line: Pareto frontier of phong variants (ringed), the smallest error "
               f"reachable within a time.' at screen 0.5, screen {40 / H:.4f} center",
-              f"set label 4 'Stiff panels: per variant, the worst error and the worst time over the stiff input sets. "
-              f"{blinn_note}{missing_note}' at screen 0.5, screen {20 / H:.4f} center"]
+              f"set label 4 '{stiff_note}{blinn_note}{missing_note}' at screen 0.5, screen {20 / H:.4f} center"]
     g = [f"set terminal pngcairo size {W},{H} font 'sans,10' noenhanced",
          f"set output '{png}'",
          "set multiplot",
