@@ -422,7 +422,8 @@ def nice_ticks(lo, hi):
 class LabelPlacer:
     """Greedy placement of point labels in pixel space: each label goes to the first of a few positions
     around its point that overlaps the least with labels already placed, markers and the plot's border."""
-    CHAR_W, CHAR_H = 7.0, 14.0  # pngcairo 'sans,10' in pixels (approximate)
+    CHAR_W, CHAR_H = 7.0, 14.0  # pngcairo 'sans,10' in pixels (measured about 6.4 x 13: a little margin)
+
     def __init__(self, area):
         self.area = area  # (x0, y0, x1, y1) pixels, y up
         self.boxes = []
@@ -559,9 +560,10 @@ def plot(rows, n_cache, stiff_sets, out_dir):
               f"set label 3 'Colour: path; marker: mode; black and grey: anchors (the naive GLM loop, the hand-written "
               f"SIMD kernel). Amber step line: Pareto frontier of phong variants (ringed), the smallest error "
               f"reachable within a time.' at screen 0.5, screen {40 / H:.4f} center",
-              f"set label 4 '{stiff_note}{blinn_note}{missing_note}' at screen 0.5, screen {20 / H:.4f} center"]
+              f"set label 4 {gnuplot_quoted(stiff_note + blinn_note + missing_note)} at screen 0.5, "
+              f"screen {20 / H:.4f} center"]
     g = [f"set terminal pngcairo size {W},{H} font 'sans,10' noenhanced",
-         f"set output '{png}'",
+         f"set output {gnuplot_quoted(png)}",
          "set multiplot",
          "set logscale xy", "set grid xtics ytics lc rgb '#e4e4e4'", "unset key",
          "set xtics (" + ", ".join(f"'{t:g}' {t}" for t in nice_ticks(xmin, xmax)) + ")",
@@ -569,7 +571,6 @@ def plot(rows, n_cache, stiff_sets, out_dir):
          "set format y '1e%L'",
          "set xlabel 'ns per (point, light), median' offset 0,0.3",
          "set ylabel 'max relative error' offset 1,0"]
-    plot_g = []  # per-panel commands
     for r, t in enumerate(types):
         for c, (title, sets) in enumerate(columns):
             a = area(r, c)
@@ -579,7 +580,7 @@ def plot(rows, n_cache, stiff_sets, out_dir):
                    f"set bmargin at screen {a[1] / H:.5f}", f"set tmargin at screen {a[3] / H:.5f}",
                    f"set yrange [{ylo}:{yhi}]",
                    f"set ytics {10 if math.log10(yhi / ylo) <= 10 else 100}",
-                   f"set title '{t}, {title}' offset 0,-0.4 font ',12'",
+                   f"set title {gnuplot_quoted(f'{t}, {title}')} offset 0,-0.4 font ',12'",
                    "unset label", "unset arrow", "unset object"] + (header if (r, c) == (0, 0) else [])
             placer = LabelPlacer(a)
             front = pareto_frontier([p for p in pts if not p["anchor"]])
@@ -598,16 +599,16 @@ def plot(rows, n_cache, stiff_sets, out_dir):
                 half = 13 if id(p) in on_front else 8  # the frontier's rings are larger than the markers
                 placer.block((px - half, py - half, px + half, py + half), 6.0)
             placer.block_polyline([to_px(a, x, y, t) for x, y in steps])
-            refs = [(HALF_8BIT_LEVEL, "half an 8-bit level, 1/510 (above it 8-bit output can change)", "dt 2 lc rgb '#404040'"),
-                    (UNIT_ROUNDOFF[t], f"{t} unit roundoff u = {UNIT_ROUNDOFF_NAME[t]}", "dt 3 lc rgb '#404040'")]
             # Above half an 8-bit level an error can change an 8-bit output: a pale band.
             if HALF_8BIT_LEVEL < yhi:
                 cmd.append(f"set object rect from graph 0, first {max(HALF_8BIT_LEVEL, ylo)} to graph 1, graph 1 "
                            f"fc rgb '#fbecec' fs solid noborder behind")
+            refs = [(HALF_8BIT_LEVEL, "half an 8-bit level, 1/510 (above it 8-bit output can change)", "dt 2"),
+                    (UNIT_ROUNDOFF[t], f"{t} unit roundoff u = {UNIT_ROUNDOFF_NAME[t]}", "dt 3")]
             for y, text, style in refs:
                 if not ylo < y < yhi:
                     continue
-                cmd.append(f"set arrow from graph 0, first {y} to graph 1, first {y} nohead {style} lw 1.5 back")
+                cmd.append(f"set arrow from graph 0, first {y} to graph 1, first {y} nohead {style} lc rgb '#404040' lw 1.5 back")
                 _, py = to_px(a, xmax, y, t)
                 placer.block((a[0], py - 2, a[2], py + 2), 1.0)  # point labels may cross it, preferably not
                 lx, ly, align, _ = placer.place_at([(a[2] - 4, py + 9, "right"), (a[0] + 4, py + 9, "left"),
@@ -639,8 +640,8 @@ def plot(rows, n_cache, stiff_sets, out_dir):
             if not plots:  # an empty panel still gets its axes, title and reference lines
                 plots = [f"'+' using ({xmin}):({ylo}) every ::0::0 with dots lc rgb 'white'"]
             cmd.append("plot " + ", \\\n     ".join(plots))
-            plot_g += cmd
-    g += plot_g + ["unset multiplot"]
+            g += cmd
+    g.append("unset multiplot")
     script = os.path.join(out_dir, "error_vs_time.gp")
     with open(script, "w") as f:
         f.write("\n".join(g) + "\n")
