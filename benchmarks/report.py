@@ -75,7 +75,7 @@ def baseline_of(variant):
 
 def order(variant):
     path, mode, spec, typ = variant.split(".")
-    modes = ["exact", "stable", "stable_twofold", "stable_m256"]
+    modes = ["fast", "exact", "stable", "stable_twofold", "stable_m256"]
     paths = ["naive_glm", "scalar", "batch", "hand_simd"]
     return (["float", "double"].index(typ), paths.index(path) if path in paths else 9,
             modes.index(mode) if mode in modes else 9, spec)
