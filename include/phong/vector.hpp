@@ -114,7 +114,8 @@ PHONG_HD constexpr T exact_inverse_length(T dd)
         if (dd >= exact_min_square<T>()) [[likely]] return phong::rsqrt(dd);
         return T(0);
     } else {
-        return phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
+        const mask_t<T> normal = math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>());
+        return phong::select(normal, detail::rsqrt_normal(dd), T(0));
     }
 }
 

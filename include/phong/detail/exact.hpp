@@ -182,7 +182,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
     if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
         nl = nd / phong::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
     } else {
-        if constexpr (F.spot == spot_model::none) inv = std::is_floating_point_v<T> ? phong::rsqrt(dd) : exact_inverse_length(dd);
+        if constexpr (F.spot == spot_model::none) inv = detail::rsqrt_normal(dd); // lanes where dd is not normal are not lit: selected away
         nl = nd * inv;
     }
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, on);
