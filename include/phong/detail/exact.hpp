@@ -139,15 +139,16 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 /// cosine_power). Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes
 /// that are lit and see the viewer (scalars: shade's light loop runs a point without a view
 /// vector with the specular term removed, detail::add_lights).
-template <class T, glm::qualifier Q, class U>
-PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
+template <class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U>
+PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
                                      [[maybe_unused]] mask_t<T> on)
 {
+    glm::vec<3, T, Q>& sum = sum_of<term_kind::specular>(sums);
     if constexpr (std::is_floating_point_v<T>) {
-        if (x > T(0)) sums.specular += in_type<T>(L.specular) * (f * detail::cosine_power(x, scale, m));
-        else if (m == T(0)) sums.specular += in_type<T>(L.specular) * f; // cosine_power's pow(0, 0) = 1
+        if (x > T(0)) sum += in_type<T>(L.specular) * (f * detail::cosine_power(x, scale, m));
+        else if (m == T(0)) sum += in_type<T>(L.specular) * f; // cosine_power's pow(0, 0) = 1
     } else {
-        sums.specular += in_type<T>(L.specular) * (f * phong::select(on, detail::cosine_power(x, scale, m), T(0)));
+        sum += in_type<T>(L.specular) * (f * phong::select(on, detail::cosine_power(x, scale, m), T(0)));
     }
 }
 
@@ -155,8 +156,8 @@ PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& 
 /// double arithmetic: the stable mode's wider route); visibility: unweighted or a weight in [0, 1].
 /// Dot products are taken with d = L.xyz - w Q itself and scaled by 1/|d| only for lit pairs:
 /// the signs that decide the branches do not wait for a square root and a division.
-template <features F, class T, glm::qualifier Q, class U, class W>
-PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m, W visibility)
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class W>
+PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m, W visibility)
 {
     using vec3 = glm::vec<3, T, Q>;
     const T w = light_w<F, T>(L);
