@@ -79,18 +79,22 @@ PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& positi
     }
 }
 
-/// The point's poison (poison_of). Scalars: finite squares of the normal and the view vector
-/// mean finite inputs and poison 0, so the exact test runs only in the rare other case.
+/// The point's poison (poison_of). Finite squares of the normal and the view vector mean finite
+/// inputs and poison 0, so the exact test runs only in the rare other case (SIMD: unless every
+/// lane passes). A given view vector says nothing about Q: its square joins the test.
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                   const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env, T normal_square,
                                   T view_square)
 {
+    if constexpr (F.view == view_model::given) view_square = view_square + phong::dot(position, position);
     if constexpr (std::is_floating_point_v<T>) {
         if (!(normal_square <= largest<T>() && view_square <= largest<T>())) [[unlikely]]
             return poison_of<F>(position, normal, given_view, env);
         return T(0);
     } else {
+        if (math_traits<T>::all(math_traits<T>::both(normal_square <= largest<T>(), view_square <= largest<T>()))) [[likely]]
+            return T(0);
         return poison_of<F>(position, normal, given_view, env);
     }
 }
