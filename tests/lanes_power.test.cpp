@@ -101,6 +101,67 @@ TEST_CASE("shade_batch's float power: within its documented bound on seeded base
     CHECK(worst.ratio > 0.05); // the bound is not vacuous by orders of magnitude
 }
 
+/// (1 - x)^m through math_traits<V>::pow_one_minus (the stable mode's power), one lane value.
+float lanes_pow_one_minus(float x, float m)
+{
+    alignas(64) float xs[W], ms[W], out[W];
+    for (std::size_t k = 0; k < W; ++k) xs[k] = x, ms[k] = m;
+    const V r = phong::math_traits<V>::pow_one_minus(V::load_aligned(xs), V::load_aligned(ms));
+    r.store_aligned(out);
+    return out[W / 2];
+}
+
+/// Checks (1 - x)^m against the wide reference on the exact 1 - x; returns error / bound.
+double check_one_minus(float x, float m)
+{
+    const float got = lanes_pow_one_minus(x, m);
+    REQUIRE(std::isfinite(got));
+    const phong_test::wide base = phong_test::wide(1) - phong_test::wide(x);
+    const double ref = static_cast<double>(phong_test::wpow(base, phong_test::wide(m)));
+    if (ref >= double(std::numeric_limits<float>::min())) {
+        const double y = double(m) * std::log2(static_cast<double>(base));
+        const double bound = phong::detail::lanes::pow_one_minus_lanes_error(y);
+        const double rel = std::abs(double(got) - ref) / ref;
+        if (!(rel <= bound)) MESSAGE("x = " << x << ", m = " << m << ": relative error " << rel << " > bound " << bound);
+        CHECK(rel <= bound);
+        return rel / bound;
+    }
+    CHECK(std::abs(double(got) - ref) <= double(std::numeric_limits<float>::min()));
+    return 0;
+}
+
+TEST_CASE("shade_batch's float (1 - x)^m: within its documented bound, tiny x keeps its relative accuracy")
+{
+    std::mt19937_64 rng(20261125);
+    std::uniform_real_distribution<double> unit(0, 1);
+    worst_case worst;
+    int checked = 0;
+    for (float m : {0.5f, 1.0f, 7.0f, 32.0f, 200.0f, 1e4f, 1e6f, 1e9f}) {
+        for (int i = 0; i < 4000; ++i) {
+            // x log-uniform over [2^-60, 1): highlights (x ~ 1 - cos) down to far below u
+            const float x = static_cast<float>(std::exp2(-60.0 * unit(rng)));
+            if (!(x < 1)) continue;
+            const double r = check_one_minus(x, m);
+            if (r > worst.ratio) worst = {r, x, m};
+            ++checked;
+        }
+        for (float x : {0.29289323f, 0.29289320f, 0.5f, 0.75f, std::nextafter(1.0f, 0.0f)}) { // branch and split edges
+            const double r = check_one_minus(x, m);
+            if (r > worst.ratio) worst = {r, x, m};
+            ++checked;
+        }
+    }
+    MESSAGE(checked << " inputs; worst error / bound = " << worst.ratio << " at x = " << worst.x << ", m = " << worst.m);
+    CHECK(worst.ratio > 0.02);
+    // Edges: x = 0 gives 1, x >= 1 gives 0 (m > 0) or 1 (m = 0).
+    CHECK(lanes_pow_one_minus(0.0f, 1e30f) == 1.0f);
+    CHECK(lanes_pow_one_minus(1.0f, 3.0f) == 0.0f);
+    CHECK(lanes_pow_one_minus(1.5f, 3.0f) == 0.0f);
+    CHECK(lanes_pow_one_minus(1.0f, 0.0f) == 1.0f);
+    CHECK(lanes_pow_one_minus(0x1p-30f, 1.0f) == 1.0f);              // 1 - 2^-30 rounds to 1 in float
+    CHECK(lanes_pow_one_minus(0x1p-20f, 1e6f) < 0.4f);                // (1 - 2^-20)^1e6 = 0.385: x's bits kept
+}
+
 TEST_CASE("shade_batch's float power: edges")
 {
     const float tiny = std::numeric_limits<float>::denorm_min();

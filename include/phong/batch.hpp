@@ -127,8 +127,11 @@ struct math_traits<xsimd::batch<T, A>> {
     /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
     /// xsimd's kernels (exp clamped as above: m log1p(-x) reaches -1e30 and below for the
     /// shininess validate accepts); x >= 1 gives 0, and 1 for m = 0.
+    /// Float lanes: detail/lanes_power.hpp's polynomial kernel (log2(1 - x) from t = -x itself near
+    /// x = 0), relative error <= (6.5 |m log2(1 - x)| + 2.5) u (pow_one_minus_lanes_error).
     PHONG_LANES_INLINE static V pow_one_minus(const V& x, const V& m)
     {
+        if constexpr (float_lanes) return detail::lanes::pow_one_minus(xsimd::max(x, V(T(0))), m);
         const V xc = xsimd::min(x, V(T(1)));
         const auto inside = xc < V(T(1));
         const V lg = xsimd::log1p(-xsimd::select(inside, xc, V(T(0))));

@@ -53,26 +53,40 @@ constexpr double pow_unit_lanes_error(double y)
     return (3.5 * (y < 0 ? -y : y) + 2.5) * 0x1p-24;
 }
 
-/// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound).
-template <class V>
 #if defined(__GNUC__)
-__attribute__((always_inline))
+#  define PHONG_LANES_POWER_INLINE inline __attribute__((always_inline))
+#else
+#  define PHONG_LANES_POWER_INLINE inline
 #endif
-inline V pow_unit(const V& x, const V& m)
+
+/// a b + c rounded once (math_traits' fused instructions: xsimd 8.1's fma is not fused on AVX-512).
+template <class V> PHONG_LANES_POWER_INLINE V fused(const V& a, const V& b, const V& c) { return math_traits<V>::fma(a, b, c); }
+
+/// x = 2^e (1 + t) with 1 + t in [sqrt(1/2), sqrt(2)) for a positive normal x, exactly: subtracting
+/// the bits of sqrt(1/2) and shifting gives e (arithmetic shift: e < 0 for x < sqrt(1/2));
+/// removing e from the exponent field gives 1 + t, and t = (1 + t) - 1 is exact (Sterbenz).
+template <class V> PHONG_LANES_POWER_INLINE V split_exponent(const V& x, V& e)
 {
     using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
-    const auto fma = [](const V& a, const V& b, const V& c) { return math_traits<V>::fma(a, b, c); }; // fused (xsimd 8.1's is not on AVX-512)
-    const V one(1.0f);
-    // x = 2^e f with f in [sqrt(1/2), sqrt(2)): subtracting the bits of sqrt(1/2) and shifting
-    // gives e (arithmetic shift: e < 0 for x < sqrt(1/2)); removing e from the exponent field, f.
-    const V xn = xsimd::max(x, V(std::numeric_limits<float>::min())); // 0, subnormals: 2^-126
-    const IV bits = xsimd::bitwise_cast<IV>(xn);
-    const IV e = (bits - IV(0x3f3504f3)) >> 23;
-    const V t = xsimd::bitwise_cast<V>(bits - (e << 23)) - one;
+    const IV bits = xsimd::bitwise_cast<IV>(x);
+    const IV ei = (bits - IV(0x3f3504f3)) >> 23;
+    e = xsimd::to_float(ei);
+    return xsimd::bitwise_cast<V>(bits - (ei << 23)) - V(1.0f);
+}
+
+/// e + log2(1 + t) = e + t P(t) for t in [sqrt(1/2) - 1, sqrt(2) - 1].
+template <class V> PHONG_LANES_POWER_INLINE V log2_of_split(const V& t, const V& e)
+{
     V p(log2_coefficients[0]);
-    for (int k = 1; k < 9; ++k) p = fma(p, t, V(log2_coefficients[k]));
-    const V log2x = fma(t, p, xsimd::to_float(e));
-    // y <= 0; clamped where 2^y is 0 in float anyway (and for a NaN y: max returns the bound).
+    for (int k = 1; k < 9; ++k) p = fused(p, t, V(log2_coefficients[k]));
+    return fused(t, p, e);
+}
+
+/// 2^y for y <= 0: k = round(y), r = y - k, 2^r = 1 + r R(r), times 2^k exactly (y clamped below
+/// where 2^y is 0 in float anyway; a NaN y is clamped like -inf).
+template <class V> PHONG_LANES_POWER_INLINE V exp2_nonpositive(const V& y_in)
+{
+    using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
 #if defined(__AVX512F__)
     constexpr bool scalef = sizeof(V) == 64;
 #else
@@ -80,25 +94,55 @@ inline V pow_unit(const V& x, const V& m)
 #endif
     // scalef takes any k; else the exponent field k + 127 stays >= 0 (field 0: the value 0).
     constexpr float y_min = scalef ? -150.0f : -127.0f;
-    const V y = xsimd::max(m * log2x, V(y_min));
+    const V y = xsimd::max(y_in, V(y_min));
     const V k = xsimd::nearbyint(y);
     const V r = y - k;
     V q(exp2_coefficients[0]);
-    for (int j = 1; j < 6; ++j) q = fma(q, r, V(exp2_coefficients[j]));
-    const V mantissa = fma(r, q, one);
-    V power;
+    for (int j = 1; j < 6; ++j) q = fused(q, r, V(exp2_coefficients[j]));
+    const V mantissa = fused(r, q, V(1.0f));
 #if defined(__AVX512F__)
-    if constexpr (scalef) {
-        power = V(_mm512_scalef_ps(mantissa, k));
-    } else
+    if constexpr (scalef) return V(_mm512_scalef_ps(mantissa, k));
 #endif
-    {
-        const IV field = (xsimd::to_int(k) + IV(127)) << 23;
-        power = mantissa * xsimd::bitwise_cast<V>(field);
-    }
+    const IV field = (xsimd::to_int(k) + IV(127)) << 23;
+    return mantissa * xsimd::bitwise_cast<V>(field);
+}
+
+/// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound).
+template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m)
+{
+    V e;
+    const V t = split_exponent(xsimd::max(x, V(std::numeric_limits<float>::min())), e); // 0, subnormals: 2^-126
+    const V power = exp2_nonpositive(m * log2_of_split(t, e));
     // pow(0, m > 0) = 0 (2^(-126 m) above is not 0 for m < 1); pow(0, 0) = 1 comes out of y = 0.
     return xsimd::select(x > V(0.0f) || m == V(0.0f), power, V(0.0f));
 }
+
+/// The documented relative error bound of pow_one_minus below, for y = m log2(1 - x) (results
+/// >= 2^-126): pow_unit's, plus the rounding of 1 - x (relative u, at most 2.9 u relative to
+/// log2(1 - x) where 1 - x < sqrt(1/2), i.e. |log2(1 - x)| >= 1/2) on the large-x side.
+constexpr double pow_one_minus_lanes_error(double y)
+{
+    return (6.5 * (y < 0 ? -y : y) + 2.5) * 0x1p-24;
+}
+
+/// (1 - x)^m lane-wise for x in [0, 1], m >= 0 finite: the stable mode's power of 1 - r.v or
+/// 1 - n.h (specular.hpp's pow_one_minus), as 2^(m log2(1 - x)). Where 1 - x >= sqrt(1/2) the
+/// polynomial takes t = -x itself (log2(1 + t) = t P(t): no rounding of 1 - x, so a highlight's
+/// tiny x keeps its relative accuracy, as log1p does); below, 1 - x (exact for x >= 1/2, one
+/// rounding above) is split like pow_unit's base. Error: pow_one_minus_lanes_error. Edges: x = 0
+/// gives 1; x >= 1 gives 0 for m > 0 and 1 for m = 0.
+template <class V> PHONG_LANES_POWER_INLINE V pow_one_minus(const V& x, const V& m)
+{
+    const V base = V(1.0f) - x;
+    V e;
+    const V t_split = split_exponent(xsimd::max(base, V(std::numeric_limits<float>::min())), e);
+    const auto near_one = base >= V(0.70710677f); // then e = 0 and t_split = base - 1
+    const V log2_base = log2_of_split(xsimd::select(near_one, -x, t_split), xsimd::select(near_one, V(0.0f), e));
+    const V power = exp2_nonpositive(m * log2_base);
+    return xsimd::select(x < V(1.0f) || m == V(0.0f), power, V(0.0f));
+}
+
+#undef PHONG_LANES_POWER_INLINE
 
 } // namespace phong::detail::lanes
 #endif // xsimd
