@@ -188,8 +188,8 @@ template <class T, features F> void check_inputs(std::uint64_t seed)
 /// A light whose mask bit is clear equals that light removed, bit for bit: each point of a
 /// masked batch against the same point alone in a batch whose light list holds only the lights
 /// its mask lets through, all marked visible (lanes are independent, so the lane position does
-/// not matter; masks given to both, so both run the same compiled code: a call without masks
-/// takes a separate loop, whose FMA contraction may differ by an ulp).
+/// not matter; masks given to both, so both run the same compiled code also in the scalar build
+/// without xsimd, where a call without masks runs shade<F>'s loop over the plain span instead).
 template <class T, features F> void check_masked_equals_removed(std::uint64_t seed)
 {
     constexpr bool given = F.view == view_model::given;

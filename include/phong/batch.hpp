@@ -255,8 +255,8 @@ template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
 /// materials[ids[i]], bit for bit as the overloads that take one material per point would with
 /// that material, without copying a material per point: the table goes to SIMD lanes once per
 /// call; a step whose points all have one id (coherent primary hits: most steps) uses those
-/// lanes as they are, and a step of mixed ids gathers each field from the table (AVX-512: one
-/// gather instruction per field).
+/// lanes as they are, and a step of mixed ids gathers each field from the table (AVX-512 and
+/// AVX2: one gather instruction per field).
 ///   materials: the table, validate() for each entry; not empty when there are points;
 ///   ids: N indices (N = the number of points), each < materials.size().
 /// Pre (debug assertions through the precondition handler): ids N long, every id in the
