@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -298,5 +299,27 @@ TEST_CASE("shade_batch: spans of different lengths are reported, and nothing is 
     REQUIRE(reported.size() == 1);
     CHECK(reported[0] == std::string("shade_batch: spans of different lengths"));
     for (std::size_t i = 0; i < points; ++i) CHECK(r[i] == -1.0f);
+}
+
+TEST_CASE("shade_batch: a material id past the table is reported; if the handler returns, it takes the last entry")
+{
+    recording_handler h;
+    // Diffuse only, a white directional light along the unit normal: each colour is its kd.
+    constexpr features F{.scene_ambient = false, .specular = specular_model::none, .lights = light_kind::directional};
+    const std::vector<light<float>> lights{light<float>::with_strength({0.0f, 0.0f, 1.0f, 0.0f}, glm::vec3(1.0f))};
+    std::vector<material<float>> table(2);
+    table[0].kd = glm::vec3(0.25f);
+    table[1].kd = glm::vec3(0.5f);
+    const std::size_t count = batch_width<float> + 1;
+    const std::vector<glm::vec3> p(count, glm::vec3(0.0f, 0.0f, -2.0f)), n(count, glm::vec3(0.0f, 0.0f, 1.0f));
+    std::vector<std::uint32_t> ids(count, 0);
+    ids[1] = 7; // past the table
+    std::vector<glm::vec3> out(count);
+    shade_batch<F>(aos_points<float>{.positions = p, .normals = n}, material_table<float>{.materials = table, .ids = ids}, lights, out);
+    REQUIRE(reported.size() == 1);
+    CHECK(reported[0] == std::string("shade_batch: a material id past the table"));
+    CHECK(out[0] == glm::vec3(0.25f));
+    CHECK(out[1] == glm::vec3(0.5f)); // clamped to the last entry
+    CHECK(out[count - 1] == glm::vec3(0.25f));
 }
 #endif

@@ -8,7 +8,8 @@
 //  * the per-hit shadow mask is passed with the whole light list, masked(lights, visible): no
 //    per-hit copy of the visible lights;
 //  * shade_batch<F> takes the hit arrays as they are (aos_points: glm::vec3 positions, normals and
-//    view vectors -ray.dir, one shadow mask per point): one call for all primary hits.
+//    view vectors -ray.dir, one shadow mask per point) and the material ids with the scene's
+//    material table (material_table): one call for all primary hits.
 // The rasterizer's per-pixel normal is interpolated, not unit: it keeps the normalizing path.
 // SPDX-License-Identifier: MIT
 #pragma once
@@ -71,28 +72,24 @@ inline glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, cons
     return phong::shade<F>(P, n, v, mat, phong::masked(lights, visible), env);
 }
 
-/// Scratch arrays of shade_phong_batch / shade_phong_fragments_batch, kept between calls.
+/// Scratch arrays of shade_phong_fragments_batch, kept between calls.
 struct batch_scratch {
-    std::vector<phong::material<float>> mats;  ///< one per point
     std::vector<float> px, py, pz, nx, ny, nz; ///< SoA positions and normals (rasterizer)
     std::vector<float> r, g, b;                ///< SoA colours (rasterizer)
 };
 
 /// Primary hits, shade_batch<F> on the hit arrays as the tracer keeps them (AoS glm::vec3), each
-/// point with its own view vector (-ray.dir) and shadow mask: one call, no grouping, no repacking
-/// but the per-point material looked up by id (all of this is timed).
+/// point with its own view vector (-ray.dir), shadow mask and material id into the scene's
+/// material table (material_table): one call, nothing copied or repacked (all of it timed).
 template <phong::features F>
 inline void shade_phong_batch(std::span<const glm::vec3> P, std::span<const glm::vec3> n, std::span<const glm::vec3> v,
-                              std::span<const std::uint64_t> visible, std::span<const int> material_id,
+                              std::span<const std::uint64_t> visible, std::span<const std::uint32_t> material_id,
                               std::span<const phong::material<float>> materials, std::span<const phong::light<float>> lights,
-                              const glm::vec3& ambient, std::span<glm::vec3> out, batch_scratch& s)
+                              const glm::vec3& ambient, std::span<glm::vec3> out)
 {
-    const std::size_t N = P.size();
-    s.mats.resize(N);
-    for (std::size_t i = 0; i < N; ++i) s.mats[i] = materials[std::size_t(material_id[i])];
     const phong::environment<float> env{.ambient = ambient};
     phong::shade_batch<F>(phong::aos_points<float>{.positions = P, .normals = n, .views = v, .light_masks = visible},
-                          std::span<const phong::material<float>>(s.mats), lights, out, env);
+                          phong::material_table<float>{.materials = materials, .ids = material_id}, lights, out, env);
 }
 
 // ---- Software rasterizer --------------------------------------------------------------------

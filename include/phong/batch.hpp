@@ -13,6 +13,7 @@
 #include "shade.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <cstdint>
@@ -282,6 +283,23 @@ template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
     std::span<const std::uint64_t> light_masks{};
 };
 
+/// Materials as a renderer keeps them: a table (a scene's materials) and one index into it per
+/// point (each hit's material id). shade_batch with a material_table shades point i with
+/// materials[ids[i]], bit for bit as the overloads that take one material per point would with
+/// that material, without copying a material per point: the table goes to SIMD lanes once per
+/// call; a step whose points all have one id (coherent primary hits: most steps) uses those
+/// lanes as they are, and a step of mixed ids gathers each field from the table (AVX-512 and
+/// AVX2: one gather instruction per field).
+///   materials: the table, validate() for each entry; not empty when there are points;
+///   ids: N indices (N = the number of points), each < materials.size().
+/// Pre (debug assertions through the precondition handler): ids N long, every id in the
+/// table. Edge: an id past the table takes its last entry (memory-safe in release builds);
+/// an empty table shades nothing (every build).
+template <class T, glm::qualifier Q = glm::defaultp> struct material_table {
+    std::span<const material<T, Q>> materials;
+    std::span<const std::uint32_t> ids;
+};
+
 namespace detail {
 
 template <class V, class T, glm::qualifier Q>
@@ -322,15 +340,108 @@ template <class V, class T> void store(const V& v, T* p)
     else v.store_unaligned(p);
 }
 
-/// Gathers the materials of `count` consecutive points into one material of lanes (the last one
-/// repeated past count).
-template <class V, class T, glm::qualifier Q>
-material<V, Q> gather(const material<T, Q>* m, std::size_t count)
+/// True where the AVX-512 paths below apply: 512-bit lanes of float or double (16 or 8 points).
+template <class V, class T> inline constexpr bool avx512_lanes =
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+    !std::is_same_v<V, T> && sizeof(V) == 64 && (std::is_same_v<T, float> || std::is_same_v<T, double>);
+#else
+    false;
+#endif
+
+/// True where the AVX2 paths below apply: 256-bit lanes of float (8 points).
+template <class V, class T> inline constexpr bool avx2_float_lanes =
+#if PHONG_HAS_XSIMD && defined(__AVX2__)
+    !std::is_same_v<V, T> && sizeof(V) == 32 && std::is_same_v<T, float>;
+#else
+    false;
+#endif
+
+#if PHONG_HAS_XSIMD && defined(__AVX2__)
+/// The 8 x 3 transpose with AVX2 (8 interleaved vec3 in three registers a, b, c of 8 floats).
+/// Component o of lane k is float s = 3k + o, in register s / 8 at position s % 8; for each o
+/// those positions are a permutation of 0..7 (3 is coprime to 8), so two blends gather the
+/// component's 8 floats into one register (position p from the register holding it) and one
+/// permute puts lane k at its place. Back (a colour to 8 interleaved vec3): block b's float j is
+/// component (8b + j) % 3 of point (8b + j) / 3: x, y, z permuted by point, blended by component.
+constexpr int aos8_blend(int o, int reg)
+{
+    int bits = 0;
+    for (int k = 0; k < 8; ++k)
+        if ((3 * k + o) / 8 == reg) bits |= 1 << ((3 * k + o) % 8);
+    return bits;
+}
+constexpr int interleave8_blend(int b, int component)
+{
+    int bits = 0;
+    for (int j = 0; j < 8; ++j)
+        if ((8 * b + j) % 3 == component) bits |= 1 << j;
+    return bits;
+}
+struct aos8_permutes {
+    alignas(32) std::int32_t gather[3][8]{}, scatter[3][8]{};
+    constexpr aos8_permutes()
+    {
+        for (int o = 0; o < 3; ++o)
+            for (int k = 0; k < 8; ++k) gather[o][k] = (3 * k + o) % 8, scatter[o][k] = (8 * o + k) / 3;
+    }
+};
+inline constexpr aos8_permutes aos8_permute_table{};
+template <int o> __m256 aos8_component(__m256 a, __m256 b, __m256 c)
+{
+    const __m256 t = _mm256_blend_ps(_mm256_blend_ps(a, b, aos8_blend(o, 1)), c, aos8_blend(o, 2));
+    return _mm256_permutevar8x32_ps(t, _mm256_load_si256(reinterpret_cast<const __m256i*>(aos8_permute_table.gather[o])));
+}
+template <int b> __m256 interleave8_block(__m256 x, __m256 y, __m256 z)
+{
+    const __m256i point = _mm256_load_si256(reinterpret_cast<const __m256i*>(aos8_permute_table.scatter[b]));
+    const __m256 px = _mm256_permutevar8x32_ps(x, point), py = _mm256_permutevar8x32_ps(y, point), pz = _mm256_permutevar8x32_ps(z, point);
+    return _mm256_blend_ps(_mm256_blend_ps(px, py, interleave8_blend(b, 1)), pz, interleave8_blend(b, 2));
+}
+#endif
+
+/// A material is 14 scalars in a row (ka, kd, ks, emission, shininess, alpha) when glm's vec3 is
+/// unpadded (every qualifier but the aligned ones): then its fields can be gathered by offset.
+template <class T, glm::qualifier Q> inline constexpr bool material_is_14_scalars =
+    sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T) && sizeof(material<T, Q>) == 14 * sizeof(T) && std::is_standard_layout_v<material<T, Q>>;
+
+/// One material of lanes: lane k takes base[element[k]] (k < W). The same values as splatting
+/// each material, so the same bits downstream. With gather_instructions (a material table: small,
+/// in cache) and AVX-512 or AVX2: one gather instruction per field (14); otherwise a scalar
+/// transpose through a small buffer. Per-point materials take the scalar transpose: they stream
+/// from memory, and there 14 gathers over the same 14 cache lines took 1.5x the time of the
+/// sequential reads (262144 points, AVX-512, this machine).
+template <class V, bool gather_instructions, class T, glm::qualifier Q>
+material<V, Q> gather(const material<T, Q>* base, const std::uint32_t* element)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+    if constexpr (gather_instructions && avx512_lanes<V, T> && material_is_14_scalars<T, Q>) {
+        const T* scalars = &base->ka.x; // the 14 fields of base[e] are scalars[14 e + f]
+        V field[14];
+        if constexpr (std::is_same_v<T, float>) {
+            const __m512i index = _mm512_mullo_epi32(_mm512_loadu_si512(element), _mm512_set1_epi32(14));
+            for (int f = 0; f < 14; ++f) field[f] = V(_mm512_i32gather_ps(index, scalars + f, sizeof(T)));
+        } else {
+            const __m256i index = _mm256_mullo_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(element)), _mm256_set1_epi32(14));
+            for (int f = 0; f < 14; ++f) field[f] = V(_mm512_i32gather_pd(index, scalars + f, sizeof(T)));
+        }
+        return {{field[0], field[1], field[2]}, {field[3], field[4], field[5]}, {field[6], field[7], field[8]},
+                {field[9], field[10], field[11]}, field[12], field[13]};
+    }
+#endif
+#if PHONG_HAS_XSIMD && defined(__AVX2__)
+    if constexpr (gather_instructions && avx2_float_lanes<V, T> && material_is_14_scalars<T, Q>) {
+        const T* scalars = &base->ka.x;
+        const __m256i index = _mm256_mullo_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(element)), _mm256_set1_epi32(14));
+        V field[14];
+        for (int f = 0; f < 14; ++f) field[f] = V(_mm256_i32gather_ps(scalars + f, index, sizeof(T)));
+        return {{field[0], field[1], field[2]}, {field[3], field[4], field[5]}, {field[6], field[7], field[8]},
+                {field[9], field[10], field[11]}, field[12], field[13]};
+    }
+#endif
     alignas(64) T lane[14][W];
     for (std::size_t k = 0; k < W; ++k) {
-        const material<T, Q>& mk = m[k < count ? k : count - 1];
+        const material<T, Q>& mk = base[element[k]];
         for (int c = 0; c < 3; ++c) {
             lane[c][k] = mk.ka[c];
             lane[3 + c][k] = mk.kd[c];
@@ -352,6 +463,67 @@ material<V, Q> gather(const material<T, Q>* m, std::size_t count)
     return out;
 }
 
+/// The element indices 0, 1, ..., count - 1, then count - 1 repeated (a tail's pad lanes take
+/// the last point's material): the per-point materials of one step.
+template <std::size_t W> struct consecutive_elements {
+    alignas(64) std::uint32_t index[W]{};
+    constexpr explicit consecutive_elements(std::size_t count)
+    {
+        for (std::size_t k = 0; k < W; ++k) index[k] = std::uint32_t(k < count ? k : count - 1);
+    }
+};
+template <std::size_t W> inline constexpr consecutive_elements<W> full_step_elements{W};
+
+/// The lane material of one step from a material table: the table's lanes (splatted once per
+/// call) when every point of the step has the same id, else a gather of the table's entries.
+/// An id past the table takes its last entry (a debug build reports it before: shade_batch's
+/// precondition); pad lanes of a tail take the last point's id.
+template <class V, class T, glm::qualifier Q> struct table_lanes {
+    std::span<const material<T, Q>> table;
+    std::span<const std::uint32_t> ids;
+    std::vector<material<V, Q>> splatted; ///< table[j] in every lane
+
+    /// Calls use(material<V, Q> const&) with the lanes of points i .. i + count - 1.
+    template <class Use> void with_step(std::size_t i, std::size_t count, Use&& use) const
+    {
+        constexpr std::size_t W = sizeof(V) / sizeof(T);
+        const std::uint32_t last = std::uint32_t(table.size() - 1);
+        const std::uint32_t* id = ids.data() + i;
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+        if constexpr (avx512_lanes<V, T> && std::is_same_v<T, float>) {
+            if (count == W) { // 16 ids in one register: clamp, compare with lane 0
+                const std::uint32_t first = std::min(id[0], last);
+                const __m512i clamped = _mm512_min_epu32(_mm512_loadu_si512(id), _mm512_set1_epi32(int(last)));
+                if (_mm512_cmpneq_epi32_mask(clamped, _mm512_set1_epi32(int(first))) == 0) return use(splatted[first]);
+                alignas(64) std::uint32_t element[W];
+                _mm512_store_si512(element, clamped);
+                return use(gather<V, true>(table.data(), element));
+            }
+        }
+#endif
+#if PHONG_HAS_XSIMD && defined(__AVX2__)
+        if constexpr (avx2_float_lanes<V, T>) {
+            if (count == W) { // 8 ids in one register: clamp, compare with lane 0
+                const std::uint32_t first = std::min(id[0], last);
+                const __m256i clamped = _mm256_min_epu32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(id)), _mm256_set1_epi32(int(last)));
+                if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(clamped, _mm256_set1_epi32(int(first)))) == -1) return use(splatted[first]);
+                alignas(32) std::uint32_t element[W];
+                _mm256_store_si256(reinterpret_cast<__m256i*>(element), clamped);
+                return use(gather<V, true>(table.data(), element));
+            }
+        }
+#endif
+        alignas(64) std::uint32_t element[W];
+        bool uniform = true;
+        for (std::size_t k = 0; k < W; ++k) {
+            element[k] = std::min(id[k < count ? k : count - 1], last);
+            uniform = uniform && element[k] == element[0];
+        }
+        if (uniform) return use(splatted[element[0]]);
+        return use(gather<V, true>(table.data(), element));
+    }
+};
+
 /// Lanes [0, W) of a vector input for points i .. i + count - 1 (count <= W): SoA straight from
 /// the three spans when the step is full, else through a padded copy (lanes past count: pad).
 template <class V, glm::qualifier Q, class T>
@@ -367,12 +539,76 @@ glm::vec<3, V, Q> load_vec3(const soa3<T>& in, std::size_t i, std::size_t count,
     }
     return {load<V>(buf[0]), load<V>(buf[1]), load<V>(buf[2])};
 }
-/// The same from an array of glm vectors (AoS): a W x 3 transpose through a small buffer. The
-/// lanes are the same values as from SoA spans, so both layouts give the same bits.
+
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+/// The 3 x W transpose of W interleaved vec3 (3 registers a, b, c of W scalars: x0 y0 z0 x1 ...)
+/// into x, y, z lanes, two two-source permutes per component: t = lanes from (a, b), then the
+/// lanes that come from c. The tables are the indices of permutex2var: component o of lane k is
+/// scalar 3k + o; below 2W it is in (a, b), else c's scalar 3k + o - 2W.
+template <std::size_t W> struct aos_permutes {
+    alignas(64) std::int32_t ab[3][W]{}, with_c[3][W]{};  // 32-bit: the float table
+    alignas(64) std::int64_t ab64[3][W]{}, with_c64[3][W]{}; // 64-bit: the double table
+    /// and back: block b of the interleaved output (scalars bW .. bW + W - 1) from x, y (first
+    /// permute), then z.
+    alignas(64) std::int32_t xy[3][W]{}, with_z[3][W]{};
+    alignas(64) std::int64_t xy64[3][W]{}, with_z64[3][W]{};
+    constexpr aos_permutes()
+    {
+        for (std::size_t o = 0; o < 3; ++o)
+            for (std::size_t k = 0; k < W; ++k) {
+                const std::size_t s = 3 * k + o;
+                const std::size_t first = s < 2 * W ? s : 0, second = s < 2 * W ? k : W + s - 2 * W;
+                ab[o][k] = std::int32_t(first), with_c[o][k] = std::int32_t(second);
+                ab64[o][k] = std::int64_t(first), with_c64[o][k] = std::int64_t(second);
+            }
+        for (std::size_t b = 0; b < 3; ++b)
+            for (std::size_t j = 0; j < W; ++j) {
+                const std::size_t s = b * W + j, point = s / 3, component = s % 3;
+                const std::size_t first = component == 0 ? point : component == 1 ? W + point : 0;
+                const std::size_t second = component == 2 ? W + point : j;
+                xy[b][j] = std::int32_t(first), with_z[b][j] = std::int32_t(second);
+                xy64[b][j] = std::int64_t(first), with_z64[b][j] = std::int64_t(second);
+            }
+    }
+};
+template <std::size_t W> inline constexpr aos_permutes<W> aos_permute_table{};
+#endif
+
+/// The same from an array of glm vectors (AoS): a W x 3 transpose (AVX-512: three loads and six
+/// permutes for a full step; else through a small buffer). The lanes are the same values as from
+/// SoA spans, so both layouts give the same bits.
 template <class V, glm::qualifier Q, class T>
 glm::vec<3, V, Q> load_vec3(std::span<const glm::vec<3, T, Q>> in, std::size_t i, std::size_t count, const glm::vec<3, T, Q>& pad)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+    if constexpr (avx512_lanes<V, T> && sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T)) {
+        if (count == W) {
+            const T* s = &in[i].x; // 3W scalars in a row
+            constexpr const aos_permutes<W>& P = aos_permute_table<W>;
+            glm::vec<3, V, Q> r;
+            for (int o = 0; o < 3; ++o) {
+                if constexpr (std::is_same_v<T, float>) {
+                    const __m512 t = _mm512_permutex2var_ps(_mm512_loadu_ps(s), _mm512_load_si512(P.ab[o]), _mm512_loadu_ps(s + W));
+                    r[o] = V(_mm512_permutex2var_ps(t, _mm512_load_si512(P.with_c[o]), _mm512_loadu_ps(s + 2 * W)));
+                } else {
+                    const __m512d t = _mm512_permutex2var_pd(_mm512_loadu_pd(s), _mm512_load_si512(P.ab64[o]), _mm512_loadu_pd(s + W));
+                    r[o] = V(_mm512_permutex2var_pd(t, _mm512_load_si512(P.with_c64[o]), _mm512_loadu_pd(s + 2 * W)));
+                }
+            }
+            return r;
+        }
+    }
+#endif
+#if PHONG_HAS_XSIMD && defined(__AVX2__)
+    if constexpr (avx2_float_lanes<V, T> && sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T)) {
+        if (count == W) {
+            const T* s = &in[i].x; // 24 floats in a row
+            const __m256 a = _mm256_loadu_ps(s), b = _mm256_loadu_ps(s + 8), c = _mm256_loadu_ps(s + 16);
+            return {V(aos8_component<0>(a, b, c)), V(aos8_component<1>(a, b, c)), V(aos8_component<2>(a, b, c))};
+        }
+    }
+#endif
     alignas(64) T buf[3][W];
     for (std::size_t k = 0; k < W; ++k) {
         const glm::vec<3, T, Q>& p = k < count ? in[i + k] : pad;
@@ -381,6 +617,47 @@ glm::vec<3, V, Q> load_vec3(std::span<const glm::vec<3, T, Q>> in, std::size_t i
         buf[2][k] = p.z;
     }
     return {load<V>(buf[0]), load<V>(buf[1]), load<V>(buf[2])};
+}
+
+/// Stores the lanes of a colour into count interleaved colours at out (rgb: AVX-512 transposes a
+/// full step with six permutes and three stores; else through a small buffer).
+template <class V, class T, int N, glm::qualifier Q>
+void store_interleaved(const glm::vec<N, V, Q>& c, glm::vec<N, T, Q>* out, std::size_t count)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+    if constexpr (avx512_lanes<V, T> && N == 3 && sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T)) {
+        if (count == W) {
+            T* d = &out->x; // 3W scalars in a row
+            constexpr const aos_permutes<W>& P = aos_permute_table<W>;
+            for (int b = 0; b < 3; ++b) {
+                if constexpr (std::is_same_v<T, float>) {
+                    const __m512 t = _mm512_permutex2var_ps(c[0], _mm512_load_si512(P.xy[b]), c[1]);
+                    _mm512_storeu_ps(d + b * W, _mm512_permutex2var_ps(t, _mm512_load_si512(P.with_z[b]), c[2]));
+                } else {
+                    const __m512d t = _mm512_permutex2var_pd(c[0], _mm512_load_si512(P.xy64[b]), c[1]);
+                    _mm512_storeu_pd(d + b * W, _mm512_permutex2var_pd(t, _mm512_load_si512(P.with_z64[b]), c[2]));
+                }
+            }
+            return;
+        }
+    }
+#endif
+#if PHONG_HAS_XSIMD && defined(__AVX2__)
+    if constexpr (avx2_float_lanes<V, T> && N == 3 && sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T)) {
+        if (count == W) {
+            T* d = &out->x; // 24 floats in a row
+            _mm256_storeu_ps(d, interleave8_block<0>(c[0], c[1], c[2]));
+            _mm256_storeu_ps(d + 8, interleave8_block<1>(c[0], c[1], c[2]));
+            _mm256_storeu_ps(d + 16, interleave8_block<2>(c[0], c[1], c[2]));
+            return;
+        }
+    }
+#endif
+    alignas(64) T buf[4][W];
+    for (int ch = 0; ch < N; ++ch) store(c[ch], buf[ch]);
+    for (std::size_t k = 0; k < count; ++k)
+        for (int ch = 0; ch < N; ++ch) out[k][ch] = buf[ch][k];
 }
 
 /// sums where `lanes` is set, else `before`: the lanes that do not see a light keep exactly the
@@ -404,15 +681,93 @@ light_sums<V, Q> select_sums(const mask_t<V>& lanes, const light_sums<V, Q>& sum
     return r;
 }
 
+/// Which lanes see light j: bit k set when lane k's mask has bit j (lanes past count have no
+/// bits). AVX-512: two (float) or one (double) 64-bit lane tests of the W masks, as a k-mask.
+template <class V, class T> struct lane_visibility {
+    static constexpr std::size_t W = sizeof(V) / sizeof(T);
+    const std::uint64_t* bits;
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+    __m512i low{}, high{}; // the masks of lanes 0..7 and 8..15 (float)
+    explicit lane_visibility(const std::uint64_t* b) : bits(b)
+    {
+        if (!b) return;
+        if constexpr (avx512_lanes<V, T>) {
+            low = _mm512_loadu_si512(b);
+            if constexpr (W == 16) high = _mm512_loadu_si512(b + 8);
+        }
+    }
+#elif PHONG_HAS_XSIMD && defined(__AVX2__)
+    __m256i low{}, high{}; // the masks of lanes 0..3 and 4..7 (float)
+    explicit lane_visibility(const std::uint64_t* b) : bits(b)
+    {
+        if (!b) return;
+        if constexpr (avx2_float_lanes<V, T>) {
+            low = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b));
+            high = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + 4));
+        }
+    }
+#else
+    explicit lane_visibility(const std::uint64_t* b) : bits(b) {}
+#endif
+    std::uint32_t lanes_seeing(std::size_t j) const
+    {
+        const std::uint64_t bit = std::uint64_t(1) << j;
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+        if constexpr (avx512_lanes<V, T>) {
+            const __m512i b = _mm512_set1_epi64(std::int64_t(bit));
+            std::uint32_t m = _mm512_test_epi64_mask(low, b);
+            if constexpr (W == 16) m |= std::uint32_t(_mm512_test_epi64_mask(high, b)) << 8;
+            return m;
+        }
+#elif PHONG_HAS_XSIMD && defined(__AVX2__)
+        if constexpr (avx2_float_lanes<V, T>) { // bit j of each 64-bit mask to its sign bit, then movemask
+            const __m256i up = _mm256_set1_epi64x(std::int64_t(63 - j));
+            const int m_low = _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_sllv_epi64(low, up)));
+            const int m_high = _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_sllv_epi64(high, up)));
+            return std::uint32_t(m_low) | std::uint32_t(m_high) << 4;
+        }
+#endif
+        std::uint32_t m = 0;
+        for (std::size_t k = 0; k < W; ++k) m |= std::uint32_t((bits[k] & bit) != 0) << k;
+        return m;
+    }
+    /// The lane mask of bit set k <=> lane k (partial visibility: a select).
+    static mask_t<V> mask(std::uint32_t lanes)
+    {
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+        if constexpr (avx512_lanes<V, T>) {
+            if constexpr (W == 16) return mask_t<V>(typename mask_t<V>::register_type(__mmask16(lanes)));
+            else return mask_t<V>(typename mask_t<V>::register_type(__mmask8(lanes)));
+        }
+#elif PHONG_HAS_XSIMD && defined(__AVX2__)
+        if constexpr (avx2_float_lanes<V, T>) { // lane k: all ones where bit k of lanes is set
+            const __m256i lane_bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+            const __m256i set = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(lanes)), lane_bit), lane_bit);
+            return mask_t<V>(_mm256_castsi256_ps(set));
+        }
+#endif
+        alignas(64) T seen[W];
+        for (std::size_t k = 0; k < W; ++k) seen[k] = (lanes >> k & 1u) ? T(1) : T(0);
+        return load<V>(seen) > V(T(0));
+    }
+};
+
 /// Every light's terms added to the sums of one step, light j only in the lanes whose mask has
 /// bit j (bits: one mask per lane, 0 past the tail; null: every light in every lane). A light no
 /// lane sees is skipped; one that every point of the step sees is added as without masks; else
 /// it is added and the lanes that do not see it get their sums back (select: exactly nothing
-/// from it, its ambient term included). Lights past the 64th are seen by no point. With masks,
-/// one call site of add_light for every case: a masked light and a removed one (the same call
-/// with the light left out) run the same compiled code.
+/// from it, its ambient term included). Lights past the 64th are seen by no point. One call site
+/// of add_light for every case, masks or none: a masked light, a removed one (the same call with
+/// the light left out) and a call without masks run the same compiled code. Which lanes see a
+/// light: one bit test of the W masks per light (AVX-512: two vector tests, the result a k-mask
+/// used as is; AVX2: a shift and a movemask per four lanes).
+#if defined(__GNUC__) || defined(__clang__)
+#  define PHONG_BATCH_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#  define PHONG_BATCH_ALWAYS_INLINE inline
+#endif
 template <features F, class V, class T, glm::qualifier Q, class Sums>
-void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
+PHONG_BATCH_ALWAYS_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
                        const V& m, const std::uint64_t* bits, std::size_t count)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
@@ -421,29 +776,19 @@ void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s, std::span<const li
         else add_lights<F>(sums, s, masked(lights, bits[0]), m);
         return;
     }
-    if (!bits) { // no masks: the plain loop (the select-ready copy of the sums below costs ~8 %)
-        add_lights<F>(sums, s, lights, m);
-        return;
-    }
-    std::uint64_t any = 0, all = ~std::uint64_t(0);
-    for (std::size_t k = 0; k < W; ++k) {
-        any |= bits[k];
-        if (k < count) all &= bits[k];
-    }
-    const std::size_t n = std::min<std::size_t>(lights.size(), 64);
+    // Without masks every lane sees every light: the same loop (one call site of add_light, which
+    // the compiler then inlines; with a second loop for this case g++ 12 kept add_light out of
+    // line: 9 % more instructions in shade_lanes with masks, AVX2, 1 light).
+    const std::uint32_t live = count >= W ? std::uint32_t((std::uint64_t(1) << W) - 1) : std::uint32_t((1u << count) - 1);
+    const lane_visibility<V, T> visibility(bits);
+    const std::size_t n = bits ? std::min<std::size_t>(lights.size(), 64) : lights.size();
     for (std::size_t j = 0; j < n; ++j) {
-        const std::uint64_t bit = std::uint64_t(1) << j;
-        if (!(any & bit)) continue;
-        const bool partial = !(all & bit);
-        mask_t<V> lanes(true);
-        if (partial) {
-            alignas(64) T seen[W];
-            for (std::size_t k = 0; k < W; ++k) seen[k] = (bits[k] & bit) ? T(1) : T(0);
-            lanes = load<V>(seen) > V(T(0));
-        }
+        const std::uint32_t seeing = bits ? visibility.lanes_seeing(j) : live;
+        if (!seeing) continue;
+        const bool partial = seeing != live;
         const Sums before = sums;
         detail::add_light<F>(sums, s, lights[j], m);
-        if (partial) sums = select_sums<V, Q>(lanes, sums, before);
+        if (partial) sums = select_sums<V, Q>(lane_visibility<V, T>::mask(seeing), sums, before);
     }
 }
 
@@ -501,16 +846,38 @@ PHONG_BATCH_NOINLINE color<F, V, Q> shade_lanes(const glm::vec<3, V, Q>& positio
     return finish<F>(sums, s, mat, env);
 }
 
+/// One material for every point: its lanes, splatted once per call.
+template <class V, glm::qualifier Q> struct shared_lanes {
+    material<V, Q> lanes;
+    template <class Use> void with_step(std::size_t, std::size_t, Use&& use) const { use(lanes); }
+};
+
+/// One material per point: the step's materials gathered into lanes (the tail's pad lanes take
+/// the last point's material).
+template <class V, class T, glm::qualifier Q> struct per_point_lanes {
+    std::span<const material<T, Q>> materials;
+    template <class Use> void with_step(std::size_t i, std::size_t count, Use&& use) const
+    {
+        constexpr std::size_t W = sizeof(V) / sizeof(T);
+        if (count == W) {
+            use(gather<V, false>(materials.data() + i, full_step_elements<W>.index));
+        } else {
+            const consecutive_elements<W> tail(count);
+            use(gather<V, false>(materials.data() + i, tail.index));
+        }
+    }
+};
+
 /// One batch step over points of any layout (soa_points, aos_points): shade_batch's kernel over
-/// `count` <= W points starting at index i. Full steps load SoA spans directly; tails and AoS
-/// go through padded copies (the pad: Q = (0, 0, -1), n = v = (0, 0, 1), facing the eye).
-template <features F, class V, class Points, class T, glm::qualifier Q, class Materials, class Output>
-void shade_points_step(std::size_t i, std::size_t count, const Points& points, const Materials& materials,
-                       const material<V, Q>& shared_mat, std::span<const light<V, Q>> lights, const environment<V, Q>& env,
-                       const Output& out)
+/// `count` <= W points starting at index i. Full steps load SoA spans directly and AoS through
+/// a transpose; tails go through padded copies (the pad: Q = (0, 0, -1), n = v = (0, 0, 1),
+/// facing the eye). Light masks of a full step are read in place. `materials` gives the step's
+/// material lanes (shared_lanes, per_point_lanes or table_lanes).
+template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
+void shade_points_step(std::size_t i, std::size_t count, const Points& points, const MaterialLanes& materials,
+                       std::span<const light<V, Q>> lights, const environment<V, Q>& env, const Output& out)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
-    constexpr bool per_point_material = !std::is_same_v<Materials, material<T, Q>>;
     using vec3 = glm::vec<3, T, Q>;
     const glm::vec<3, V, Q> position = load_vec3<V, Q>(points.positions, i, count, vec3(T(0), T(0), T(-1)));
     const glm::vec<3, V, Q> normal = load_vec3<V, Q>(points.normals, i, count, vec3(T(0), T(0), T(1)));
@@ -524,16 +891,23 @@ void shade_points_step(std::size_t i, std::size_t count, const Points& points, c
             front = load<V>(buf) > V(T(0));
         }
     }
-    material<V, Q> gathered;
-    if constexpr (per_point_material) gathered = gather<V>(materials.data() + i, count);
-    const material<V, Q>& mat = per_point_material ? gathered : shared_mat;
 
-    std::uint64_t bits[W] = {};
-    const bool masked = !points.light_masks.empty();
-    if (masked)
-        for (std::size_t k = 0; k < W; ++k) bits[k] = k < count ? points.light_masks[i + k] : 0;
-    const color<F, V, Q> c =
-        shade_lanes<F, V, T, Q, !per_point_material>(position, normal, view, front, mat, lights, env, masked ? bits : nullptr, count);
+    // One material for all points: shade_points_impl folded it into the lights.
+    constexpr bool folded = std::is_same_v<MaterialLanes, shared_lanes<V, Q>>;
+    alignas(64) std::uint64_t tail_bits[W]; // a tail's masks, 0 past count (full steps read them in place)
+    const std::uint64_t* bits = nullptr;
+    if (!points.light_masks.empty()) {
+        if (count == W) {
+            bits = points.light_masks.data() + i;
+        } else {
+            for (std::size_t k = 0; k < W; ++k) tail_bits[k] = k < count ? points.light_masks[i + k] : 0;
+            bits = tail_bits;
+        }
+    }
+    color<F, V, Q> c;
+    materials.with_step(i, count, [&](const material<V, Q>& mat) {
+        c = shade_lanes<F, V, T, Q, folded>(position, normal, view, front, mat, lights, env, bits, count);
+    });
 
     constexpr int channels = F.alpha ? 4 : 3;
     if constexpr (std::is_same_v<Output, soa_rgba<T>>) {
@@ -548,11 +922,7 @@ void shade_points_step(std::size_t i, std::size_t count, const Points& points, c
             }
         }
     } else {
-        // Interleaved rgb(a): transpose through a small buffer.
-        alignas(64) T buf[4][W];
-        for (int ch = 0; ch < channels; ++ch) store(c[ch], buf[ch]);
-        for (std::size_t k = 0; k < count; ++k)
-            for (int ch = 0; ch < channels; ++ch) out[i + k][ch] = buf[ch][k];
+        store_interleaved<V, T>(c, out.data() + i, count);
     }
 }
 
@@ -565,6 +935,22 @@ inline bool bytes_overlap(const void* p, std::size_t bytes, const void* q, std::
     const auto* b = static_cast<const unsigned char*>(q);
     const std::less<const unsigned char*> before;
     return before(a, b + bytes_q) && before(b, a + bytes);
+}
+
+/// Memory that shade_batch reads while it writes: none for one shared material (copied into
+/// lanes first), the N materials when per point, a table's entries (gathered per step) and its N ids.
+struct byte_range {
+    const void* p = nullptr;
+    std::size_t bytes = 0;
+};
+template <class T, glm::qualifier Q> std::array<byte_range, 2> material_reads(const material<T, Q>&, std::size_t) { return {}; }
+template <class T, glm::qualifier Q> std::array<byte_range, 2> material_reads(std::span<const material<T, Q>> m, std::size_t n)
+{
+    return {byte_range{m.data(), n * sizeof(material<T, Q>)}, byte_range{}};
+}
+template <class T, glm::qualifier Q> std::array<byte_range, 2> material_reads(const material_table<T, Q>& t, std::size_t n)
+{
+    return {byte_range{t.materials.data(), t.materials.size() * sizeof(material<T, Q>)}, byte_range{t.ids.data(), n * sizeof(std::uint32_t)}};
 }
 
 /// shade_batch's aliasing rule, checked in debug builds: the memory it writes (the first n
@@ -598,8 +984,8 @@ bool output_overlaps_input(const soa3<T>& positions, const soa3<T>& normals, con
             if (bytes_overlap(writes[w].p, writes[w].bytes, c.data(), n * sizeof(T)) &&
                 !(soa && writes[w].p == static_cast<const void*>(c.data())))
                 return true;
-        if constexpr (!std::is_same_v<Materials, material<T, Q>>)
-            if (bytes_overlap(writes[w].p, writes[w].bytes, materials.data(), n * sizeof(material<T, Q>))) return true;
+        for (const byte_range& m : material_reads(materials, n))
+            if (bytes_overlap(writes[w].p, writes[w].bytes, m.p, m.bytes)) return true;
         if (!front_facing.empty() && bytes_overlap(writes[w].p, writes[w].bytes, front_facing.data(), n * sizeof(bool)))
             return true;
         for (int other = 0; other < w; ++other)
@@ -617,14 +1003,17 @@ template <class T> std::size_t vec3_count(const soa3<T>& v)
 template <class T, glm::qualifier Q> std::size_t vec3_count(std::span<const glm::vec<3, T, Q>> v) { return v.size(); }
 
 /// shade_batch over soa_points or aos_points: preconditions checked (debug builds), lights,
-/// shared material and environment broadcast once, then one shade_points_step per W points.
+/// shared material (or a material table) and environment broadcast once, then one
+/// shade_points_step per W points. Materials: material<T, Q> (one for all), a span of N
+/// materials (one per point) or material_table<T, Q> (a table and N ids).
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
 void shade_points_impl(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
                        const Output& out, const environment<T, Q>& env)
 {
     using V = simd_batch<T>;
     constexpr std::size_t W = batch_width<T>;
-    constexpr bool per_point_material = !std::is_same_v<Materials, material<T, Q>>;
+    constexpr bool shared_material = std::is_same_v<Materials, material<T, Q>>;
+    constexpr bool table = std::is_same_v<Materials, material_table<T, Q>>;
     const std::size_t n = vec3_count(points.positions);
     [[maybe_unused]] std::size_t out_size = 0;
     if constexpr (std::is_same_v<Output, soa_rgba<T>>)
@@ -643,7 +1032,16 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     PHONG_ASSERT(points.light_masks.empty() || points.light_masks.size() == n, "shade_batch: light_masks length");
     lengths_ok = lengths_ok && (points.front_facing.empty() || points.front_facing.size() == n) &&
                  (points.light_masks.empty() || points.light_masks.size() == n);
-    if constexpr (per_point_material) lengths_ok = lengths_ok && materials.size() == n;
+    if constexpr (table) {
+        PHONG_ASSERT(materials.ids.size() == n, "shade_batch: material_table needs one id per point (.ids)");
+        PHONG_ASSERT(n == 0 || !materials.materials.empty(), "shade_batch: material_table without materials");
+        lengths_ok = lengths_ok && materials.ids.size() == n;
+        // Checked in every build: with no entry there is nothing to read (an id is clamped to the last entry).
+        if (n != 0 && materials.materials.empty()) return;
+    } else if constexpr (!shared_material) {
+        PHONG_ASSERT(materials.size() == n, "shade_batch: one material per point");
+        lengths_ok = lengths_ok && materials.size() == n;
+    }
 #if !defined(NDEBUG)
     // A precondition handler that returns (set_precondition_handler) must not lead to reads or
     // writes past a span: nothing is shaded then.
@@ -652,7 +1050,7 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
         PHONG_ASSERT((!output_overlaps_input<F.alpha ? 4 : 3, T, Q>(points.positions, points.normals, materials, out, points.front_facing, n)),
                      "shade_batch: an output span overlaps an input span (only an output channel equal to an input "
                      "coordinate span, the same data() and size(), may alias it)");
-    } else { // AoS: the output overlaps none of the point arrays
+    } else { // AoS: the output overlaps none of the point arrays nor the materials
         const void* out_data = nullptr;
         std::size_t out_bytes = 0;
         if constexpr (std::is_same_v<Output, soa_rgba<T>>) out_data = out.r.data(), out_bytes = n * sizeof(T);
@@ -660,18 +1058,17 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
         bool overlap = false;
         const std::span<const glm::vec<3, T, Q>> arrays[3] = {points.positions, points.normals, points.views};
         for (const auto& a : arrays) overlap = overlap || bytes_overlap(out_data, out_bytes, a.data(), a.size() * sizeof(glm::vec<3, T, Q>));
+        for (const byte_range& m : material_reads(materials, n)) overlap = overlap || bytes_overlap(out_data, out_bytes, m.p, m.bytes);
         PHONG_ASSERT(!overlap, "shade_batch: the output overlaps the input points");
     }
-#endif
-    if constexpr (per_point_material) {
-        PHONG_ASSERT(materials.size() == n, "shade_batch: one material per point");
-#if !defined(NDEBUG)
+    if constexpr (table) {
+        for (const material<T, Q>& m : materials.materials) PHONG_ASSERT(static_cast<bool>(validate(m)), validate(m).message());
+        for (const std::uint32_t id : materials.ids) PHONG_ASSERT(id < materials.materials.size(), "shade_batch: a material id past the table");
+    } else if constexpr (!shared_material) {
         for (const material<T, Q>& m : materials) PHONG_ASSERT(static_cast<bool>(validate(m)), validate(m).message());
-#endif
     } else {
         PHONG_ASSERT(static_cast<bool>(validate(materials)), validate(materials).message());
     }
-#if !defined(NDEBUG)
     for (const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
 #endif
 
@@ -679,13 +1076,11 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     std::vector<light<V, Q>> lane_lights;
     lane_lights.reserve(lights.size());
     for (light<T, Q> L : lights) {
-        if constexpr (!per_point_material) L.ambient *= materials.ka, L.diffuse *= materials.kd, L.specular *= materials.ks;
+        if constexpr (shared_material) L.ambient *= materials.ka, L.diffuse *= materials.kd, L.specular *= materials.ks;
         lane_lights.push_back(splat<V>(L));
     }
-    material<V, Q> shared{};
-    if constexpr (!per_point_material) shared = splat<V>(materials);
     environment<T, Q> call_env = env;
-    if constexpr (!per_point_material && ambient_hoistable<F>) {
+    if constexpr (shared_material && ambient_hoistable<F>) {
         if (points.light_masks.empty()) { // shade_lanes' hoisted ambient: ka (La + sum_i La_i), as terms_of sums it
             glm::vec<3, T, Q> sum(T(0));
             for (const light<T, Q>& L : lights) sum += L.ambient;
@@ -694,10 +1089,21 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     }
     const environment<V, Q> lane_env{splat<V>(call_env.ambient), splat<V>(call_env.eye)};
     const std::span<const light<V, Q>> lane_span(lane_lights);
-
-    std::size_t i = 0;
-    for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, materials, shared, lane_span, lane_env, out);
-    if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, materials, shared, lane_span, lane_env, out);
+    const auto run = [&](const auto& material_lanes) {
+        std::size_t i = 0;
+        for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, material_lanes, lane_span, lane_env, out);
+        if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, material_lanes, lane_span, lane_env, out);
+    };
+    if constexpr (shared_material) {
+        run(shared_lanes<V, Q>{splat<V>(materials)});
+    } else if constexpr (table) {
+        table_lanes<V, T, Q> lanes{materials.materials, materials.ids, {}};
+        lanes.splatted.reserve(materials.materials.size());
+        for (const material<T, Q>& m : materials.materials) lanes.splatted.push_back(splat<V>(m));
+        run(lanes);
+    } else {
+        run(per_point_lanes<V, T, Q>{materials});
+    }
 }
 
 /// The soa3 overloads: shade_points_impl on soa_points without views or masks.
@@ -855,6 +1261,47 @@ void shade_batch(const aos_points<T, Q>& points, std::type_identity_t<std::span<
     detail::shade_points_impl<F>(points, materials, lights, out, env);
 }
 
+/// shade_batch over soa_points with a material table: point i takes materials.materials[
+/// materials.ids[i]] (see material_table); the same bits as the per-point overload given those
+/// materials. Everything else as above.
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+void shade_batch(const soa_points<T>& points, const material_table<T, Q>& materials,
+                 std::type_identity_t<std::span<const light<T, Q>>> lights, const soa_rgba<T>& out,
+                 const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, materials, lights, out, env);
+}
+
+/// shade_batch over soa_points with a material table, interleaved colours.
+template <features F, class T, glm::qualifier Q = glm::defaultp>
+void shade_batch(const soa_points<T>& points, const material_table<T, Q>& materials,
+                 std::type_identity_t<std::span<const light<T, Q>>> lights, std::type_identity_t<std::span<color<F, T, Q>>> out,
+                 const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, materials, lights, out, env);
+}
+
+/// shade_batch over aos_points with a material table: a ray tracer's hit arrays (positions,
+/// normals, views -ray.dir, shadow masks) and its material ids, as it keeps them.
+///   shade_batch<F>(aos_points<float>{.positions = P, .normals = N, .views = V, .light_masks = visible},
+///                  material_table<float>{.materials = scene_materials, .ids = hit_material}, lights, out, env);
+template <features F, class T, glm::qualifier Q>
+void shade_batch(const aos_points<T, Q>& points, const material_table<T, Q>& materials,
+                 std::type_identity_t<std::span<const light<T, Q>>> lights, const soa_rgba<T>& out,
+                 const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, materials, lights, out, env);
+}
+
+/// shade_batch over aos_points with a material table, interleaved colours.
+template <features F, class T, glm::qualifier Q>
+void shade_batch(const aos_points<T, Q>& points, const material_table<T, Q>& materials,
+                 std::type_identity_t<std::span<const light<T, Q>>> lights, std::type_identity_t<std::span<color<F, T, Q>>> out,
+                 const environment<T, Q>& env = {})
+{
+    detail::shade_points_impl<F>(points, materials, lights, out, env);
+}
+
 } // namespace phong
 
 #if defined(PHONG_BATCH_POP_DIAGNOSTICS)
@@ -862,3 +1309,4 @@ void shade_batch(const aos_points<T, Q>& points, std::type_identity_t<std::span<
 #  undef PHONG_BATCH_POP_DIAGNOSTICS
 #endif
 #undef PHONG_BATCH_NOINLINE
+#undef PHONG_BATCH_ALWAYS_INLINE

@@ -2,7 +2,7 @@
 // .ci/steps/15-install-consumer.sh with g++ and clang++, -Wall -Wextra -Wpedantic -Werror
 // -march=native and -O1 / -O3, phong's headers not treated as system headers. It instantiates
 // shade_batch with several feature sets (exact and stable; Phong, Blinn, diffuse only; every view
-// model), SoA and AoS inputs, with and without light masks, and checks each point against the
+// model), SoA and AoS inputs, with and without light masks, a material table, and checks each point against the
 // scalar shade<F> with phong::masked() (relative 1e-3 of the largest channel: the batch differs
 // from scalar by a few ulp times the shininess, see phong/batch.hpp; the geometry keeps every
 // point far from the model's gates). Exit status 0 on success.
@@ -91,9 +91,14 @@ template <features F, class T> bool check(const char* name)
             soa.views = {h.vx, h.vy, h.vz};
             aos.views = h.v;
         }
-        std::vector<color<F, T>> from_soa(count), from_aos(count);
+        std::vector<color<F, T>> from_soa(count), from_aos(count), from_table(count);
         shade_batch<F>(soa, mat, lights, from_soa, env);
         shade_batch<F>(aos, mat, lights, from_aos, env);
+        // A material table (here: two copies of mat) with one id per point, mixed and uniform steps.
+        const std::vector<material<T>> table{mat, mat};
+        std::vector<std::uint32_t> ids(count);
+        for (std::size_t i = 0; i < count; ++i) ids[i] = i < batch_width<T> ? 1u : std::uint32_t(i % 2);
+        shade_batch<F>(aos, material_table<T>{.materials = table, .ids = ids}, lights, from_table, env);
         std::vector<color<F, T>> from_soa3(count);
         if constexpr (!given) {
             if (!masked_lights)
@@ -108,6 +113,10 @@ template <features F, class T> bool check(const char* name)
             if constexpr (given) want = shade<F>(h.p[i], h.n[i], h.v[i], mat, masked(all_lights, visible), env);
             else want = shade<F>(h.p[i], h.n[i], mat, masked(all_lights, visible), env);
             ok = close(from_soa[i], want, name, i) && ok;
+            if (!(from_table[i] == from_aos[i])) {
+                std::printf("batch_user: %s point %zu: material_table differs from one material\n", name, i);
+                ok = false;
+            }
             if (!(from_aos[i] == from_soa[i])) {
                 std::printf("batch_user: %s point %zu: AoS differs from SoA\n", name, i);
                 ok = false;
