@@ -799,12 +799,11 @@ template <features F>
 inline constexpr bool ambient_hoistable = F.light_ambient && (!F.attenuate_ambient || ((F.attenuation == attenuation_model::none ||
                                                                                        F.lights == light_kind::directional) &&
                                                                                       F.spot == spot_model::none));
-/// F as shade_lanes runs it with the ambient hoisted: env.ambient carries La + sum_i La_i, added as
-/// the scene's ambient, and the loop has no light ambient term.
+/// F as shade_lanes runs it with the ambient hoisted: the loop has no light ambient term (the
+/// folded sums start at ka (La + sum_i La_i), shade_points_impl).
 template <features F>
 inline constexpr features ambient_hoisted = [] {
     features g = F;
-    g.scene_ambient = true;
     g.light_ambient = false;
     return g;
 }();
@@ -825,8 +824,9 @@ inline constexpr features ambient_hoisted = [] {
 /// hand-written kernel's time, now 1.1x to 1.6x; benchmarks/hand_simd.bench.cpp).
 /// bits: W light masks (0 past the tail), or null. Folded: the lights carry the material's ka, kd
 /// and ks (one material for all points, shade_points_impl): folded_sums, else light_sums.
-/// Hoisted ambient (ambient_hoisted below): without masks, env.ambient holds La + sum_i La_i and
-/// the loop runs without the lights' ambient terms.
+/// Folded, env.ambient is not the scene's ambient but the colour's point-independent part,
+/// emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the loop runs
+/// without the lights' ambient terms); the sums start from it.
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
 PHONG_BATCH_NOINLINE color<F, V, Q> shade_lanes(const glm::vec<3, V, Q>& position, const glm::vec<3, V, Q>& normal,
                                                 const glm::vec<3, V, Q>& view, const mask_t<V>& front, const material<V, Q>& mat,
@@ -835,6 +835,7 @@ PHONG_BATCH_NOINLINE color<F, V, Q> shade_lanes(const glm::vec<3, V, Q>& positio
 {
     const frame_t<F, V, Q> s = prepare<F>(position, normal, view, env, front);
     std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>> sums{};
+    if constexpr (Folded) sums.total = env.ambient;
     if constexpr (Folded && ambient_hoistable<F>) {
         if (!bits) {
             constexpr features G = ambient_hoisted<F>;
@@ -1080,12 +1081,19 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
         lane_lights.push_back(splat<V>(L));
     }
     environment<T, Q> call_env = env;
-    if constexpr (shared_material && ambient_hoistable<F>) {
-        if (points.light_masks.empty()) { // shade_lanes' hoisted ambient: ka (La + sum_i La_i), as terms_of sums it
-            glm::vec<3, T, Q> sum(T(0));
-            for (const light<T, Q>& L : lights) sum += L.ambient;
-            call_env.ambient = F.scene_ambient ? env.ambient + sum : sum;
+    if constexpr (shared_material) { // the folded sums' start (shade_lanes): emission + ka (La [+ sum_i La_i])
+        glm::vec<3, T, Q> ambient(T(0));
+        if constexpr (F.scene_ambient) ambient = env.ambient;
+        if constexpr (ambient_hoistable<F>) {
+            if (points.light_masks.empty()) {
+                glm::vec<3, T, Q> sum(T(0));
+                for (const light<T, Q>& L : lights) sum += L.ambient;
+                ambient = F.scene_ambient ? env.ambient + sum : sum;
+            }
         }
+        glm::vec<3, T, Q> start = materials.ka * ambient;
+        if constexpr (F.emission) start = materials.emission + start;
+        call_env.ambient = start;
     }
     const environment<V, Q> lane_env{splat<V>(call_env.ambient), splat<V>(call_env.eye)};
     const std::span<const light<V, Q>> lane_span(lane_lights);
