@@ -775,6 +775,8 @@ void shade_batch(const aos_points<T, Q>& points, std::type_identity_t<std::span<
 
 } // namespace phong
 
+#include "detail/fast_lanes.hpp" // fast::lanes for the batches (the fast mode's kernels)
+
 #if defined(PHONG_BATCH_POP_DIAGNOSTICS)
 #  pragma GCC diagnostic pop
 #  undef PHONG_BATCH_POP_DIAGNOSTICS

@@ -3,11 +3,13 @@
 // function per step of the data flow: the point's frame (unit normal, view vector), then per
 // light the light vector, f (detail/light_terms.hpp), whether the pair is lit, the diffuse
 // cosine and the specular factor (specular.hpp's steps). Guarded so that finite input never
-// gives NaN or inf; accuracy bounds in phong/accuracy.hpp.
+// gives NaN or inf; accuracy bounds in phong/accuracy.hpp. The fast mode runs this route too,
+// with fast::pow_unit and fast::rsqrt (phong/fast_math.hpp) where the power and 1/|d| are taken.
 // SPDX-License-Identifier: MIT
 #pragma once
 
 #include "../direction.hpp"
+#include "../fast_math.hpp"
 #include "../specular.hpp"
 #include "light_terms.hpp"
 #include "twofold.hpp"
@@ -139,16 +141,29 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 /// cosine_power). Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes
 /// that are lit and see the viewer (scalars: shade's light loop runs a point without a view
 /// vector with the specular term removed, detail::add_lights).
-template <class T, glm::qualifier Q, class U>
+/// Fast mode: fast::pow_unit of the same clamped cosine.
+template <evaluation M, class T, glm::qualifier Q, class U>
 PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
                                      [[maybe_unused]] mask_t<T> on)
 {
+    const auto power = [&] {
+        if constexpr (M == evaluation::fast) return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
+        else return detail::cosine_power(x, scale, m);
+    };
     if constexpr (std::is_floating_point_v<T>) {
-        if (x > T(0)) sums.specular += in_type<T>(L.specular) * (f * detail::cosine_power(x, scale, m));
+        if (x > T(0)) sums.specular += in_type<T>(L.specular) * (f * power());
         else if (m == T(0)) sums.specular += in_type<T>(L.specular) * f; // cosine_power's pow(0, 0) = 1
     } else {
-        sums.specular += in_type<T>(L.specular) * (f * phong::select(on, detail::cosine_power(x, scale, m), T(0)));
+        sums.specular += in_type<T>(L.specular) * (f * phong::select(on, power(), T(0)));
     }
+}
+
+/// 1/|d| of a lit pair (dd = |d|^2 a normal number): phong::rsqrt, or fast::rsqrt in the fast mode.
+template <evaluation M, class T>
+PHONG_HD constexpr T lit_inverse_length(T dd)
+{
+    if constexpr (M == evaluation::fast) return fast::rsqrt(dd);
+    else return std::is_floating_point_v<T> ? phong::rsqrt(dd) : exact_inverse_length(dd);
 }
 
 /// One light's terms added to the sums. U is the light's scalar type (U = T, or float lights in
@@ -182,18 +197,18 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
     if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
         nl = nd / phong::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
     } else {
-        if constexpr (F.spot == spot_model::none) inv = std::is_floating_point_v<T> ? phong::rsqrt(dd) : exact_inverse_length(dd);
+        if constexpr (F.spot == spot_model::none) inv = lit_inverse_length<F.mode>(dd);
         nl = nd * inv;
     }
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, on);
     [[maybe_unused]] const mask_t<T> specular_on = math_traits<T>::both(on, s.sees_viewer);
     if constexpr (F.specular == specular_model::phong) {
-        add_specular(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
+        add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn) {
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)
             l = vec3(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
-        add_specular(sums, L, f, nl + s.nv, detail::inverse_halfway_length(l, s.view), m, specular_on);
+        add_specular<F.mode>(sums, L, f, nl + s.nv, detail::inverse_halfway_length(l, s.view), m, specular_on);
     }
 }
 
