@@ -33,7 +33,8 @@ int main() {
             float pf = 0; for (int j = d; j >= 0; --j) pf = std::fma(pf, rf, cf[j]);
             W ex_ = lg(r); worst = fmaxl(worst, fabsl(p / ex_ - 1)); worstf = fmaxl(worstf, fabsl((W)pf / ex_ - 1)); }
         std::printf("log2 degree %d: rel %.3Le (float Horner %.3Le):", d, worst, worstf);
-        for (float x : cf) std::printf(" %a", x); std::printf("\n");
+        for (float x : cf) std::printf(" %a", x);
+        std::printf("\n");
     }
     for (int d = 4; d <= 7; ++d) {
         auto c = fit(ex, -0.5L, 0.5L, d); std::vector<float> cf(c.begin(), c.end()); cf[0] = 1.0f;
@@ -43,6 +44,7 @@ int main() {
             float pf = 0; for (int j = d; j >= 0; --j) pf = std::fma(pf, tf, cf[j]);
             worst = fmaxl(worst, fabsl(p / ex(t) - 1)); worstf = fmaxl(worstf, fabsl((W)pf / ex(t) - 1)); }
         std::printf("exp2 degree %d: rel %.3Le (float Horner %.3Le):", d, worst, worstf);
-        for (float x : cf) std::printf(" %a", x); std::printf("\n");
+        for (float x : cf) std::printf(" %a", x);
+        std::printf("\n");
     }
 }

@@ -140,11 +140,13 @@ PHONG_HD constexpr V pow_unit(V x, V m)
 /// e0 <= 1.5 2^-12 (SSE rsqrtss/rsqrtps, the coarsest used) refined by one Newton step has
 /// 1.5 e0^2 = 2.0e-7, plus the step's roundings (<= 2.5 2^-24 = 1.5e-7): 3.5e-7, published 4e-7.
 /// Measured over every float in [1, 4) (tests/fast_math.test.cpp): 2.1e-7 (rsqrtss), 1.4e-7 (AVX-512 lanes).
-inline constexpr double rsqrt_max_rel = 4e-7;
+/// Double: the exact 1/sqrt, or with AVX-512 lanes rsqrt14 (2^-14) refined by two Newton steps
+/// (1.5 (1.5 2^-28)^2 plus the roundings, 2.5 2^-53): 3.3e-16, published 4e-16; measured 2.7e-16.
+template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7 : 4e-16;
 
 /// Fast 1/sqrt(x) for a positive normal x: a hardware estimate refined by one Newton step,
 ///   r1 = r0 (3/2 - x/2 r0^2),
-/// relative error rsqrt_max_rel. Float scalars on x86 (SSE): rsqrtss. Double scalars and other
+/// relative error rsqrt_max_rel<T>. Float scalars on x86 (SSE): rsqrtss. Double scalars and other
 /// targets: the exact 1/sqrt(x) (no faster estimate is worth it there). SIMD batches: see
 /// detail/fast_lanes.hpp. Edge: x = 0 gives inf, x = inf gives 0 (the estimate, unrefined);
 /// x < 0 or NaN: NaN. Exact twin: phong::rsqrt (math.hpp).

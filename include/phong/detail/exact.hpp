@@ -158,6 +158,23 @@ PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& 
     }
 }
 
+/// Blinn's 1/|l + v| (specular.hpp's inverse_halfway_length), or in the fast mode: fast::rsqrt, and 0
+/// where |l + v| < 4 fast::rsqrt_max_rel. There l = -v to within the fast 1/|d|'s error (l = -v
+/// exactly no longer cancels bit for bit), n.h = (n.l + n.v) / |l + v| is a ratio of two roundings,
+/// so it is taken as 0, as the exact mode does for l = -v.
+template <evaluation M, class T, glm::qualifier Q>
+PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
+{
+    if constexpr (M == evaluation::fast) {
+        constexpr double er = fast::rsqrt_max_rel<scalar_t<T>>;
+        const glm::vec<3, T, Q> sum = l + v;
+        const T hh = phong::dot(sum, sum);
+        return phong::select(hh >= T(scalar_t<T>(16 * er * er)), fast::rsqrt(hh), T(0));
+    } else {
+        return detail::inverse_halfway_length(l, v);
+    }
+}
+
 /// 1/|d| of a lit pair (dd = |d|^2 a normal number): phong::rsqrt, or fast::rsqrt in the fast mode.
 template <evaluation M, class T>
 PHONG_HD constexpr T lit_inverse_length(T dd)
@@ -208,7 +225,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)
             l = vec3(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
-        add_specular<F.mode>(sums, L, f, nl + s.nv, detail::inverse_halfway_length(l, s.view), m, specular_on);
+        add_specular<F.mode>(sums, L, f, nl + s.nv, route_inverse_halfway_length<F.mode>(l, s.view), m, specular_on);
     }
 }
 

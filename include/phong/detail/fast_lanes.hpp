@@ -25,7 +25,7 @@ struct lanes<xsimd::batch<T, A>> {
         return a * b + c;
 #  endif
     }
-    /// 1/sqrt(x), relative error fast::rsqrt_max_rel. Float: math_traits' estimate + one Newton
+    /// 1/sqrt(x), relative error fast::rsqrt_max_rel<T>. Float: math_traits' estimate + one Newton
     /// step (AVX, AVX-512; 1/sqrt elsewhere). Double with AVX-512: rsqrt14 (2^-14) + two Newton
     /// steps (below 1e-15 after the roundings); elsewhere 1/sqrt. x = 0: inf, x = inf: 0.
     static V rsqrt(const V& x)
