@@ -105,14 +105,14 @@ TEST_CASE_TEMPLATE("fast::pow_unit: the edges are exact", T, float, double)
     static_assert(pow_unit(T(1), T(3)) == T(1) && pow_unit(T(0), T(0)) == T(1)); // constexpr for scalars
 }
 
-TEST_CASE("fast::rsqrt: within rsqrt_max_rel over every float in [1, 4), edges")
+TEST_CASE("fast::rsqrt: within rsqrt_max_rel over every float from 1 to 4, edges")
 {
     double worst = 0;
     for (float x = 1.0f; x < 4.0f; x = std::nextafter(x, 5.0f)) {
         const W ref = 1 / std::sqrt(W(x));
         worst = std::max(worst, double(std::fabs(W(phong::fast::rsqrt(x)) - ref) / ref));
     }
-    MESSAGE("fast::rsqrt, float scalar: max relative error ", worst, " (every float in [1, 4): the error repeats every two binades)");
+    MESSAGE("fast::rsqrt, float scalar: max relative error ", worst, " (every float from 1 to 4: the error repeats every two binades)");
     CHECK(worst <= phong::fast::rsqrt_max_rel<float>);
     for (float x : {std::numeric_limits<float>::min(), 1e-30f, 3e7f, std::numeric_limits<float>::max()}) {
         const W ref = 1 / std::sqrt(W(x));
