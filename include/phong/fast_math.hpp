@@ -18,8 +18,9 @@
 #include <limits>
 #include <type_traits>
 
-#if defined(__SSE__) && !defined(__CUDA_ARCH__)
-#  include <immintrin.h>
+// Float scalars on x86-64 (g++, clang++): the rsqrtss instruction through inline assembly, as
+// math.hpp takes sqrtss (no <immintrin.h> in every user's translation unit).
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE__) && !defined(__CUDA_ARCH__)
 #  define PHONG_FAST_X86_RSQRT 1
 #else
 #  define PHONG_FAST_X86_RSQRT 0
@@ -164,7 +165,13 @@ PHONG_HD constexpr V rsqrt(V x)
 #if PHONG_FAST_X86_RSQRT
         if constexpr (std::is_same_v<V, float>) {
             if (!std::is_constant_evaluated()) {
-                const float r0 = _mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(x)));
+                float r0;
+#  if defined(__AVX__) // three operands: the upper lanes come from x itself, no false dependency
+                __asm__("vrsqrtss %1, %1, %0" : "=x"(r0) : "x"(x));
+#  else
+                r0 = x;
+                __asm__("rsqrtss %0, %0" : "+x"(r0));
+#  endif
                 const float r1 = r0 * (1.5f - (0.5f * x) * (r0 * r0));
                 return (r0 > 0.0f && r0 < std::numeric_limits<float>::infinity()) ? r1 : r0;
             }
