@@ -8,7 +8,8 @@
 #   tests/bounds_matrix.sh [scenes = 20000] [seed = 1] [build...]
 # build: compiler:optimization[:-march=native], e.g. clang++:-O1:-march=native (CI step 35 runs
 # two); a bare compiler name runs its six builds; none: all twelve.
-# Prints one summary line per build (the largest measured/bound ratio); exits 1 if any build fails
+# Each build runs shade<F> and then shade_batch (--batch: the SIMD lanes of the build's ISA).
+# Prints one summary line per build and route (the largest measured/bound ratio); exits 1 if any build fails
 # to compile warning-free or any channel is above its bound.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -41,13 +42,15 @@ for spec in "${specs[@]}"; do
     status=1
     continue
   fi
-  out="$dir/exact_bound.txt"
-  if "$dir/tests/phong_exact_bound" "$scenes" "$seed" >"$out"; then
-    echo "$name: $(tail -n 1 "$out")"
-  else
-    echo "$name: FAILED: $(tail -n 1 "$out")"
-    grep FAIL "$out" | head -n 5
-    status=1
-  fi
+  for route in "" --batch; do # shade<F>, then shade_batch's SIMD lanes
+    out="$dir/exact_bound${route}.txt"
+    if "$dir/tests/phong_exact_bound" $route "$scenes" "$seed" >"$out"; then
+      echo "$name ${route:-scalar}: $(tail -n 1 "$out")"
+    else
+      echo "$name ${route:-scalar}: FAILED: $(tail -n 1 "$out")"
+      grep FAIL "$out" | head -n 5
+      status=1
+    fi
+  done
 done
 exit $status

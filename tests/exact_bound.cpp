@@ -9,12 +9,15 @@
 // (channels with a term that has no relative bound, +inf, are counted, not checked). Prints the
 // largest measured / bound ratio; exits 1 on any channel above its bound or any NaN/inf.
 //
-//   phong_exact_bound [scenes per family and type = 20000] [seed = 1]
+//   phong_exact_bound [--batch] [scenes per family and type = 20000] [seed = 1]
+// --batch: the colours come from shade_batch (SIMD lanes, each scene's point in a step of its own
+// padded lanes), held to the same derivation with the lanes' power (power_kernel::lanes).
 // Run in 12 builds by tests/bounds_matrix.sh (g++/clang++, -O1/-O2/-O3, with/without -march=native).
 #include "support/independent_generators.hpp"
 #include "support/stiff_classes.hpp"
 
 #include <phong/accuracy.hpp>
+#include <phong/batch.hpp>
 #include <phong/shade.hpp>
 
 #include <algorithm>
@@ -43,6 +46,20 @@ struct tally {
 };
 
 bool verbose = false;
+bool batch = false; ///< --batch: shade_batch's lanes instead of shade<F>
+
+/// One point's colour through shade_batch<F> (one point: the other lanes are the batch's padding).
+template <phong::features F, class Scene>
+auto batch_color(const Scene& s)
+{
+    using T = std::remove_cvref_t<decltype(s.position.x)>;
+    const T px[1] = {s.position.x}, py[1] = {s.position.y}, pz[1] = {s.position.z};
+    const T nx[1] = {s.normal.x}, ny[1] = {s.normal.y}, nz[1] = {s.normal.z};
+    glm::vec<3, T> out[1];
+    phong::shade_batch<F>(phong::soa3<T>{px, py, pz}, phong::soa3<T>{nx, ny, nz}, s.material,
+                          std::span<const phong::light<T>>(s.lights), std::span<glm::vec<3, T>>(out), s.environment);
+    return out[0];
+}
 
 template <class T, specular_model S, class Scene>
 bool within_limits(const Scene& s, const independent::evaluation<T>& e, const phong::accuracy::exact_limits& k)
@@ -75,7 +92,8 @@ void check_scene(const Scene& s, tally& t, const char* what, const phong::accura
 {
     constexpr phong::features F = phong::accuracy::measured_features(evaluation::exact, S);
     const independent::evaluation<T> e = independent::evaluate<T>(s);
-    const auto c = phong::shade<F>(s.position, s.normal, s.material, std::span<const phong::light<T>>(s.lights), s.environment);
+    const auto c = batch ? batch_color<F>(s)
+                         : phong::shade<F>(s.position, s.normal, s.material, std::span<const phong::light<T>>(s.lights), s.environment);
     const bool within = limits && within_limits<T, S>(s, e, *limits);
     ++t.scenes;
     t.within += within;
@@ -102,7 +120,9 @@ void check_scene(const Scene& s, tally& t, const char* what, const phong::accura
                             S == specular_model::phong ? "phong" : "blinn", ch, err, err / I, constant);
             }
         }
-        const double b = independent::channel_bound<T>(s, e, S, ch, I);
+        using phong::accuracy::power_kernel;
+        const double b = batch ? independent::channel_bound<T, Scene, power_kernel::lanes>(s, e, S, ch, I)
+                               : independent::channel_bound<T>(s, e, S, ch, I);
         if (!(b < std::numeric_limits<double>::infinity())) {
             ++t.unbounded;
             continue;
@@ -175,8 +195,10 @@ void run_class(input_class c, std::size_t n, std::uint64_t seed, summary& sum)
     const double constant = phong::accuracy::of<evaluation::exact, T>(c).max_rel;
     tally p, b;
     for (const auto& s : scenes) {
-        check_scene<T, specular_model::phong>(s, p, phong::accuracy::name(c), &limits, constant);
-        check_scene<T, specular_model::blinn>(s, b, phong::accuracy::name(c), &limits, constant);
+        // The class constants are shade<F>'s (scalar power): checked without --batch only.
+        const phong::accuracy::exact_limits* lim = batch ? nullptr : &limits;
+        check_scene<T, specular_model::phong>(s, p, phong::accuracy::name(c), lim, constant);
+        check_scene<T, specular_model::blinn>(s, b, phong::accuracy::name(c), lim, constant);
     }
     print(phong::accuracy::name(c), sizeof(T) == 4 ? "float" : "double", "phong", p, true);
     print(phong::accuracy::name(c), sizeof(T) == 4 ? "float" : "double", "blinn", b, true);
@@ -193,11 +215,12 @@ int main(int argc, char** argv)
     int positional = 0;
     for (int i = 1; i < argc; ++i) {
         if (std::string(argv[i]) == "--verbose") verbose = true;
+        else if (std::string(argv[i]) == "--batch") batch = true;
         else if (positional++ == 0) n = std::strtoull(argv[i], nullptr, 10);
         else seed = std::strtoull(argv[i], nullptr, 10);
     }
-    std::printf("Exact mode against its derived bound: %zu scenes per family, type and model, seed %llu.\n", n,
-                static_cast<unsigned long long>(seed));
+    std::printf("Exact mode (%s) against its derived bound: %zu scenes per family, type and model, seed %llu.\n",
+                batch ? "shade_batch lanes" : "shade<F>", n, static_cast<unsigned long long>(seed));
     summary sum;
     run_independent<float, specular_model::phong>(n, seed, sum);
     run_independent<float, specular_model::blinn>(n, seed, sum);

@@ -186,6 +186,14 @@ struct pair_conditioning {
     specular_model specular = specular_model::phong; ///< none: the pair has no specular term
 };
 
+/// Which x^m the exact mode runs: shade<F>'s scalar kernel (detail/power.hpp), or shade_batch's
+/// SIMD lanes (float: detail/lanes_power.hpp's polynomial, whose error grows with |m log2 x|).
+/// The rest of the derivation holds for both: the lanes' reciprocal square roots (AVX-512's
+/// estimate and one Newton step, 1.6 u; baseline SSE2 and double lanes: 1 / sqrt) are within the
+/// scalar path's two roundings of a square root and a division. AVX2 float lanes (estimate error
+/// 1.5 2^-12, 4.9 u after the step) are not covered by the derivation: docs/exact_bound.md.
+enum class power_kernel : unsigned char { scalar, lanes };
+
 namespace detail {
 template <class T> inline constexpr double unit_roundoff = double(std::numeric_limits<T>::epsilon()) / 2;
 /// First-order coefficient k (in units of u) as a bound with its second-order terms:
@@ -212,10 +220,18 @@ constexpr double rho_of(const pair_conditioning& k) { return 1 + 2 * k.w_ratio; 
 /// Absolute error bound of the computed n.l (and of n.d / |d|), before the final scaling.
 template <class T> constexpr double nl_absolute(const pair_conditioning& k) { return g<T>(10 + rho_of(k)); }
 template <class T> constexpr double attenuation_error(const pair_conditioning& k) { return k.attenuated ? g<T>(2 * rho_of(k) + 15) : 0; }
-/// The relative error of the power kernel (detail/power.hpp's documented bound) for base >= lo.
-template <class T> constexpr double pow_error(double m, double lo)
+/// The relative error of the power kernel for base >= lo: the scalar kernel's documented bound
+/// (detail/power.hpp), or for float SIMD lanes (shade_batch) detail/lanes_power.hpp's
+/// (3.5 |y| + 2.5) u with y = m log2(base) capped at 150 (below 2^-150 the term is 0 in float and
+/// the absolute allowance covers it). Double lanes (xsimd's exp(m log x)) are held to the scalar
+/// kernel's bound, which tests/lanes_power.test.cpp checks for them.
+template <class T, power_kernel P = power_kernel::scalar> constexpr double pow_error(double m, double lo)
 {
     const double log2_inv = lo > 0 ? double(-phong::detail::ce::log(lo) / phong::detail::ce::ln2) * (1 + 0x1p-30) : 1022;
+    if constexpr (P == power_kernel::lanes && sizeof(T) == 4) {
+        const double y = mind(150, m * maxd(log2_inv, 0));
+        return (3.5 * y + 2.5) * 0x1p-24;
+    }
     const double y = mind(1022, m * maxd(log2_inv, 0));
     const double kernel = 3 * (y + m + 4) * 0x1p-53;
     if constexpr (sizeof(T) == 4) return unit_roundoff<float> + kernel + m * 0x1p-50 + 0x1p-34;
@@ -265,7 +281,7 @@ template <class T> constexpr double exact_cosine_error(const pair_conditioning& 
 
 /// Relative error bound of a light's specular factor f s, s = max(c, 0)^m, in the exact mode
 /// (gated on n.l > 0; +inf where no relative bound exists, 0 where both sides are exactly 0).
-template <class T> constexpr double exact_specular_bound(const pair_conditioning& k)
+template <class T, power_kernel P = power_kernel::scalar> constexpr double exact_specular_bound(const pair_conditioning& k)
 {
     if (k.specular == specular_model::none) return 0;
     const double e = detail::nl_absolute<T>(k);
@@ -282,16 +298,16 @@ template <class T> constexpr double exact_specular_bound(const pair_conditioning
         }
         double base = detail::expm1_upper(k.m * ec / k.c);
         if (k.c <= ec) base = detail::maxd(1, base); // the term may drop to 0
-        r = detail::compose(f, detail::compose(base, detail::pow_error<T>(k.m, k.c - ec)));
+        r = detail::compose(f, detail::compose(base, detail::pow_error<T, P>(k.m, k.c - ec)));
     }
     if (k.nl <= e) r = detail::maxd(1, r); // the gate may switch the pair off
     return k.in_range ? r : detail::maxd(1, r);
 }
 
 /// The larger of a pair's two term bounds.
-template <class T> constexpr double exact_pair_bound(const pair_conditioning& k)
+template <class T, power_kernel P = power_kernel::scalar> constexpr double exact_pair_bound(const pair_conditioning& k)
 {
-    return detail::maxd(exact_diffuse_bound<T>(k), exact_specular_bound<T>(k));
+    return detail::maxd(exact_diffuse_bound<T>(k), exact_specular_bound<T, P>(k));
 }
 
 /// The channel's relative error bound from the largest term bound of its terms and the number of
@@ -301,9 +317,9 @@ template <class T> constexpr double exact_bound(double term_bound, int lights)
     return detail::compose(term_bound, detail::g<T>(lights + 5));
 }
 /// The same for a worst-case pair: exact_bound(exact_pair_bound(worst), K).
-template <class T> constexpr double exact_bound(const pair_conditioning& worst, int lights)
+template <class T, power_kernel P = power_kernel::scalar> constexpr double exact_bound(const pair_conditioning& worst, int lights)
 {
-    return exact_bound<T>(exact_pair_bound<T>(worst), lights);
+    return exact_bound<T>(exact_pair_bound<T, P>(worst), lights);
 }
 
 /// The absolute allowance for gradual underflow of a channel: (8 K + 4) max(1, f_max) max(1,

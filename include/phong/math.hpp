@@ -195,6 +195,15 @@ template <class V> PHONG_HD constexpr V sqrt(V x) { return math_traits<V>::sqrt(
 /// 1/sqrt(x): rsqrt(0) = inf, rsqrt(inf) = 0. Scalars: 1 / sqrt(x) (< 1 ulp); SIMD float
 /// lanes: a hardware estimate refined by one Newton step (< 2 ulp), see batch.hpp.
 template <class V> PHONG_HD constexpr V rsqrt(V x) { return math_traits<V>::rsqrt(x); }
+namespace detail {
+/// 1/sqrt(x) for x a positive normal number (the caller has checked, or selects the lanes
+/// where it is not away): SIMD float lanes skip rsqrt's guards for 0 and inf; elsewhere rsqrt.
+template <class V> PHONG_HD constexpr V rsqrt_normal(V x)
+{
+    if constexpr (requires { math_traits<V>::rsqrt_normal(x); }) return math_traits<V>::rsqrt_normal(x);
+    else return math_traits<V>::rsqrt(x);
+}
+} // namespace detail
 /// e^x. Overflow gives inf, underflow 0.
 template <class V> PHONG_HD constexpr V exp(V x) { return math_traits<V>::exp(x); }
 /// ln x. log(0) = -inf, x < 0 gives NaN.

@@ -21,8 +21,13 @@ namespace phong {
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
-    T sum = a[0] * b[0];
-    for (glm::length_t k = 1; k < L; ++k) sum += a[k] * b[k];
+    // Named components, not v[k] in a loop from k = 1: GLM's operator[] is a switch, and g++ 12
+    // drops the probability of the case it prunes (k = 0), so every loop around a dot product was
+    // estimated cold (feature_cost: constants reloaded in the light loop, the output spilled).
+    T sum = a.x * b.x;
+    if constexpr (L > 1) sum += a.y * b.y;
+    if constexpr (L > 2) sum += a.z * b.z;
+    if constexpr (L > 3) sum += a.w * b.w;
     return sum;
 }
 
@@ -50,8 +55,10 @@ PHONG_HD constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr T max_abs(const glm::vec<L, T, Q>& v)
 {
-    T m = phong::abs(v[0]);
-    for (glm::length_t k = 1; k < L; ++k) m = phong::max(m, phong::abs(v[k]));
+    T m = phong::abs(v.x); // named components: see dot
+    if constexpr (L > 1) m = phong::max(m, phong::abs(v.y));
+    if constexpr (L > 2) m = phong::max(m, phong::abs(v.z));
+    if constexpr (L > 3) m = phong::max(m, phong::abs(v.w));
     return m;
 }
 
@@ -114,7 +121,8 @@ PHONG_HD constexpr T exact_inverse_length(T dd)
         if (dd >= exact_min_square<T>()) [[likely]] return phong::rsqrt(dd);
         return T(0);
     } else {
-        return phong::select(dd >= exact_min_square<T>(), phong::rsqrt(dd), T(0));
+        const mask_t<T> normal = math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>());
+        return phong::select(normal, detail::rsqrt_normal(dd), T(0));
     }
 }
 

@@ -160,7 +160,7 @@ evaluation<T> evaluate(const Scene& s)
 /// The bound of channel ch of a scene for specular model S: exact_bound of the largest term bound
 /// over the terms present in the channel (a term whose coefficient product is 0 is absent), times
 /// |I|, plus the absolute underflow allowance. +inf where a term has no relative bound.
-template <class T, class Scene>
+template <class T, class Scene, phong::accuracy::power_kernel P = phong::accuracy::power_kernel::scalar>
 double channel_bound(const Scene& s, const evaluation<T>& e, phong::specular_model S, int ch, double exact)
 {
     namespace acc = phong::accuracy;
@@ -172,7 +172,7 @@ double channel_bound(const Scene& s, const evaluation<T>& e, phong::specular_mod
         if (!p.lit) continue; // both sides add nothing (the exact mode drops it too)
         const acc::pair_conditioning& k = S == phong::specular_model::phong ? p.phong_k : p.blinn_k;
         if (double(s.material.kd[ch]) * double(L.diffuse[ch]) > 0) worst = std::max(worst, acc::exact_diffuse_bound<T>(k));
-        if (double(s.material.ks[ch]) * double(L.specular[ch]) > 0) worst = std::max(worst, acc::exact_specular_bound<T>(k));
+        if (double(s.material.ks[ch]) * double(L.specular[ch]) > 0) worst = std::max(worst, acc::exact_specular_bound<T, P>(k));
     }
     if (!(worst < std::numeric_limits<double>::infinity())) return worst;
     return acc::exact_bound<T>(worst, K) * std::fabs(exact) + acc::exact_absolute_allowance<T>(K, e.f_max, e.k_max);

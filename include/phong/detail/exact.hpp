@@ -141,13 +141,17 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 /// cosine_power). Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes
 /// that are lit and see the viewer (scalars: shade's light loop runs a point without a view
 /// vector with the specular term removed, detail::add_lights).
-/// Fast mode: fast::pow_unit of the same clamped cosine.
+/// Fast mode: fast::pow_unit of the same clamped cosine (float SIMD lanes: see below).
 template <evaluation M, class T, glm::qualifier Q, class U>
 PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
                                      [[maybe_unused]] mask_t<T> on)
 {
     const auto power = [&] {
-        if constexpr (M == evaluation::fast) return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
+        // Float SIMD lanes: the exact mode's power already is a polynomial kernel of the same cost
+        // (detail/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u: within fast::pow_unit_max_rel where
+        // x^m >= 2^-24); measured, fast::pow_unit there made the batch rows 5-15 % slower.
+        if constexpr (M == evaluation::fast && (std::is_floating_point_v<T> || !std::is_same_v<scalar_t<T>, float>))
+            return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
         else return detail::cosine_power(x, scale, m);
     };
     if constexpr (std::is_floating_point_v<T>) {
@@ -156,6 +160,17 @@ PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& 
     } else {
         sums.specular += in_type<T>(L.specular) * (f * phong::select(on, power(), T(0)));
     }
+}
+
+/// 1/|d| of a lit pair (dd = |d|^2 a normal number): detail::rsqrt_normal, or in the fast mode
+/// fast::rsqrt, except on float SIMD lanes, whose rsqrt_normal already is an estimate and one Newton
+/// step (1.6 u AVX-512, 4.9 u AVX2: within fast::rsqrt_max_rel<float>) without fast::rsqrt's guards.
+template <evaluation M, class T>
+PHONG_HD constexpr T lit_inverse_length(T dd)
+{
+    if constexpr (M == evaluation::fast && (std::is_floating_point_v<T> || !std::is_same_v<scalar_t<T>, float>))
+        return fast::rsqrt(dd);
+    else return detail::rsqrt_normal(dd);
 }
 
 /// Blinn's 1/|l + v| (specular.hpp's inverse_halfway_length), or in the fast mode: fast::rsqrt, and 0
@@ -169,18 +184,10 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
         constexpr double er = fast::rsqrt_max_rel<scalar_t<T>>;
         const glm::vec<3, T, Q> sum = l + v;
         const T hh = phong::dot(sum, sum);
-        return phong::select(hh >= T(scalar_t<T>(16 * er * er)), fast::rsqrt(hh), T(0));
+        return phong::select(hh >= T(scalar_t<T>(16 * er * er)), lit_inverse_length<M>(hh), T(0));
     } else {
         return detail::inverse_halfway_length(l, v);
     }
-}
-
-/// 1/|d| of a lit pair (dd = |d|^2 a normal number): phong::rsqrt, or fast::rsqrt in the fast mode.
-template <evaluation M, class T>
-PHONG_HD constexpr T lit_inverse_length(T dd)
-{
-    if constexpr (M == evaluation::fast) return fast::rsqrt(dd);
-    else return std::is_floating_point_v<T> ? phong::rsqrt(dd) : exact_inverse_length(dd);
 }
 
 /// One light's terms added to the sums. U is the light's scalar type (U = T, or float lights in
@@ -214,7 +221,7 @@ PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T,
     if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
         nl = nd / phong::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
     } else {
-        if constexpr (F.spot == spot_model::none) inv = lit_inverse_length<F.mode>(dd);
+        if constexpr (F.spot == spot_model::none) inv = lit_inverse_length<F.mode>(dd); // lanes where dd is not normal are not lit: selected away
         nl = nd * inv;
     }
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, on);

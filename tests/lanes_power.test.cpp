@@ -1,0 +1,131 @@
+// The float SIMD power of shade_batch's exact mode (include/phong/detail/lanes_power.hpp, through
+// math_traits<simd_batch<float>>::pow_unit) against pow in the wide reference type (support/wide.hpp:
+// __float128 with g++, long double with clang++), on inputs its derivation did not pick: seeded
+// log-uniform bases over the whole normal range, bases within a few ulp of 1, subnormal bases,
+// exponents from 0 to 1e30. Checks the documented bound (detail::lanes::pow_unit_lanes_error) where
+// the exact result is a normal float, 2^-126 absolute below, and the edges by identity.
+// Compiled twice: in phong_tests (baseline ISA: the exponent-field path) and in
+// phong_batch_native_tests (AVX-512 here: the scalef path).
+#include "support/wide.hpp"
+
+#include <phong/batch.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <random>
+#include <vector>
+
+#if PHONG_HAS_XSIMD
+namespace {
+
+using V = phong::simd_batch<float>;
+constexpr std::size_t W = phong::batch_width<float>;
+
+/// pow_unit on one lane value (the others: copies), read back.
+float lanes_pow(float x, float m)
+{
+    alignas(64) float xs[W], ms[W], out[W];
+    for (std::size_t k = 0; k < W; ++k) xs[k] = x, ms[k] = m;
+    const V r = phong::math_traits<V>::pow_unit(V::load_aligned(xs), V::load_aligned(ms));
+    r.store_aligned(out);
+    return out[W / 2];
+}
+
+struct worst_case {
+    double ratio = 0; // measured error / bound
+    float x = 0, m = 0;
+};
+
+/// Checks x^m against the wide reference; returns the error in units of the bound.
+double check(float x, float m)
+{
+    const float got = lanes_pow(x, m);
+    REQUIRE(std::isfinite(got));
+    const phong_test::wide exact = phong_test::wpow(phong_test::wide(x), phong_test::wide(m));
+    const double ref = static_cast<double>(exact);
+    if (ref >= double(std::numeric_limits<float>::min())) {
+        const double y = double(m) * std::log2(double(x)); // exact y to double precision
+        const double bound = phong::detail::lanes::pow_unit_lanes_error(y);
+        const double rel = std::abs(double(got) - ref) / ref;
+        if (!(rel <= bound)) MESSAGE("x = " << x << ", m = " << m << ": relative error " << rel << " > bound " << bound);
+        CHECK(rel <= bound);
+        return rel / bound;
+    }
+    const double abs_err = std::abs(double(got) - ref);
+    CHECK(abs_err <= double(std::numeric_limits<float>::min()));
+    return 0;
+}
+
+} // namespace
+
+TEST_CASE("shade_batch's float power: within its documented bound on seeded bases and exponents")
+{
+    std::mt19937_64 rng(20261124);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const float exponents[] = {0.25f, 0.5f, 1, 2, 3.7f, 8, 32, 100, 128, 200, 1000, 1e5f};
+    worst_case worst;
+    int checked = 0;
+    for (float m : exponents) {
+        for (int i = 0; i < 4000; ++i) {
+            // log-uniform over [2^-126, 1]: every binade, the bit-splitting at every exponent
+            const float x = static_cast<float>(std::exp2(-126.0 * unit(rng)));
+            const double r = check(x, m);
+            if (r > worst.ratio) worst = {r, x, m};
+            ++checked;
+        }
+        for (int k = 0; k < 300; ++k) { // just below 1: t near 0, e = 0 (the highlight's peak)
+            const float x = std::nextafter(1.0f, 0.0f) - float(k) * 0x1p-24f;
+            const double r = check(x, m);
+            if (r > worst.ratio) worst = {r, x, m};
+            ++checked;
+        }
+        for (float x : {0.70710677f, 0.70710683f, 0.5f, 0.25f, 0x1p-10f, 1.4142135f / 2}) { // split boundaries
+            const double r = check(x, m);
+            if (r > worst.ratio) worst = {r, x, m};
+            ++checked;
+        }
+    }
+    // Random exponents in [0, 200] (validate's typical range) on random bases.
+    for (int i = 0; i < 20000; ++i) {
+        const float m = static_cast<float>(200 * unit(rng));
+        const float x = static_cast<float>(unit(rng));
+        if (x == 0) continue;
+        const double r = check(x, m);
+        if (r > worst.ratio) worst = {r, x, m};
+        ++checked;
+    }
+    MESSAGE(checked << " inputs; worst error / bound = " << worst.ratio << " at x = " << worst.x << ", m = " << worst.m);
+    CHECK(worst.ratio > 0.05); // the bound is not vacuous by orders of magnitude
+}
+
+TEST_CASE("shade_batch's float power: edges")
+{
+    const float tiny = std::numeric_limits<float>::denorm_min();
+    for (float m : {0.0f, 0.5f, 1.0f, 32.0f, 1e30f, std::numeric_limits<float>::max()}) {
+        CHECK(lanes_pow(1.0f, m) == 1.0f); // 1^m = 1 exactly
+        if (m > 0) {
+            CHECK(lanes_pow(0.0f, m) == 0.0f); // 0^m = 0 (also for m < 1, where 2^(-126 m) is not 0)
+        } else {
+            CHECK(lanes_pow(0.0f, m) == 1.0f); // pow(0, 0) = 1
+            CHECK(lanes_pow(tiny, m) == 1.0f);
+            CHECK(lanes_pow(0.3f, m) == 1.0f);
+        }
+    }
+    CHECK(lanes_pow(0.5f, 1.0f) == 0.5f); // powers of two: y integral, r = 0, 2^k exact
+    CHECK(lanes_pow(0.25f, 2.0f) == 0.0625f);
+    CHECK(lanes_pow(0.5f, 149.0f) <= std::numeric_limits<float>::min()); // below 2^-126: within 2^-126 of 0
+    // Subnormal bases are taken as 2^-126: the result lies between the exact power and 2^(-126 m)
+    // (2^-63 for m = 1/2, where the exact sqrt(2^-149) is 2^-74.5).
+    const float half = lanes_pow(tiny, 0.5f);
+    CHECK(half >= float(std::sqrt(double(tiny))));
+    CHECK(half <= 0x1p-63f * (1 + 1e-6f));
+    CHECK(lanes_pow(tiny, 2.0f) <= std::numeric_limits<float>::min());
+    // Huge exponents on bases just below 1 underflow to (almost) 0, never NaN or inf.
+    const float r = lanes_pow(std::nextafter(1.0f, 0.0f), 1e30f);
+    CHECK(std::isfinite(r));
+    CHECK(r <= std::numeric_limits<float>::min());
+}
+#endif
