@@ -7,6 +7,8 @@
 // mode's error stays the exact mode's conditioning (phong/accuracy.hpp, bounds<evaluation::fast, T>).
 // The same templates run on float, double and SIMD batches: the lane-wise bit operations come from
 // `fast::lanes<V>`, specialized for xsimd batches in detail/fast_lanes.hpp (included by batch.hpp).
+// The fast mode's route (detail/exact.hpp) keeps the exact mode's kernels on float SIMD lanes, which
+// are of the same kind and cost there (detail/lanes_power.hpp, rsqrt_normal) and within these bounds.
 // tests/fast_math.test.cpp checks every bound on dense sweeps against long double; the benchmark
 // rows kernel.fast.* (benchmarks/kernels.bench.cpp) time each function beside its exact twin.
 #pragma once

@@ -137,28 +137,31 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
     }
 }
 
-/// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale (specular.hpp's
-/// cosine_power). Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes
-/// that are lit and see the viewer (scalars: shade's light loop runs a point without a view
-/// vector with the specular term removed, detail::add_lights).
-/// Fast mode: fast::pow_unit of the same clamped cosine (float SIMD lanes: see below).
+/// The specular power of add_specular: detail::cosine_power, or in the fast mode fast::pow_unit of
+/// the same clamped cosine. Float SIMD lanes keep cosine_power: the exact mode's power there already
+/// is a polynomial kernel of the same cost (detail/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
+/// fast::pow_unit_max_rel where x^m >= 2^-24); measured, fast::pow_unit made the batch rows 5-15 % slower.
+template <evaluation M, class T>
+PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
+{
+    if constexpr (M == evaluation::fast && (std::is_floating_point_v<T> || !std::is_same_v<scalar_t<T>, float>))
+        return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
+    else return detail::cosine_power(x, scale, m);
+}
+
+/// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale (route_cosine_power).
+/// Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes that are lit and see
+/// the viewer (scalars: shade's light loop runs a point without a view vector with the specular
+/// term removed, detail::add_lights).
 template <evaluation M, class T, glm::qualifier Q, class U>
 PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
                                      [[maybe_unused]] mask_t<T> on)
 {
-    const auto power = [&] {
-        // Float SIMD lanes: the exact mode's power already is a polynomial kernel of the same cost
-        // (detail/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u: within fast::pow_unit_max_rel where
-        // x^m >= 2^-24); measured, fast::pow_unit there made the batch rows 5-15 % slower.
-        if constexpr (M == evaluation::fast && (std::is_floating_point_v<T> || !std::is_same_v<scalar_t<T>, float>))
-            return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
-        else return detail::cosine_power(x, scale, m);
-    };
     if constexpr (std::is_floating_point_v<T>) {
-        if (x > T(0)) sums.specular += in_type<T>(L.specular) * (f * power());
+        if (x > T(0)) sums.specular += in_type<T>(L.specular) * (f * route_cosine_power<M>(x, scale, m));
         else if (m == T(0)) sums.specular += in_type<T>(L.specular) * f; // cosine_power's pow(0, 0) = 1
     } else {
-        sums.specular += in_type<T>(L.specular) * (f * phong::select(on, power(), T(0)));
+        sums.specular += in_type<T>(L.specular) * (f * phong::select(on, route_cosine_power<M>(x, scale, m), T(0)));
     }
 }
 
