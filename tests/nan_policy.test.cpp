@@ -67,9 +67,38 @@ template <class V> bool all_finite(const V& c)
     return true;
 }
 
+// A ray tracer's view vector given per call (view_model::given), plain and with unit inputs (the
+// normal and view are unit by precondition; the position is not covered by it).
+constexpr features given_view = [] {
+    features f = presets::raytracer_phong;
+    f.view = view_model::given;
+    return f;
+}();
+constexpr features given_unit = [] {
+    features f = given_view;
+    f.unit_inputs = true;
+    return f;
+}();
+
 template <features F, class T> auto shade_scene(const scene<T>& s)
 {
-    return shade<F>(s.position, s.normal, s.mat, s.lights, s.env, true);
+    if constexpr (F.view == view_model::given) {
+        const glm::vec<3, T> v = F.unit_inputs ? glm::vec<3, T>(T(0), T(0.6), T(0.8)) : glm::vec<3, T>(T(0), T(1.5), T(2));
+        const glm::vec<3, T> n = F.unit_inputs ? glm::vec<3, T>(T(0.6), T(0), T(0.8)) : s.normal;
+        return shade<F>(s.position, n, v, s.mat, s.lights, s.env, true);
+    } else {
+        return shade<F>(s.position, s.normal, s.mat, s.lights, s.env, true);
+    }
+}
+
+/// The position-only checks also run the given-view feature sets (their normal comes from
+/// shade_scene, unit where unit_inputs asks for it).
+template <class T, class Mutate, class Check> void for_each_given_view_set(Mutate mutate, Check check)
+{
+    scene<T> s;
+    mutate(s);
+    check(shade_scene<given_view>(s), 3, "given view");
+    check(shade_scene<given_unit>(s), 3, "given view, unit inputs");
 }
 
 /// Runs `check(shade<F>(...), channel count)` for each of the four feature sets.
@@ -94,6 +123,11 @@ TEST_CASE_TEMPLATE("NaN policy: NaN or inf in the position gives NaN in every ch
                                         INFO(name, ", position[", k, "] = ", bad);
                                         CHECK(nan_channels(c) == channels);
                                     });
+            for_each_given_view_set<T>([&](scene<T>& s) { s.position[k] = bad; },
+                                       [&](const auto& c, int channels, const char* name) {
+                                           INFO(name, ", position[", k, "] = ", bad);
+                                           CHECK(nan_channels(c) == channels);
+                                       });
         }
     }
 }

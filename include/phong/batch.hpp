@@ -383,6 +383,13 @@ glm::vec<3, V, Q> load_vec3(std::span<const glm::vec<3, T, Q>> in, std::size_t i
 /// sums where `lanes` is set, else `before`: the lanes that do not see a light keep exactly the
 /// sums they had without it.
 template <class V, glm::qualifier Q>
+folded_sums<V, Q> select_sums(const mask_t<V>& lanes, const folded_sums<V, Q>& sums, const folded_sums<V, Q>& before)
+{
+    folded_sums<V, Q> r;
+    for (int c = 0; c < 3; ++c) r.total[c] = phong::select(lanes, sums.total[c], before.total[c]);
+    return r;
+}
+template <class V, glm::qualifier Q>
 light_sums<V, Q> select_sums(const mask_t<V>& lanes, const light_sums<V, Q>& sums, const light_sums<V, Q>& before)
 {
     light_sums<V, Q> r;
@@ -401,8 +408,8 @@ light_sums<V, Q> select_sums(const mask_t<V>& lanes, const light_sums<V, Q>& sum
 /// from it, its ambient term included). Lights past the 64th are seen by no point. With masks,
 /// one call site of add_light for every case: a masked light and a removed one (the same call
 /// with the light left out) run the same compiled code.
-template <features F, class V, class T, glm::qualifier Q>
-void add_masked_lights(light_sums<V, Q>& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
+template <features F, class V, class T, glm::qualifier Q, class Sums>
+void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
                        const V& m, const std::uint64_t* bits, std::size_t count)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
@@ -431,11 +438,28 @@ void add_masked_lights(light_sums<V, Q>& sums, const frame_t<F, V, Q>& s, std::s
             for (std::size_t k = 0; k < W; ++k) seen[k] = (bits[k] & bit) ? T(1) : T(0);
             lanes = load<V>(seen) > V(T(0));
         }
-        const light_sums<V, Q> before = sums;
+        const Sums before = sums;
         detail::add_light<F>(sums, s, lights[j], m);
         if (partial) sums = select_sums<V, Q>(lanes, sums, before);
     }
 }
+
+/// The lights' ambient terms La_i f_i do not depend on the point (f_i = 1, or ambient not
+/// attenuated): shade_batch with one material and no masks adds their sum once per call (a
+/// per-light constant hoisted), not once per light per step.
+template <features F>
+inline constexpr bool ambient_hoistable = F.light_ambient && (!F.attenuate_ambient || ((F.attenuation == attenuation_model::none ||
+                                                                                       F.lights == light_kind::directional) &&
+                                                                                      F.spot == spot_model::none));
+/// F as shade_lanes runs it with the ambient hoisted: env.ambient carries La + sum_i La_i, added as
+/// the scene's ambient, and the loop has no light ambient term.
+template <features F>
+inline constexpr features ambient_hoisted = [] {
+    features g = F;
+    g.scene_ambient = true;
+    g.light_ambient = false;
+    return g;
+}();
 
 #if defined(__GNUC__) || defined(__clang__)
 #  define PHONG_BATCH_NOINLINE __attribute__((noinline, flatten))
@@ -451,15 +475,25 @@ void add_masked_lights(light_sums<V, Q>& sums, const frame_t<F, V, Q>& s, std::s
 /// the point's frame and sums stay in registers across the light loop (before, add_light was
 /// a call per light per step with its operands in memory: batch exact took 1.5x to 2.6x the
 /// hand-written kernel's time, now 1.1x to 1.6x; benchmarks/hand_simd.bench.cpp).
-/// bits: W light masks (0 past the tail), or null.
-template <features F, class V, class T, glm::qualifier Q>
+/// bits: W light masks (0 past the tail), or null. Folded: the lights carry the material's ka, kd
+/// and ks (one material for all points, shade_points_impl): folded_sums, else light_sums.
+/// Hoisted ambient (ambient_hoisted below): without masks, env.ambient holds La + sum_i La_i and
+/// the loop runs without the lights' ambient terms.
+template <features F, class V, class T, glm::qualifier Q, bool Folded>
 PHONG_BATCH_NOINLINE color<F, V, Q> shade_lanes(const glm::vec<3, V, Q>& position, const glm::vec<3, V, Q>& normal,
                                                 const glm::vec<3, V, Q>& view, const mask_t<V>& front, const material<V, Q>& mat,
                                                 std::span<const light<V, Q>> lights, const environment<V, Q>& env,
                                                 const std::uint64_t* bits, std::size_t count)
 {
     const frame_t<F, V, Q> s = prepare<F>(position, normal, view, env, front);
-    light_sums<V, Q> sums{};
+    std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>> sums{};
+    if constexpr (Folded && ambient_hoistable<F>) {
+        if (!bits) {
+            constexpr features G = ambient_hoisted<F>;
+            add_masked_lights<G, V, T, Q>(sums, s, lights, mat.shininess, bits, count);
+            return finish<G>(sums, s, mat, env);
+        }
+    }
     add_masked_lights<F, V, T, Q>(sums, s, lights, mat.shininess, bits, count);
     return finish<F>(sums, s, mat, env);
 }
@@ -495,7 +529,8 @@ void shade_points_step(std::size_t i, std::size_t count, const Points& points, c
     const bool masked = !points.light_masks.empty();
     if (masked)
         for (std::size_t k = 0; k < W; ++k) bits[k] = k < count ? points.light_masks[i + k] : 0;
-    const color<F, V, Q> c = shade_lanes<F, V, T, Q>(position, normal, view, front, mat, lights, env, masked ? bits : nullptr, count);
+    const color<F, V, Q> c =
+        shade_lanes<F, V, T, Q, !per_point_material>(position, normal, view, front, mat, lights, env, masked ? bits : nullptr, count);
 
     constexpr int channels = F.alpha ? 4 : 3;
     if constexpr (std::is_same_v<Output, soa_rgba<T>>) {
@@ -637,12 +672,24 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     for (const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
 #endif
 
+    // One material for all points: folded into the lights (shade_lanes' folded_sums).
     std::vector<light<V, Q>> lane_lights;
     lane_lights.reserve(lights.size());
-    for (const light<T, Q>& L : lights) lane_lights.push_back(splat<V>(L));
+    for (light<T, Q> L : lights) {
+        if constexpr (!per_point_material) L.ambient *= materials.ka, L.diffuse *= materials.kd, L.specular *= materials.ks;
+        lane_lights.push_back(splat<V>(L));
+    }
     material<V, Q> shared{};
     if constexpr (!per_point_material) shared = splat<V>(materials);
-    const environment<V, Q> lane_env{splat<V>(env.ambient), splat<V>(env.eye)};
+    environment<T, Q> call_env = env;
+    if constexpr (!per_point_material && ambient_hoistable<F>) {
+        if (points.light_masks.empty()) { // shade_lanes' hoisted ambient: ka (La + sum_i La_i), as terms_of sums it
+            glm::vec<3, T, Q> sum(T(0));
+            for (const light<T, Q>& L : lights) sum += L.ambient;
+            call_env.ambient = F.scene_ambient ? env.ambient + sum : sum;
+        }
+    }
+    const environment<V, Q> lane_env{splat<V>(call_env.ambient), splat<V>(call_env.eye)};
     const std::span<const light<V, Q>> lane_span(lane_lights);
 
     std::size_t i = 0;

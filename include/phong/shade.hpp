@@ -87,6 +87,20 @@ PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const Fra
     return total_of<F>(terms_of<F>(sums, s, mat, env));
 }
 
+/// The colour from folded sums (shade_batch with one material: the lights carry ka, kd and ks):
+/// emission + ka La (scene ambient) + the lights' total, alpha appended; poison as terms_of.
+template <features F, class T, glm::qualifier Q, class Frame>
+PHONG_HD constexpr color<F, T, Q> finish(const folded_sums<T, Q>& sums, const Frame& s, const material<T, Q>& mat,
+                                         const environment<T, Q>& env)
+{
+    glm::vec<3, T, Q> c(s.poison);
+    if constexpr (F.emission) c += mat.emission;
+    if constexpr (F.scene_ambient) c += mat.ka * env.ambient;
+    c += sums.total;
+    if constexpr (F.alpha) return glm::vec<4, T, Q>(c, mat.alpha + s.poison);
+    else return c;
+}
+
 /// validate(material): a compile error in constant evaluation, an assertion in debug builds,
 /// nothing at all under NDEBUG (not even evaluated).
 template <class T, glm::qualifier Q>

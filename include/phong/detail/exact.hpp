@@ -81,18 +81,22 @@ PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& positi
     }
 }
 
-/// The point's poison (poison_of). Scalars: finite squares of the normal and the view vector
-/// mean finite inputs and poison 0, so the exact test runs only in the rare other case.
+/// The point's poison (poison_of). Finite squares of the normal and the view vector mean finite
+/// inputs and poison 0, so the exact test runs only in the rare other case (SIMD: unless every
+/// lane passes). A given view vector says nothing about Q: its square joins the test.
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                   const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env, T normal_square,
                                   T view_square)
 {
+    if constexpr (F.view == view_model::given) view_square = view_square + phong::dot(position, position);
     if constexpr (std::is_floating_point_v<T>) {
         if (!(normal_square <= largest<T>() && view_square <= largest<T>())) [[unlikely]]
             return poison_of<F>(position, normal, given_view, env);
         return T(0);
     } else {
+        if (math_traits<T>::all(math_traits<T>::both(normal_square <= largest<T>(), view_square <= largest<T>()))) [[likely]]
+            return T(0);
         return poison_of<F>(position, normal, given_view, env);
     }
 }
@@ -153,15 +157,16 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
 /// Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes that are lit and see
 /// the viewer (scalars: shade's light loop runs a point without a view vector with the specular
 /// term removed, detail::add_lights).
-template <evaluation M, class T, glm::qualifier Q, class U>
-PHONG_HD constexpr void add_specular(light_sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
+template <evaluation M, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U>
+PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
                                      [[maybe_unused]] mask_t<T> on)
 {
+    glm::vec<3, T, Q>& sum = sum_of<term_kind::specular>(sums);
     if constexpr (std::is_floating_point_v<T>) {
-        if (x > T(0)) sums.specular += in_type<T>(L.specular) * (f * route_cosine_power<M>(x, scale, m));
-        else if (m == T(0)) sums.specular += in_type<T>(L.specular) * f; // cosine_power's pow(0, 0) = 1
+        if (x > T(0)) sum += in_type<T>(L.specular) * (f * route_cosine_power<M>(x, scale, m));
+        else if (m == T(0)) sum += in_type<T>(L.specular) * f; // cosine_power's pow(0, 0) = 1
     } else {
-        sums.specular += in_type<T>(L.specular) * (f * phong::select(on, route_cosine_power<M>(x, scale, m), T(0)));
+        sum += in_type<T>(L.specular) * (f * phong::select(on, route_cosine_power<M>(x, scale, m), T(0)));
     }
 }
 
@@ -197,8 +202,8 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 /// double arithmetic: the stable mode's wider route); visibility: unweighted or a weight in [0, 1].
 /// Dot products are taken with d = L.xyz - w Q itself and scaled by 1/|d| only for lit pairs:
 /// the signs that decide the branches do not wait for a square root and a division.
-template <features F, class T, glm::qualifier Q, class U, class W>
-PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m, W visibility)
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class W>
+PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m, W visibility)
 {
     using vec3 = glm::vec<3, T, Q>;
     const T w = light_w<F, T>(L);

@@ -22,6 +22,30 @@ struct light_sums {
     glm::vec<3, T, Q> specular{T(0)};
 };
 
+/// The sums of shade_batch with one material for all points: the material folded into the
+/// lights once per call (La_i ka, Ld_i kd, Ls_i ks), so every term of every light goes into one
+/// rgb. Three accumulators instead of light_sums' nine: the light loop keeps them in registers
+/// (AVX2 has 16), and finish has no material products left.
+template <class T, glm::qualifier Q>
+struct folded_sums {
+    glm::vec<3, T, Q> total{T(0)};
+};
+
+/// Which sum a term goes to: its own in light_sums, the one total in folded_sums.
+enum class term_kind : unsigned char { ambient, diffuse, specular };
+template <term_kind K, class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q>& sum_of(light_sums<T, Q>& sums)
+{
+    if constexpr (K == term_kind::ambient) return sums.ambient;
+    else if constexpr (K == term_kind::diffuse) return sums.diffuse;
+    else return sums.specular;
+}
+template <term_kind K, class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q>& sum_of(folded_sums<T, Q>& sums)
+{
+    return sums.total;
+}
+
 /// A light's vector in the arithmetic type T: the vector itself when it already is (a reference,
 /// no copy), else widened exactly (float lights in the stable mode's double arithmetic).
 template <class T, int N, class U, glm::qualifier Q>
@@ -100,12 +124,12 @@ PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T dista
 }
 
 /// The light's ambient term: La_i f (or La_i, without features::attenuate_ambient).
-template <features F, class T, glm::qualifier Q, class U>
-PHONG_HD constexpr void add_ambient(light_sums<T, Q>& sums, const light<U, Q>& L, [[maybe_unused]] T f)
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U>
+PHONG_HD constexpr void add_ambient(Sums<T, Q>& sums, const light<U, Q>& L, [[maybe_unused]] T f)
 {
     if constexpr (F.light_ambient) {
-        if constexpr (F.attenuate_ambient) sums.ambient += in_type<T>(L.ambient) * f;
-        else sums.ambient += in_type<T>(L.ambient);
+        if constexpr (F.attenuate_ambient) sum_of<term_kind::ambient>(sums) += in_type<T>(L.ambient) * f;
+        else sum_of<term_kind::ambient>(sums) += in_type<T>(L.ambient);
     }
 }
 
@@ -115,12 +139,13 @@ template <features F> inline constexpr bool gated = F.specular_gate || F.specula
 
 /// The diffuse term Ld_i f max(n.l, 0) of a lit pair (on: the lanes that are lit; gated: on
 /// already implies n.l > 0).
-template <features F, class T, glm::qualifier Q, class U>
-PHONG_HD constexpr void add_diffuse(light_sums<T, Q>& sums, const light<U, Q>& L, T f, T nl, [[maybe_unused]] mask_t<T> on)
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U>
+PHONG_HD constexpr void add_diffuse(Sums<T, Q>& sums, const light<U, Q>& L, T f, T nl, [[maybe_unused]] mask_t<T> on)
 {
     const T lambert = gated<F> ? nl : phong::max(nl, T(0));
-    if constexpr (std::is_floating_point_v<T>) sums.diffuse += in_type<T>(L.diffuse) * (f * lambert);
-    else sums.diffuse += in_type<T>(L.diffuse) * (f * phong::select(on, lambert, T(0)));
+    glm::vec<3, T, Q>& sum = sum_of<term_kind::diffuse>(sums);
+    if constexpr (std::is_floating_point_v<T>) sum += in_type<T>(L.diffuse) * (f * lambert);
+    else sum += in_type<T>(L.diffuse) * (f * phong::select(on, lambert, T(0)));
 }
 
 } // namespace phong::detail

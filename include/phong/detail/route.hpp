@@ -33,8 +33,8 @@ PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, c
 
 /// One light's terms added to the sums, by F's route (U: the light's scalar type; visibility:
 /// unweighted, or a weight that multiplies f).
-template <features F, class T, glm::qualifier Q, class U, class W = unweighted>
-PHONG_HD constexpr void add_light(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, T m,
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class W = unweighted>
+PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, T m,
                                   W visibility = {})
 {
     if constexpr (F.mode == evaluation::stable) stable::add_light<F>(sums, s, L, m, visibility);
@@ -74,8 +74,8 @@ inline constexpr features without_specular = [] {
 
 /// Every light's terms added to the sums: a std::array unrolled at compile time, a masked or
 /// weighted list (visibility.hpp), or any input range of lights (views included).
-template <features F, class T, glm::qualifier Q, class Frame, class Lights>
-PHONG_HD constexpr void each_light(light_sums<T, Q>& sums, const Frame& s, Lights&& lights, T m) // Frame: frame_t<F, T, Q>
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Frame, class Lights>
+PHONG_HD constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&& lights, T m) // Frame: frame_t<F, T, Q>
 {
     using R = std::remove_cvref_t<Lights>;
     if constexpr (is_std_array<R>::value) {
@@ -110,11 +110,12 @@ PHONG_HD constexpr void each_light(light_sums<T, Q>& sums, const Frame& s, Light
     }
 }
 
-/// Every light's terms added to the sums (each_light). A point without a view vector (at the
+/// Every light's terms added to the sums (each_light; Sums: light_sums, or folded_sums in
+/// shade_batch with one material). A point without a view vector (at the
 /// eye, or a zero given v) keeps its diffuse term, which does not need v, and has no specular
 /// term: scalars run it with F's specular term removed (no per-light test), SIMD lanes mask it.
-template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr void add_lights(light_sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Lights>
+PHONG_HD constexpr void add_lights(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
 {
     if constexpr (F.specular != specular_model::none && std::is_floating_point_v<T>) {
         if (s.defined && !s.sees_viewer) [[unlikely]] {
