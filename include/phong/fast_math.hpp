@@ -10,7 +10,8 @@
 // The fast mode's route (detail/exact.hpp) keeps the exact mode's kernels on float SIMD lanes, which
 // are of the same kind and cost there (detail/lanes_power.hpp, rsqrt_normal) and within these bounds.
 // tests/fast_math.test.cpp checks every bound on dense sweeps against long double; the benchmark
-// rows kernel.fast.* (benchmarks/kernels.bench.cpp) time each function beside its exact twin.
+// rows kernel.fast_pow_unit.* and kernel.fast_rsqrt.* (benchmarks/kernels.bench.cpp) time each function
+// beside its exact twin.
 #pragma once
 
 #include "math.hpp"
