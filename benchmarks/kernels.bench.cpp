@@ -1,5 +1,8 @@
 // The scalar kernels behind the model, each beside what a user would call instead: phong::pow_unit
-// (the specular and spot power, inline, detail/power.hpp) against std::pow, float and double.
+// (the specular and spot power, inline, detail/power.hpp) against std::pow, float and double; the
+// fast mode's approximations (phong/fast_math.hpp) beside their exact twins: fast::pow_unit against
+// phong::pow_unit, fast::rsqrt against phong::rsqrt (bound counter: their published constants; the
+// fast power's error over results >= 2^-24, where its relative bound holds).
 // Time per call over 65536 (x, m) pairs of the lighting model's range (x in (0, 1], a third of them
 // within 1e-3 of 1 as near a highlight; m in [1, 200] and up to 1e4), and the error of every result
 // in T's normal range against pow in the __float128 reference type (tests/support/wide.hpp).
@@ -10,6 +13,7 @@
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
+#include <phong/fast_math.hpp>
 #include <phong/math.hpp>
 
 #include <benchmark/benchmark.h>
@@ -47,14 +51,19 @@ const power_inputs<T>& inputs()
     return in;
 }
 
-template <class T, bool Phong>
+enum class power_kernel { phong, std_pow, fast };
+
+template <class T, power_kernel Kernel>
 void power_row(benchmark::State& state)
 {
     const power_inputs<T>& in = inputs<T>();
     std::vector<T> out(n_pairs);
     for (auto _ : state) {
-        for (std::size_t i = 0; i < n_pairs; ++i)
-            out[i] = Phong ? phong::pow_unit(in.x[i], in.m[i]) : T(std::pow(in.x[i], in.m[i]));
+        for (std::size_t i = 0; i < n_pairs; ++i) {
+            if constexpr (Kernel == power_kernel::phong) out[i] = phong::pow_unit(in.x[i], in.m[i]);
+            else if constexpr (Kernel == power_kernel::fast) out[i] = phong::fast::pow_unit(in.x[i], in.m[i]);
+            else out[i] = T(std::pow(in.x[i], in.m[i]));
+        }
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -65,7 +74,7 @@ void power_row(benchmark::State& state)
     for (std::size_t i = 0; i < n_pairs; ++i) {
         if (!std::isfinite(out[i])) nan += 1;
         const phong_test::wide ref = phong_test::wpow(phong_test::wide(in.x[i]), phong_test::wide(in.m[i]));
-        if (ref < phong_test::wide(std::numeric_limits<T>::min())) continue;
+        if (ref < phong_test::wide(Kernel == power_kernel::fast ? T(0x1p-24) : std::numeric_limits<T>::min())) continue;
         max_rel = std::max(max_rel, phong_test::error_rel(out[i], ref));
         ulps.push_back(phong_test::error_ulp(out[i], ref));
     }
@@ -79,17 +88,49 @@ void power_row(benchmark::State& state)
     state.counters["p99_ulp"] = p99;
     state.counters["max_ulp"] = max_ulp;
     state.counters["nan_count"] = nan;
-    state.counters["bound"] = -1;
+    state.counters["bound"] = Kernel == power_kernel::fast ? phong::fast::pow_unit_max_rel : -1;
+    state.counters["K"] = 1;
+    state.counters["N"] = double(n_pairs);
+}
+
+/// 1/sqrt(x) over squared distances of a scene's range (x in [1e-4, 1e4], log-uniform), one call
+/// per item: phong::rsqrt (1 / sqrt) or fast::rsqrt (estimate + Newton).
+template <class T, bool Fast>
+void rsqrt_row(benchmark::State& state)
+{
+    std::vector<T> x(n_pairs), out(n_pairs);
+    for (std::size_t i = 0; i < n_pairs; ++i) x[i] = T(std::pow(10.0, -4 + 8 * uniform(3001, i, 0)));
+    for (auto _ : state) {
+        for (std::size_t i = 0; i < n_pairs; ++i) out[i] = Fast ? phong::fast::rsqrt(x[i]) : phong::rsqrt(x[i]);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    double max_rel = 0;
+    for (std::size_t i = 0; i < n_pairs; ++i) {
+        const phong_test::wide ref = 1 / phong_test::wsqrt(phong_test::wide(x[i]));
+        max_rel = std::max(max_rel, phong_test::error_rel(out[i], ref));
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(n_pairs));
+    state.counters["ns_per_pair"] = benchmark::Counter(double(state.iterations()) * double(n_pairs) * 1e-9,
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["max_rel_err"] = max_rel;
+    state.counters["bound"] = Fast ? phong::fast::rsqrt_max_rel<T> : -1;
     state.counters["K"] = 1;
     state.counters["N"] = double(n_pairs);
 }
 
 const bool registered = [] {
     const std::string tail = "/typical/K:1/N:" + std::to_string(n_pairs);
-    benchmark::RegisterBenchmark(("kernel.pow_unit.float" + tail).c_str(), power_row<float, true>);
-    benchmark::RegisterBenchmark(("kernel.std_pow.float" + tail).c_str(), power_row<float, false>);
-    benchmark::RegisterBenchmark(("kernel.pow_unit.double" + tail).c_str(), power_row<double, true>);
-    benchmark::RegisterBenchmark(("kernel.std_pow.double" + tail).c_str(), power_row<double, false>);
+    benchmark::RegisterBenchmark(("kernel.pow_unit.float" + tail).c_str(), power_row<float, power_kernel::phong>);
+    benchmark::RegisterBenchmark(("kernel.std_pow.float" + tail).c_str(), power_row<float, power_kernel::std_pow>);
+    benchmark::RegisterBenchmark(("kernel.fast_pow_unit.float" + tail).c_str(), power_row<float, power_kernel::fast>);
+    benchmark::RegisterBenchmark(("kernel.pow_unit.double" + tail).c_str(), power_row<double, power_kernel::phong>);
+    benchmark::RegisterBenchmark(("kernel.std_pow.double" + tail).c_str(), power_row<double, power_kernel::std_pow>);
+    benchmark::RegisterBenchmark(("kernel.fast_pow_unit.double" + tail).c_str(), power_row<double, power_kernel::fast>);
+    benchmark::RegisterBenchmark(("kernel.rsqrt.float" + tail).c_str(), rsqrt_row<float, false>);
+    benchmark::RegisterBenchmark(("kernel.fast_rsqrt.float" + tail).c_str(), rsqrt_row<float, true>);
+    benchmark::RegisterBenchmark(("kernel.rsqrt.double" + tail).c_str(), rsqrt_row<double, false>);
+    benchmark::RegisterBenchmark(("kernel.fast_rsqrt.double" + tail).c_str(), rsqrt_row<double, true>);
     return true;
 }();
 

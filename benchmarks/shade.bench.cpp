@@ -6,7 +6,7 @@
 // Row names: <path>.<mode>.<specular>.<type>/<input set>/K:<K>/N:<N>, path = naive_glm | scalar |
 // batch; mode = exact | stable (float: evaluated in double) | stable_twofold (float arithmetic with
 // twofold vectors, features::precision = twofold: the GPU route, and what batches and double run) |
-// stable_m256 (batch: twofold only above m = 256).
+// stable_m256 (batch: twofold only above m = 256) | fast (phong/fast_math.hpp's approximations).
 // g++ 12 flags the _mm512_undefined_* placeholders inside its own AVX-512 intrinsics as
 // uninitialized once xsimd's kernels are inlined (batch.hpp). The diagnostic state that counts is
 // the one at the intrinsics header's lines, which may be included before batch.hpp's own pragma:
@@ -171,6 +171,8 @@ std::vector<variant> variants_of()
         {"scalar.stable.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::stable)>},
         {"scalar.stable_twofold.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::stable, twofold)>},
         {"scalar.stable_twofold.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::stable, twofold)>},
+        {"scalar.fast.phong." + t, &scalar_row<T, model(specular_model::phong, evaluation::fast)>},
+        {"scalar.fast.blinn." + t, &scalar_row<T, model(specular_model::blinn, evaluation::fast)>},
 #if defined(PHONG_BENCH_BATCH)
         {"batch.exact.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::exact)>},
         {"batch.exact.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::exact)>},
@@ -178,6 +180,8 @@ std::vector<variant> variants_of()
         {"batch.stable.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::stable)>},
         {"batch.stable_m256.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::stable, twofold, 256)>},
         {"batch.stable_m256.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::stable, twofold, 256)>},
+        {"batch.fast.phong." + t, &batch_row<T, model(specular_model::phong, evaluation::fast)>},
+        {"batch.fast.blinn." + t, &batch_row<T, model(specular_model::blinn, evaluation::fast)>},
 #endif
     };
 }

@@ -1,5 +1,5 @@
 // Accuracy against the __float128 reference: every input class of phong/accuracy.hpp stays within
-// its published bound in both evaluation modes, float and double, Phong and Blinn; finite input
+// its published bound in every evaluation mode (exact, stable, fast), float and double, Phong and Blinn; finite input
 // never gives NaN/inf; NaN/inf input gives NaN in every channel. Also checks that the generators
 // make what their class promises (computed in the wide type from the rounded inputs) and the
 // error statistics on hand-made values.
@@ -44,7 +44,7 @@ void check_within_bound(input_class c, specular_model S, const error_stats& e)
 {
     const phong::accuracy::bound b = phong::accuracy::of<M, T, P>(c);
     INFO("class ", std::string(phong::accuracy::name(c)), ", mode ",
-         std::string(M == evaluation::exact ? "exact" : P == stable_precision::wider ? "stable" : "stable twofold"), ", ",
+         std::string(M == evaluation::exact ? "exact" : M == evaluation::fast ? "fast" : P == stable_precision::wider ? "stable" : "stable twofold"), ", ",
          std::string(S == specular_model::phong ? "phong" : "blinn"), ", ", std::string(sizeof(T) == 4 ? "float" : "double"), ": p99 ", e.p99_ulp, " max ", e.max_ulp, " ulp, rel ", e.max_rel,
          ", non-finite ", e.non_finite, " of ", e.channels);
     CHECK(e.non_finite == 0);
@@ -59,9 +59,11 @@ void check_class(input_class c, const std::vector<stiff_scene<T>>& scenes)
     constexpr phong::features exact = phong::accuracy::measured_features(evaluation::exact, S);
     constexpr phong::features stable = phong::accuracy::measured_features(evaluation::stable, S);
     constexpr phong::features twofold = phong::accuracy::measured_features(evaluation::stable, S, stable_precision::twofold);
+    constexpr phong::features fast = phong::accuracy::measured_features(evaluation::fast, S);
     const std::vector<wcolor> refs = references(exact, scenes);
     check_within_bound<evaluation::exact, T>(c, S, measure<exact>(scenes, refs));
     check_within_bound<evaluation::stable, T>(c, S, measure<stable>(scenes, refs));
+    check_within_bound<evaluation::fast, T>(c, S, measure<fast>(scenes, refs));
     // Float's other stable route (double runs twofold either way).
     if constexpr (sizeof(T) == 4) check_within_bound<evaluation::stable, T, stable_precision::twofold>(c, S, measure<twofold>(scenes, refs));
 }
@@ -70,7 +72,7 @@ template <class T> wide wlen4(const glm::vec<4, T>& p) { return wlength(wvec3{wi
 
 } // namespace
 
-TEST_CASE_TEMPLATE("accuracy: every input class within its published bound, both modes", T, float, double)
+TEST_CASE_TEMPLATE("accuracy: every input class within its published bound, every mode", T, float, double)
 {
     const std::size_t n = samples();
     for (std::size_t k = 0; k < phong::accuracy::input_class_count; ++k) {
@@ -105,6 +107,8 @@ TEST_CASE_TEMPLATE("accuracy: NaN or inf in Q or the normal gives NaN in every c
         CHECK(all_nan(shade_scene<phong::accuracy::measured_features(evaluation::exact, specular_model::blinn)>(s)));
         CHECK(all_nan(shade_scene<phong::accuracy::measured_features(evaluation::stable, specular_model::blinn)>(s)));
         CHECK(all_nan(shade_scene<phong::accuracy::measured_features(evaluation::stable, specular_model::phong, stable_precision::twofold)>(s)));
+        CHECK(all_nan(shade_scene<phong::accuracy::measured_features(evaluation::fast, specular_model::phong)>(s)));
+        CHECK(all_nan(shade_scene<phong::accuracy::measured_features(evaluation::fast, specular_model::blinn)>(s)));
     }
 }
 

@@ -2,8 +2,10 @@
 // float and double, Phong and Blinn specular, against the __float128 reference, and prints the
 // Markdown table of README.md's "Accuracy" section. Not run by ctest (it takes a while).
 //
-//   phong_accuracy_table [samples per class = 20000] [seed = 1] [--bounds] [--code] [--twofold]
+//   phong_accuracy_table [samples per class = 20000] [seed = 1] [--bounds] [--code] [--twofold] [--fast]
 //
+// --fast: the second group of columns is the fast mode (features::mode = evaluation::fast)
+// instead of the stable mode; with --code it prints the fast table's p99 candidates.
 // --twofold: the stable columns use features::precision = twofold (float's other route, and the
 // SIMD batches'); by default float's stable mode is evaluated in double (precision = wider).
 // --bounds also prints, per mode, type and class, the worst figures over both specular models
@@ -33,6 +35,7 @@ struct row {
 };
 
 bool twofold_columns = false; // --twofold
+bool fast_columns = false;    // --fast
 
 template <class T, specular_model S>
 row measure_row(const std::vector<phong_test::stiff_scene<T>>& scenes)
@@ -40,9 +43,12 @@ row measure_row(const std::vector<phong_test::stiff_scene<T>>& scenes)
     constexpr phong::features exact = phong::accuracy::measured_features(evaluation::exact, S);
     constexpr phong::features stable = phong::accuracy::measured_features(evaluation::stable, S);
     constexpr phong::features twofold = phong::accuracy::measured_features(evaluation::stable, S, phong::stable_precision::twofold);
+    constexpr phong::features fast = phong::accuracy::measured_features(evaluation::fast, S);
     const std::vector<phong_test::wcolor> refs = phong_test::references(exact, scenes);
     return {phong_test::measure<exact>(scenes, refs),
-            twofold_columns ? phong_test::measure<twofold>(scenes, refs) : phong_test::measure<stable>(scenes, refs)};
+            fast_columns      ? phong_test::measure<fast>(scenes, refs)
+            : twofold_columns ? phong_test::measure<twofold>(scenes, refs)
+                              : phong_test::measure<stable>(scenes, refs)};
 }
 
 std::string fmt(double x)
@@ -83,7 +89,7 @@ bool print_bound(input_class c, const worst& w)
     const bool ok = nan_policy ? w.non_finite == w.channels
                                : (w.non_finite == 0 && w.p99 <= b.p99_ulp && w.max_ulp <= b.max_ulp && w.max_rel <= b.max_rel);
     std::printf("%-7s %-6s %-20s measured p99 %-8s max %-8s rel %-8s nonfinite %zu/%zu | bound %s %s %s %s\n",
-                M == evaluation::exact ? "exact" : "stable", sizeof(T) == 4 ? "float" : "double", phong::accuracy::name(c),
+                M == evaluation::exact ? "exact" : M == evaluation::fast ? "fast" : "stable", sizeof(T) == 4 ? "float" : "double", phong::accuracy::name(c),
                 fmt(w.p99).c_str(), fmt(w.max_ulp).c_str(), fmt(w.max_rel).c_str(), w.non_finite, w.channels,
                 fmt(b.p99_ulp).c_str(), fmt(b.max_ulp).c_str(), fmt(b.max_rel).c_str(), ok ? "" : "  <-- ABOVE BOUND");
     return ok;
@@ -121,7 +127,7 @@ bool run_type(input_class c, std::size_t n, std::uint64_t seed, bool bounds)
     }
     if (!bounds) return true;
     const bool ok_e = print_bound<evaluation::exact, T>(c, we);
-    const bool ok_s = print_bound<evaluation::stable, T>(c, ws);
+    const bool ok_s = fast_columns ? print_bound<evaluation::fast, T>(c, ws) : print_bound<evaluation::stable, T>(c, ws);
     return ok_e && ok_s;
 }
 
@@ -137,17 +143,20 @@ int main(int argc, char** argv)
         if (std::strcmp(argv[i], "--bounds") == 0) bounds = true;
         else if (std::strcmp(argv[i], "--code") == 0) print_code = true;
         else if (std::strcmp(argv[i], "--twofold") == 0) twofold_columns = true;
+        else if (std::strcmp(argv[i], "--fast") == 0) fast_columns = true;
         else if (positional++ == 0) n = std::strtoull(argv[i], nullptr, 10);
         else seed = std::strtoull(argv[i], nullptr, 10);
     }
-    std::printf("Stable columns: %s.\n", twofold_columns ? "precision = twofold (float arithmetic, twofold unit vectors)"
-                                                        : "precision = wider (float evaluated in double; double twofold)");
+    if (fast_columns) std::printf("Second columns: the fast mode (evaluation::fast).\n");
+    else std::printf("Stable columns: %s.\n", twofold_columns ? "precision = twofold (float arithmetic, twofold unit vectors)"
+                                                             : "precision = wider (float evaluated in double; double twofold)");
     std::printf("Scenes per class: %zu, seed %llu; 3 channels per scene. Errors per channel against %s.\n"
                 "ulp: of the exact value in the type; rel: max |computed - exact| / |exact|; NaN/Inf: channels.\n\n",
                 n, static_cast<unsigned long long>(seed),
                 phong_test::wide_digits >= 113 ? "__float128"
                                                : "long double (64 bits: too few for double at m >= 1e4; build with g++)");
-    std::printf("| class | type | specular | exact p50 | p99 | max ulp | max rel | NaN/Inf | stable p50 | p99 | max ulp | max rel | NaN/Inf |\n");
+    std::printf("| class | type | specular | exact p50 | p99 | max ulp | max rel | NaN/Inf | %s p50 | p99 | max ulp | max rel | NaN/Inf |\n",
+                fast_columns ? "fast" : "stable");
     std::printf("|---|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
     bool ok = true;
     for (std::size_t k = 0; k < phong::accuracy::input_class_count; ++k) {
@@ -160,7 +169,11 @@ int main(int argc, char** argv)
             std::printf("// exact %s p99 candidates (max_rel, max_ulp: derived, not from this run):\n", t == 0 ? "float" : "double");
             for (const std::string& line : code[0][t]) std::printf("//%s\n", line.c_str());
         }
-        for (int m = 1; m < 2; ++m)
+        for (int t = 0; fast_columns && t < 2; ++t) {
+            std::printf("// fast %s p99 candidates (max_rel, max_ulp: derived, not from this run):\n", t == 0 ? "float" : "double");
+            for (const std::string& line : code[1][t]) std::printf("//%s\n", line.c_str());
+        }
+        for (int m = 1; m < 2 && !fast_columns; ++m)
             for (int t = 0; t < 2; ++t) {
                 std::printf("template <> inline constexpr detail::table bounds<evaluation::%s, %s%s>{{\n", m == 0 ? "exact" : "stable",
                             t == 0 ? "float" : "double", m == 1 && twofold_columns ? ", stable_precision::twofold" : "");

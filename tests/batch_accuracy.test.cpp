@@ -1,5 +1,5 @@
 // batch.hpp on the stiff and extreme input classes of phong/accuracy.hpp: shade_batch in stable
-// mode stays within the stable mode's published bounds (the same constants the scalar path is held
+// (and fast) mode stays within that mode's published bounds (the same constants the scalar path is held
 // to), produces no NaN/inf for finite input, and NaN in every channel for non-finite geometry.
 #include "support/numeric.hpp"
 #include "support/reference.hpp"
@@ -42,10 +42,10 @@ error_stats measure_batch(const std::vector<phong_test::stiff_scene<T>>& scenes,
     return acc.summary();
 }
 
-template <class T, specular_model S> void check_batch_classes()
+template <class T, specular_model S, evaluation M = evaluation::stable> void check_batch_classes()
 {
     using phong::accuracy::input_class;
-    constexpr features F = phong::accuracy::measured_features(evaluation::stable, S);
+    constexpr features F = phong::accuracy::measured_features(M, S);
     for (std::size_t c = 0; c < phong::accuracy::input_class_count; ++c) {
         const auto cls = static_cast<input_class>(c);
         // Without __float128 (clang: no quadmath.h) the reference is long double, whose own error
@@ -56,12 +56,13 @@ template <class T, specular_model S> void check_batch_classes()
         const auto scenes = make_class<T>(cls, 300, 500 + c);
         std::size_t disagree = 0;
         const error_stats e = measure_batch<F>(scenes, disagree);
-        const phong::accuracy::bound bound = phong::accuracy::of<evaluation::stable, T, phong::stable_precision::twofold>(cls);
+        const phong::accuracy::bound bound = M == evaluation::fast ? phong::accuracy::of<evaluation::fast, T>(cls)
+                                                                    : phong::accuracy::of<M, T, phong::stable_precision::twofold>(cls);
         CAPTURE(std::string(phong::accuracy::name(cls)));
         CAPTURE(e.p99_ulp);
         CAPTURE(e.max_ulp);
         CAPTURE(e.max_rel);
-        MESSAGE(std::string(phong::accuracy::name(cls)) << (sizeof(T) == 4 ? " float " : " double ") << (S == specular_model::phong ? "phong" : "blinn")
+        MESSAGE(std::string(M == evaluation::fast ? "fast " : "stable ") << phong::accuracy::name(cls) << (sizeof(T) == 4 ? " float " : " double ") << (S == specular_model::phong ? "phong" : "blinn")
                 << ": p99 " << e.p99_ulp << " max " << e.max_ulp << " ulp, max rel " << e.max_rel << ", non-finite " << e.non_finite);
         CHECK(disagree == 0);
         if (cls == input_class::non_finite) {
@@ -81,4 +82,10 @@ TEST_CASE_TEMPLATE("shade_batch stable: every stiff and extreme class within the
 {
     check_batch_classes<T, specular_model::phong>();
     check_batch_classes<T, specular_model::blinn>();
+}
+
+TEST_CASE_TEMPLATE("shade_batch fast: every stiff and extreme class within the published fast bound", T, float, double)
+{
+    check_batch_classes<T, specular_model::phong, evaluation::fast>();
+    check_batch_classes<T, specular_model::blinn, evaluation::fast>();
 }

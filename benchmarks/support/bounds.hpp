@@ -29,6 +29,7 @@ double published_bound([[maybe_unused]] const phong::features& F, [[maybe_unused
     if (F.mode == evaluation::stable && F.stable_twofold_above > 0) return -1;
     const bool twofold = F.precision == stable_precision::twofold || batch_row;
     const phong::accuracy::bound b = F.mode == evaluation::exact ? phong::accuracy::of<evaluation::exact, T>(c)
+                                   : F.mode == evaluation::fast  ? phong::accuracy::of<evaluation::fast, T>(c)
                                    : twofold ? phong::accuracy::of<evaluation::stable, T, stable_precision::twofold>(c)
                                              : phong::accuracy::of<evaluation::stable, T>(c);
     if (b.max_rel == 0 && b.p99_ulp == 0 && b.max_ulp == 0) return -1; // not published yet

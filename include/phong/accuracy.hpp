@@ -34,6 +34,7 @@
 #pragma once
 
 #include "detail/constexpr_math.hpp"
+#include "fast_math.hpp"
 #include "features.hpp"
 
 #include <array>
@@ -502,6 +503,104 @@ template <stable_precision P> inline constexpr detail::table bounds<evaluation::
     /* non_finite          */ {detail::inf, detail::inf, detail::inf},
 }};
 // clang-format on
+
+// ---------------------------------------------------------------------------------------------
+// The fast mode's bound, derived like the exact mode's. The fast mode runs the exact route with two
+// approximations (phong/fast_math.hpp): 1/|d| by fast::rsqrt (relative error fast::rsqrt_max_rel<T>
+// in place of the exact 1/sqrt's) and the specular power by fast::pow_unit (fast::pow_unit_max_rel
+// where x^m >= 2^-24). Per light, on top of the exact term bounds:
+//   diffuse:  n.l = n.d / |d| gains rsqrt_max_rel relative;
+//   specular: the cosine c gains rsqrt_max_rel relative (Phong: c = x / |d|) or at most
+//             rsqrt_max_rel (1 + 1 / |l + v|) (Blinn: n.l and l = d / |d| both carry 1/|d|, and
+//             |l + v| moves by at most |l| rsqrt_max_rel), so c^m gains expm1(m that) relative, and
+//             the power pow_unit_max_rel relative. Blinn pairs with |l + v| < 4 rsqrt_max_rel have
+//             no halfway vector in the fast mode (n.h taken as 0, as the exact mode does for l = -v
+//             bit for bit, which the fast 1/|d| no longer gives): no relative bound below 5 of it.
+// Where c^m < 2^-24 the power's error is absolute instead, at most 2^-24 pow_unit_max_rel per unit of
+// ks Ls f: fast_absolute_allowance, below 5e-13 per unit light (the class scenes have scene ambient,
+// so it is inside their relative figures). The class constants are fast_class_bound at the exact
+// mode's class limits (exact_class_limits): derived, not measured; their p99_ulp column is a
+// statistic of the accuracy table's run (phong_accuracy_table 200000 7 --bounds --fast).
+// ---------------------------------------------------------------------------------------------
+
+/// The fast mode's extra relative error for one light's terms at the conditioning k (see above).
+template <class T> constexpr double fast_pair_extra(const pair_conditioning& k)
+{
+    const double er = fast::rsqrt_max_rel<T>;
+    double extra = er; // the diffuse cosine
+    if (k.specular != specular_model::none && k.m != 0) {
+        // Blinn with |l + v| < 4 rsqrt_max_rel: no halfway vector in the fast mode (n.h taken as 0).
+        if (k.specular == specular_model::blinn && k.blinn_sum > 0 && k.blinn_sum < 5 * er) return detail::inf;
+        const double cosine = k.specular == specular_model::blinn ? er * (1 + 1 / detail::maxd(k.blinn_sum, 0x1p-1000)) : er;
+        extra = detail::maxd(extra, detail::compose(detail::expm1_upper(k.m * cosine), fast::pow_unit_max_rel));
+    }
+    return extra;
+}
+
+/// The fast mode's bound of one colour channel from its worst pair's conditioning: the exact
+/// bound composed with fast_pair_extra (plus fast_absolute_allowance, absolute).
+template <class T> constexpr double fast_bound(const pair_conditioning& worst, int lights)
+{
+    return detail::compose(exact_bound<T>(worst, lights), fast_pair_extra<T>(worst));
+}
+
+/// The absolute part of the fast bound: 2^-24 pow_unit_max_rel per unit of ks Ls f, summed over
+/// the lights (spec_weight_sum = sum_i ks Ls_i f_i of the channel).
+constexpr double fast_absolute_allowance(double spec_weight_sum) { return 0x1p-24 * fast::pow_unit_max_rel * spec_weight_sum; }
+
+namespace detail {
+template <class T> constexpr double fast_class_bound(const exact_limits& k)
+{
+    if (k.drops) return 1;
+    double extra = 0;
+    if (k.diffuse) {
+        pair_conditioning p;
+        p.nl = k.nl;
+        p.specular = specular_model::none;
+        extra = fast_pair_extra<T>(p);
+    }
+    if (k.specular) {
+        pair_conditioning p;
+        p.m = k.m;
+        p.nl = k.nl;
+        p.nv = k.nv;
+        p.c = k.c;
+        p.specular = specular_model::phong;
+        extra = maxd(extra, fast_pair_extra<T>(p));
+        if (!k.blinn_cancels) { // l = -v bit for bit: the term is 0 in both modes
+            p.specular = specular_model::blinn;
+            p.blinn_sum = k.nl + k.nv;
+            extra = maxd(extra, fast_pair_extra<T>(p));
+        }
+    }
+    return compose(class_bound<T>(k), extra);
+}
+
+template <class T> constexpr table fast_table(const std::array<double, input_class_count>& p99)
+{
+    table t{};
+    for (std::size_t i = 0; i < input_class_count; ++i) {
+        const auto c = static_cast<input_class>(i);
+        if (c == input_class::non_finite) {
+            t[i] = {inf, inf, inf};
+            continue;
+        }
+        const double rel = fast_class_bound<T>(limits_of<T>(c));
+        t[i] = {p99[i], rel / unit_roundoff<T>, rel};
+    }
+    return t;
+}
+} // namespace detail
+
+template <class T> constexpr double fast_class_bound(input_class c) { return detail::fast_class_bound<T>(detail::limits_of<T>(c)); }
+
+// p99_ulp: measured (phong_accuracy_table 200000 7 --bounds --fast --code), twice the worst rounded up
+// (classes where a light may be dropped: 2^24 / 2^53, as in the exact table). Double's p99 is ~1e9
+// ulp: the fast power is float-accurate in double too (relative ~2e-7 typical, pow_unit_max_rel at most).
+template <stable_precision P> inline constexpr detail::table bounds<evaluation::fast, float, P> =
+    detail::fast_table<float>({50, 20000, 200000, 2e+06, 2e+06, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 30, 0x1p24, 4, detail::inf});
+template <stable_precision P> inline constexpr detail::table bounds<evaluation::fast, double, P> =
+    detail::fast_table<double>({2e+09, 3e+09, 3e+09, 3e+09, 2e+06, 2e+09, 2e+09, 2e+09, 2e+09, 2e+09, 0x1p53, 2e+09, 0x1p53, 4, detail::inf});
 
 /// The bound of class c for mode M, scalar type T (float or double) and stable precision P.
 template <evaluation M, class T, stable_precision P = stable_precision::wider>

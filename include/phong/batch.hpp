@@ -1312,6 +1312,8 @@ void shade_batch(const aos_points<T, Q>& points, const material_table<T, Q>& mat
 
 } // namespace phong
 
+#include "detail/fast_lanes.hpp" // fast::lanes for the batches (the fast mode's kernels)
+
 #if defined(PHONG_BATCH_POP_DIAGNOSTICS)
 #  pragma GCC diagnostic pop
 #  undef PHONG_BATCH_POP_DIAGNOSTICS

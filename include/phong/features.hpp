@@ -62,7 +62,10 @@ enum class view_model : unsigned char {
 /// routes (features::precision): float evaluated in double, or power-of-two rescaled vectors with
 /// the unit vectors n, l, v (h), n.l and the chords r - v, n - h carried twofold (to ~eps^2, from the
 /// exact L - Q; detail/twofold.hpp) and the half-chord exponent exp(m log1p(-|r - v|^2/2)).
-enum class evaluation : unsigned char { exact, stable };
+/// `fast`: the exact mode's formulas and guards (the same NaN and degenerate-input policy) with the
+/// specular power and the light vector's 1/|d| taken by the approximations of phong/fast_math.hpp
+/// (fast::pow_unit, fast::rsqrt): for colours that end in 8-bit or half-float pixels.
+enum class evaluation : unsigned char { exact, stable, fast };
 
 /// Where the stable mode's extra precision comes from (phong/accuracy.hpp has the bounds).
 /// `wider`: float is evaluated in double with the exact mode's formulas and rounded once. Every

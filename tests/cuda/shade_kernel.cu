@@ -36,7 +36,8 @@ __global__ void shade_points(const glm::vec3* positions, const glm::vec3* normal
     const glm::vec3 b = shade<blinn_stable>(positions[i], normals[i], mat, lights, env);
     const glm::vec3 c = shade<presets::with_mode(phong_spot, evaluation::stable)>(positions[i], normals[i], mat, lights, env);
     const glm::vec3 d = shade<presets::seed003_ads>(positions[i], normals[i], mat, lights, env);
-    out[i] = a + glm::vec4(b + c + d, 0.0f);
+    const glm::vec3 e = shade<presets::with_mode(blinn_stable, evaluation::fast)>(positions[i], normals[i], mat, lights, env);
+    out[i] = a + glm::vec4(b + c + d + e, 0.0f);
 }
 
 /// The scalar building blocks on their own (double), and validate() on the device.

@@ -3,11 +3,13 @@
 // function per step of the data flow: the point's frame (unit normal, view vector), then per
 // light the light vector, f (detail/light_terms.hpp), whether the pair is lit, the diffuse
 // cosine and the specular factor (specular.hpp's steps). Guarded so that finite input never
-// gives NaN or inf; accuracy bounds in phong/accuracy.hpp.
+// gives NaN or inf; accuracy bounds in phong/accuracy.hpp. The fast mode runs this route too,
+// with fast::pow_unit and fast::rsqrt (phong/fast_math.hpp) where the power and 1/|d| are taken.
 // SPDX-License-Identifier: MIT
 #pragma once
 
 #include "../direction.hpp"
+#include "../fast_math.hpp"
 #include "../specular.hpp"
 #include "light_terms.hpp"
 #include "twofold.hpp"
@@ -139,20 +141,60 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
     }
 }
 
-/// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale (specular.hpp's
-/// cosine_power). Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes
-/// that are lit and see the viewer (scalars: shade's light loop runs a point without a view
-/// vector with the specular term removed, detail::add_lights).
-template <class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U>
+/// The specular power of add_specular: detail::cosine_power, or in the fast mode fast::pow_unit of
+/// the same clamped cosine. Float SIMD lanes keep cosine_power: the exact mode's power there already
+/// is a polynomial kernel of the same cost (detail/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
+/// fast::pow_unit_max_rel where x^m >= 2^-24); measured, fast::pow_unit made the batch rows 5-15 % slower.
+template <evaluation M, class T>
+PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
+{
+    if constexpr (M == evaluation::fast && (std::is_floating_point_v<T> || !std::is_same_v<scalar_t<T>, float>))
+        return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
+    else return detail::cosine_power(x, scale, m);
+}
+
+/// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale (route_cosine_power).
+/// Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes that are lit and see
+/// the viewer (scalars: shade's light loop runs a point without a view vector with the specular
+/// term removed, detail::add_lights).
+template <evaluation M, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U>
 PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
                                      [[maybe_unused]] mask_t<T> on)
 {
     glm::vec<3, T, Q>& sum = sum_of<term_kind::specular>(sums);
     if constexpr (std::is_floating_point_v<T>) {
-        if (x > T(0)) sum += in_type<T>(L.specular) * (f * detail::cosine_power(x, scale, m));
+        if (x > T(0)) sum += in_type<T>(L.specular) * (f * route_cosine_power<M>(x, scale, m));
         else if (m == T(0)) sum += in_type<T>(L.specular) * f; // cosine_power's pow(0, 0) = 1
     } else {
-        sum += in_type<T>(L.specular) * (f * phong::select(on, detail::cosine_power(x, scale, m), T(0)));
+        sum += in_type<T>(L.specular) * (f * phong::select(on, route_cosine_power<M>(x, scale, m), T(0)));
+    }
+}
+
+/// 1/|d| of a lit pair (dd = |d|^2 a normal number): detail::rsqrt_normal, or in the fast mode
+/// fast::rsqrt, except on float SIMD lanes, whose rsqrt_normal already is an estimate and one Newton
+/// step (1.6 u AVX-512, 4.9 u AVX2: within fast::rsqrt_max_rel<float>) without fast::rsqrt's guards.
+template <evaluation M, class T>
+PHONG_HD constexpr T lit_inverse_length(T dd)
+{
+    if constexpr (M == evaluation::fast && (std::is_floating_point_v<T> || !std::is_same_v<scalar_t<T>, float>))
+        return fast::rsqrt(dd);
+    else return detail::rsqrt_normal(dd);
+}
+
+/// Blinn's 1/|l + v| (specular.hpp's inverse_halfway_length), or in the fast mode: fast::rsqrt, and 0
+/// where |l + v| < 4 fast::rsqrt_max_rel. There l = -v to within the fast 1/|d|'s error (l = -v
+/// exactly no longer cancels bit for bit), n.h = (n.l + n.v) / |l + v| is a ratio of two roundings,
+/// so it is taken as 0, as the exact mode does for l = -v.
+template <evaluation M, class T, glm::qualifier Q>
+PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
+{
+    if constexpr (M == evaluation::fast) {
+        constexpr double er = fast::rsqrt_max_rel<scalar_t<T>>;
+        const glm::vec<3, T, Q> sum = l + v;
+        const T hh = phong::dot(sum, sum);
+        return phong::select(hh >= T(scalar_t<T>(16 * er * er)), lit_inverse_length<M>(hh), T(0));
+    } else {
+        return detail::inverse_halfway_length(l, v);
     }
 }
 
@@ -187,18 +229,18 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
         nl = nd / phong::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
     } else {
-        if constexpr (F.spot == spot_model::none) inv = detail::rsqrt_normal(dd); // lanes where dd is not normal are not lit: selected away
+        if constexpr (F.spot == spot_model::none) inv = lit_inverse_length<F.mode>(dd); // lanes where dd is not normal are not lit: selected away
         nl = nd * inv;
     }
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, on);
     [[maybe_unused]] const mask_t<T> specular_on = math_traits<T>::both(on, s.sees_viewer);
     if constexpr (F.specular == specular_model::phong) {
-        add_specular(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
+        add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn) {
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)
             l = vec3(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
-        add_specular(sums, L, f, nl + s.nv, detail::inverse_halfway_length(l, s.view), m, specular_on);
+        add_specular<F.mode>(sums, L, f, nl + s.nv, route_inverse_halfway_length<F.mode>(l, s.view), m, specular_on);
     }
 }
 

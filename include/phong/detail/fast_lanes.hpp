@@ -1,0 +1,47 @@
+// phong: fast::lanes for xsimd batches (the lane-wise bit access of phong/fast_math.hpp's kernels)
+// and the batches' fast::rsqrt. Included by phong/batch.hpp once xsimd is in.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "../fast_math.hpp"
+
+#if PHONG_HAS_XSIMD
+namespace phong::fast {
+
+template <class T, class A>
+struct lanes<xsimd::batch<T, A>> {
+    using V = xsimd::batch<T, A>;
+    using bits_t = xsimd::batch<std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>, A>;
+    static bits_t bits(const V& x) { return xsimd::bitwise_cast<bits_t>(x); }
+    static V from_bits(const bits_t& u) { return xsimd::bitwise_cast<V>(u); }
+    /// a * b + c: the fused instruction where the target has one (xsimd 8.1's fma is a separate
+    /// multiply and add on AVX-512), else a multiply and an add (not math_traits' exact fma:
+    /// Dekker's split costs ten times more and the kernels do not need the single rounding).
+    static V madd(const V& a, const V& b, const V& c)
+    {
+#  if defined(__FMA__) || defined(__AVX512F__)
+        return math_traits<V>::fma(a, b, c);
+#  else
+        return a * b + c;
+#  endif
+    }
+    /// 1/sqrt(x), relative error fast::rsqrt_max_rel<T>. Float: math_traits' estimate + one Newton
+    /// step (AVX, AVX-512; 1/sqrt elsewhere). Double with AVX-512: rsqrt14 (2^-14) + two Newton
+    /// steps (below 1e-15 after the roundings); elsewhere 1/sqrt. x = 0: inf, x = inf: 0.
+    static V rsqrt(const V& x)
+    {
+#  if defined(__AVX512F__)
+        if constexpr (std::is_same_v<T, double> && sizeof(V) == 64) {
+            const V r0(_mm512_rsqrt14_pd(x));
+            const V half_x = V(0.5) * x;
+            const V r1 = r0 * math_traits<V>::fma(-half_x, r0 * r0, V(1.5));
+            const V r2 = r1 * math_traits<V>::fma(-half_x, r1 * r1, V(1.5));
+            return xsimd::select((r0 > V(0.0)) && (r0 < V(std::numeric_limits<double>::infinity())), r2, r0);
+        }
+#  endif
+        return math_traits<V>::rsqrt(x);
+    }
+};
+
+} // namespace phong::fast
+#endif

@@ -1,0 +1,187 @@
+// phong: the approximations of the `fast` evaluation mode (features::mode = evaluation::fast), each
+// a named function in phong::fast under the name of its exact twin, its bound as a constant beside it.
+// SPDX-License-Identifier: MIT
+//
+// For colours that end in 8-bit or half-float pixels: half an 8-bit level is 2e-3 of full scale,
+// half a half-float ulp 2.4e-4 relative. The bounds below are a few 1e-7 to 1e-5, so the fast
+// mode's error stays the exact mode's conditioning (phong/accuracy.hpp, bounds<evaluation::fast, T>).
+// The same templates run on float, double and SIMD batches: the lane-wise bit operations come from
+// `fast::lanes<V>`, specialized for xsimd batches in detail/fast_lanes.hpp (included by batch.hpp).
+// The fast mode's route (detail/exact.hpp) keeps the exact mode's kernels on float SIMD lanes, which
+// are of the same kind and cost there (detail/lanes_power.hpp, rsqrt_normal) and within these bounds.
+// tests/fast_math.test.cpp checks every bound on dense sweeps against long double; the benchmark
+// rows kernel.fast_pow_unit.* and kernel.fast_rsqrt.* (benchmarks/kernels.bench.cpp) time each function
+// beside its exact twin.
+#pragma once
+
+#include "math.hpp"
+
+#include <bit>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+// Float scalars on x86-64 (g++, clang++): the rsqrtss instruction through inline assembly, as
+// math.hpp takes sqrtss (no <immintrin.h> in every user's translation unit).
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE__) && !defined(__CUDA_ARCH__)
+#  define PHONG_FAST_X86_RSQRT 1
+#else
+#  define PHONG_FAST_X86_RSQRT 0
+#endif
+
+namespace phong::fast {
+
+/// Lane-wise bit access for the fast kernels: the unsigned integer type of V's bits, the casts,
+/// and a multiply-add (contracted to an fma where the hardware has one). Scalars here; xsimd
+/// batches in detail/fast_lanes.hpp.
+template <class V, class Enable = void>
+struct lanes {
+    static_assert(std::is_same_v<V, float> || std::is_same_v<V, double>, "phong::fast: no lanes<V> for this type");
+    using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>;
+    PHONG_HD static constexpr bits_t bits(V x) { return std::bit_cast<bits_t>(x); }
+    PHONG_HD static constexpr V from_bits(bits_t u) { return std::bit_cast<V>(u); }
+    PHONG_HD static constexpr V madd(V a, V b, V c) { return a * b + c; }
+};
+
+namespace detail {
+
+/// The kernels' constants for T (float or double): binary format and polynomial coefficients.
+/// The coefficients interpolate at Chebyshev nodes (near-minimax), rounded to float, found by
+/// tests/fast_math_coefficients.cpp (it prints them and their errors):
+///   log2(1 + r) = r P(r), r in [sqrt(1/2) - 1, sqrt(2) - 1], degree 7: relative error 2.1e-7
+///   2^t = E(t),           t in [-1/2, 1/2],                  degree 5: relative error 2.1e-7
+/// Both T use float's coefficients: the bound is float's whatever T (double gains nothing but
+/// the rounding of the arithmetic), which is what the fast mode promises.
+template <class T>
+struct format {
+    static constexpr bool is_float = sizeof(T) == 4;
+    static constexpr int mantissa_bits = is_float ? 23 : 52;
+    static constexpr int bias = is_float ? 127 : 1023;
+    using bits_t = std::conditional_t<is_float, std::uint32_t, std::uint64_t>;
+    static constexpr bits_t one_bits = bits_t(bias) << mantissa_bits;                     // bits of 1.0
+    static constexpr bits_t sqrt_half_bits = is_float ? 0x3f3504f3u : 0x3fe6a09e667f3bcdull; // bits of sqrt(1/2)
+    static constexpr T shift = is_float ? T(0x1.8p23) : T(0x1.8p52); // ulp 1: y + shift rounds y to an integer
+    static constexpr T min_normal = std::numeric_limits<T>::min();
+    static constexpr T subnormal_scale = is_float ? T(0x1p24) : T(0x1p54); // lifts every subnormal to a normal number
+    static constexpr T subnormal_log2 = is_float ? T(24) : T(54);
+};
+
+inline constexpr float log2_p[8] = {0x1.715476p+0f,  -0x1.71552cp-1f, 0x1.ec756ep-2f, -0x1.70dedep-2f,
+                                    0x1.262f0ep-2f, -0x1.fe823ap-3f, 0x1.dc78f4p-3f, -0x1.245f38p-3f};
+inline constexpr float exp2_e[6] = {0x1p+0f, 0x1.62e43p-1f, 0x1.ebf906p-3f, 0x1.c6af6cp-5f, 0x1.3d107p-7f, 0x1.5f089p-10f};
+
+/// log2 x for x > 0 finite (subnormal x included). Other x give a finite value (no NaN): the
+/// callers select them away. x = 2^k f, f in [sqrt(1/2), sqrt(2)), log2 x = k + r P(r), r = f - 1.
+template <class V>
+PHONG_HD constexpr V log2_positive(V x)
+{
+    using S = scalar_t<V>;
+    using fmt = format<S>;
+    using L = lanes<V>;
+    using U = typename L::bits_t;
+    const auto subnormal = x < V(fmt::min_normal);
+    const V xs = phong::select(subnormal, x * V(fmt::subnormal_scale), x);
+    const U u = L::bits(xs);
+    // (u - bits(sqrt(1/2)) + bits(1)) >> mantissa_bits is k + bias, k the exponent of x / sqrt(1/2):
+    // nonnegative for every positive normal x, so a logical shift (unsigned) does.
+    const U biased = (u - U(fmt::sqrt_half_bits) + U(fmt::one_bits)) >> fmt::mantissa_bits;
+    const V f = L::from_bits(u - (biased << fmt::mantissa_bits) + U(fmt::one_bits)); // x / 2^k in [sqrt(1/2), sqrt(2))
+    // k as a V without an integer conversion: the bits of shift + (k + bias), minus shift + bias.
+    const V k = L::from_bits(biased + L::bits(V(fmt::shift))) - V(fmt::shift + S(fmt::bias));
+    const V r = f - V(S(1));
+    // Estrin's scheme: three dependent multiply-adds instead of Horner's seven (the power's latency
+    // is what a light loop waits for; the same number of operations within two multiplications).
+    const auto c = [](int i) { return V(S(log2_p[i])); };
+    const V r2 = r * r, r4 = r2 * r2;
+    const V p01 = L::madd(c(1), r, c(0)), p23 = L::madd(c(3), r, c(2)), p45 = L::madd(c(5), r, c(4)), p67 = L::madd(c(7), r, c(6));
+    const V p = L::madd(L::madd(p67, r2, p45), r4, L::madd(p23, r2, p01));
+    return L::madd(r, p, k - phong::select(subnormal, V(fmt::subnormal_log2), V(S(0))));
+}
+
+/// 2^y for y <= 0: y rounded to an integer n plus t in [-1/2, 1/2], 2^n from the exponent bits.
+/// y below the smallest normal exponent (or -inf) gives 0 (flushed); y > 0 is outside the domain.
+template <class V>
+PHONG_HD constexpr V exp2_nonpositive(V y)
+{
+    using S = scalar_t<V>;
+    using fmt = format<S>;
+    using L = lanes<V>;
+    using U = typename L::bits_t;
+    const V yc = phong::max(y, V(S(-fmt::bias)));  // n >= -bias: n = -bias gives 2^n's bits 0, i.e. 0
+    const V shifted = yc + V(fmt::shift);           // low bits: n = round(y), two's complement
+    const V t = yc - (shifted - V(fmt::shift));     // exact
+    const U n_biased = L::bits(shifted) - L::bits(V(fmt::shift)) + U(U(fmt::bias));
+    const V scale = L::from_bits(n_biased << fmt::mantissa_bits); // 2^n, or 0 for n = -bias
+    const auto c = [](int i) { return V(S(exp2_e[i])); };
+    const V t2 = t * t;
+    const V e = L::madd(L::madd(L::madd(c(5), t, c(4)), t2, L::madd(c(3), t, c(2))), t2, L::madd(c(1), t, c(0))); // Estrin
+    return scale * e;
+}
+
+} // namespace detail
+
+/// Relative error bound of fast::pow_unit where the exact x^m >= 2^-24 (|m log2 x| <= 24); below
+/// that its absolute error is at most 2^-24 pow_unit_max_rel. Derived: E's 2.1e-7 and the float
+/// rounding of E, plus ln 2 |m log2 x| times the absolute error of m log2 x (P's 2.1e-7 relative,
+/// float rounding of the product): 2.6e-7 + 24 ln 2 (2.5e-7 + 2^-23) = 6.5e-6; measured 5.1e-6 in
+/// float, 3.3e-6 in double (tests/fast_math.test.cpp; SSE2, AVX2 and AVX-512 lanes alike), published
+/// with a margin.
+inline constexpr double pow_unit_max_rel = 8e-6;
+
+/// Fast x^m for a base x in [0, 1] and an exponent m >= 0, finite (the specular power):
+///   x^m = 2^(m log2 x), log2 by a degree-7 polynomial on the mantissa, 2^y by a degree-5 one.
+/// Error: relative pow_unit_max_rel where x^m >= 2^-24; absolute 2^-24 pow_unit_max_rel below.
+/// Edge: m = 0 gives 1 for every x (pow(0, 0) = 1); x = 0 gives 0 for m > 0; x = 1 gives exactly 1;
+/// results below T's smallest normal number are flushed to 0. Outside the domain: never NaN or
+/// inf (NaN x gives 1 for m = 0, else 0; x > 1 is treated as 1 only up to P's accuracy, so clamp x).
+/// Exact twin: phong::pow_unit (math.hpp). Branch-free: scalars and SIMD lanes alike.
+template <class V>
+PHONG_HD constexpr V pow_unit(V x, V m)
+{
+    using S = scalar_t<V>;
+    const V y = m * detail::log2_positive(x);
+    const V p = detail::exp2_nonpositive(phong::min(y, V(S(0))));
+    const auto positive = x > V(S(0));
+    return phong::select(positive, phong::select(m == V(S(0)), V(S(1)), p), phong::select(m == V(S(0)), V(S(1)), V(S(0))));
+}
+
+/// Relative error bound of fast::rsqrt for a positive normal x: an estimate with relative error
+/// e0 <= 1.5 2^-12 (SSE rsqrtss/rsqrtps, the coarsest used) refined by one Newton step has
+/// 1.5 e0^2 = 2.0e-7, plus the step's roundings (<= 2.5 2^-24 = 1.5e-7): 3.5e-7, published 4e-7.
+/// Measured over every float in [1, 4) (tests/fast_math.test.cpp): 2.1e-7 (rsqrtss), 1.4e-7 (AVX-512 lanes).
+/// Double: the exact 1/sqrt, or with AVX-512 lanes rsqrt14 (2^-14) refined by two Newton steps
+/// (1.5 (1.5 2^-28)^2 plus the roundings, 2.5 2^-53): 3.3e-16, published 4e-16; measured 2.7e-16.
+template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7 : 4e-16;
+
+/// Fast 1/sqrt(x) for a positive normal x: a hardware estimate refined by one Newton step,
+///   r1 = r0 (3/2 - x/2 r0^2),
+/// relative error rsqrt_max_rel<T>. Float scalars on x86 (SSE): rsqrtss. Double scalars and other
+/// targets: the exact 1/sqrt(x) (no faster estimate is worth it there). SIMD batches: see
+/// detail/fast_lanes.hpp. Edge: x = 0 gives inf, x = inf gives 0 (the estimate, unrefined);
+/// x < 0 or NaN: NaN. Exact twin: phong::rsqrt (math.hpp).
+template <class V>
+PHONG_HD constexpr V rsqrt(V x)
+{
+    if constexpr (requires { lanes<V>::rsqrt(x); }) {
+        return lanes<V>::rsqrt(x); // SIMD batches
+    } else {
+#if PHONG_FAST_X86_RSQRT
+        if constexpr (std::is_same_v<V, float>) {
+            if (!std::is_constant_evaluated()) {
+                float r0;
+#  if defined(__AVX__) // three operands: the upper lanes come from x itself, no false dependency
+                __asm__("vrsqrtss %1, %1, %0" : "=x"(r0) : "x"(x));
+#  else
+                r0 = x;
+                __asm__("rsqrtss %0, %0" : "+x"(r0));
+#  endif
+                const float r1 = r0 * (1.5f - (0.5f * x) * (r0 * r0));
+                return (r0 > 0.0f && r0 < std::numeric_limits<float>::infinity()) ? r1 : r0;
+            }
+        }
+#endif
+        return phong::rsqrt(x);
+    }
+}
+
+} // namespace phong::fast

@@ -1,0 +1,155 @@
+// phong/fast_math.hpp: each approximation within its published constant on dense sweeps, against
+// long double (64-bit significand: 1e-19 relative, far below the bounds), its edges, and never
+// NaN or inf in the domain; scalars and SIMD batches (the batch test binary also builds this file
+// with -march=native: AVX-512 lanes).
+#include <phong/batch.hpp>
+#include <phong/fast_math.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+namespace {
+
+using W = long double;
+
+/// Bases: 0, the subnormals' and normals' range by powers of two, a fine grid near 1 (where
+/// m log2 x is small for large m), 1 itself.
+template <class T> std::vector<T> pow_bases()
+{
+    std::vector<T> xs{T(0), std::numeric_limits<T>::denorm_min(), std::numeric_limits<T>::min(), T(1)};
+    for (int e = std::numeric_limits<T>::min_exponent - std::numeric_limits<T>::digits; e <= 0; ++e)
+        for (int k = 0; k < 16; ++k) xs.push_back(std::ldexp(T(1) + T(k) / 16, e - 1));
+    for (int i = 1; i <= 20000; ++i) xs.push_back(T(i) / 20000);                  // [0, 1] evenly
+    for (int i = 1; i <= 4000; ++i) xs.push_back(T(1) - T(i) * std::numeric_limits<T>::epsilon()); // just below 1
+    for (int i = 1; i <= 4000; ++i) xs.push_back(T(1) - T(1e-6) * T(i)); // the highlight of m ~ 1e5
+    return xs;
+}
+const std::vector<double> exponents{0, 1e-3, 0.1, 0.5, 1, 2, 3.7, 10, 32, 64, 128, 200, 1e3, 1e4, 1e5, 1e7, 1e30};
+
+struct pow_error {
+    double max_rel = 0;  // where the exact value >= 2^-24
+    double max_abs = 0;  // elsewhere
+    bool finite = true;
+};
+
+template <class T> void record(pow_error& e, T x, T m, T got)
+{
+    e.finite = e.finite && std::isfinite(got) && got >= T(0);
+    const W ref = (m == T(0)) ? W(1) : std::pow(W(x), W(m));
+    if (ref >= W(0x1p-24)) e.max_rel = std::max(e.max_rel, double(std::fabs(W(got) - ref) / ref));
+    else e.max_abs = std::max(e.max_abs, double(std::fabs(W(got) - ref)));
+}
+
+template <class T> pow_error scalar_pow_error()
+{
+    pow_error e;
+    for (double md : exponents)
+        for (T x : pow_bases<T>()) record(e, x, T(md), phong::fast::pow_unit(x, T(md)));
+    return e;
+}
+
+#if PHONG_HAS_XSIMD
+template <class T> pow_error batch_pow_error()
+{
+    using V = phong::simd_batch<T>;
+    constexpr std::size_t n = V::size;
+    pow_error e;
+    std::vector<T> xs = pow_bases<T>();
+    while (xs.size() % n) xs.push_back(T(1));
+    alignas(64) T in[64], out[64];
+    for (double md : exponents) {
+        for (std::size_t i = 0; i < xs.size(); i += n) {
+            std::memcpy(in, &xs[i], n * sizeof(T));
+            phong::fast::pow_unit(V::load_unaligned(in), V(T(md))).store_unaligned(out);
+            for (std::size_t k = 0; k < n; ++k) record(e, in[k], T(md), out[k]);
+        }
+    }
+    return e;
+}
+#endif
+
+} // namespace
+
+TEST_CASE_TEMPLATE("fast::pow_unit: within pow_unit_max_rel of x^m, never NaN or inf", T, float, double)
+{
+    const pow_error e = scalar_pow_error<T>();
+    MESSAGE("fast::pow_unit, scalar: max relative error ", e.max_rel, " where x^m >= 2^-24, max absolute ", e.max_abs, " below");
+    CHECK(e.finite);
+    CHECK(e.max_rel <= phong::fast::pow_unit_max_rel);
+    CHECK(e.max_abs <= 0x1p-24 * phong::fast::pow_unit_max_rel);
+#if PHONG_HAS_XSIMD
+    const pow_error b = batch_pow_error<T>();
+    MESSAGE("fast::pow_unit, ", phong::batch_width<T>, " lanes: max relative error ", b.max_rel, ", max absolute ", b.max_abs);
+    CHECK(b.finite);
+    CHECK(b.max_rel <= phong::fast::pow_unit_max_rel);
+    CHECK(b.max_abs <= 0x1p-24 * phong::fast::pow_unit_max_rel);
+#endif
+}
+
+TEST_CASE_TEMPLATE("fast::pow_unit: the edges are exact", T, float, double)
+{
+    using phong::fast::pow_unit;
+    const T huge = std::numeric_limits<T>::max();
+    for (T m : {T(0), T(1e-3), T(1), T(200), T(1e5), huge}) CHECK(pow_unit(T(1), m) == T(1)); // 1^m = 1
+    for (T x : {T(0), std::numeric_limits<T>::denorm_min(), T(0.5), T(1)}) CHECK(pow_unit(x, T(0)) == T(1)); // pow(0, 0) = 1
+    for (T m : {T(1e-3), T(1), T(200), huge}) CHECK(pow_unit(T(0), m) == T(0));
+    CHECK(pow_unit(T(0.5), T(1)) == T(0.5)); // 2^-1: r = 0 and t = 0, no polynomial error
+    CHECK(pow_unit(T(0.5), huge) == T(0));   // flushed, no NaN from huge * log2
+    CHECK(pow_unit(std::numeric_limits<T>::quiet_NaN(), T(2)) == T(0)); // outside the domain: finite
+    CHECK(pow_unit(std::numeric_limits<T>::quiet_NaN(), T(0)) == T(1));
+    static_assert(pow_unit(T(1), T(3)) == T(1) && pow_unit(T(0), T(0)) == T(1)); // constexpr for scalars
+}
+
+TEST_CASE("fast::rsqrt: within rsqrt_max_rel over every float from 1 to 4, edges")
+{
+    double worst = 0;
+    for (float x = 1.0f; x < 4.0f; x = std::nextafter(x, 5.0f)) {
+        const W ref = 1 / std::sqrt(W(x));
+        worst = std::max(worst, double(std::fabs(W(phong::fast::rsqrt(x)) - ref) / ref));
+    }
+    MESSAGE("fast::rsqrt, float scalar: max relative error ", worst, " (every float from 1 to 4: the error repeats every two binades)");
+    CHECK(worst <= phong::fast::rsqrt_max_rel<float>);
+    for (float x : {std::numeric_limits<float>::min(), 1e-30f, 3e7f, std::numeric_limits<float>::max()}) {
+        const W ref = 1 / std::sqrt(W(x));
+        CHECK(double(std::fabs(W(phong::fast::rsqrt(x)) - ref) / ref) <= phong::fast::rsqrt_max_rel<float>);
+    }
+    double worst_double = 0; // double scalars: the exact 1/sqrt
+    for (int i = 0; i < 100000; ++i) {
+        const double x = 1 + 3 * double(i) / 100000;
+        const W ref = 1 / std::sqrt(W(x));
+        worst_double = std::max(worst_double, double(std::fabs(W(phong::fast::rsqrt(x)) - ref) / ref));
+    }
+    CHECK(worst_double <= phong::fast::rsqrt_max_rel<double>);
+    CHECK(phong::fast::rsqrt(0.0f) == std::numeric_limits<float>::infinity());
+    CHECK(phong::fast::rsqrt(std::numeric_limits<float>::infinity()) == 0.0f);
+}
+
+#if PHONG_HAS_XSIMD
+TEST_CASE_TEMPLATE("fast::rsqrt on SIMD lanes: within rsqrt_max_rel, edges", T, float, double)
+{
+    using V = phong::simd_batch<T>;
+    constexpr std::size_t n = V::size;
+    alignas(64) T in[64], out[64];
+    double worst = 0;
+    const int steps = 1 << 20;
+    for (int i = 0; i < steps; i += int(n)) {
+        for (std::size_t k = 0; k < n; ++k) in[k] = T(1) + T(3) * T(i + int(k)) / T(steps); // [1, 4)
+        phong::fast::rsqrt(V::load_unaligned(in)).store_unaligned(out);
+        for (std::size_t k = 0; k < n; ++k) {
+            const W ref = 1 / std::sqrt(W(in[k]));
+            worst = std::max(worst, double(std::fabs(W(out[k]) - ref) / ref));
+        }
+    }
+    MESSAGE("fast::rsqrt, ", n, " lanes: max relative error ", worst);
+    CHECK(worst <= phong::fast::rsqrt_max_rel<T>);
+    phong::fast::rsqrt(V(T(0))).store_unaligned(out);
+    CHECK(out[0] == std::numeric_limits<T>::infinity());
+    phong::fast::rsqrt(V(std::numeric_limits<T>::infinity())).store_unaligned(out);
+    CHECK(out[0] == T(0));
+}
+#endif
