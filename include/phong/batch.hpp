@@ -1003,19 +1003,16 @@ template <class T> std::size_t vec3_count(const soa3<T>& v)
 }
 template <class T, glm::qualifier Q> std::size_t vec3_count(std::span<const glm::vec<3, T, Q>> v) { return v.size(); }
 
-/// shade_batch over soa_points or aos_points: preconditions checked (debug builds), lights,
-/// shared material (or a material table) and environment broadcast once, then one
-/// shade_points_step per W points. Materials: material<T, Q> (one for all), a span of N
-/// materials (one per point) or material_table<T, Q> (a table and N ids).
+/// shade_batch's preconditions, checked in debug builds through the precondition handler (span
+/// lengths, no aliasing, valid materials and lights). Returns whether to shade: not when a length
+/// is off (a handler that returns must not lead to reads or writes past a span), nor, in every
+/// build, with an empty material table (nothing to read).
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
-void shade_points_impl(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
-                       const Output& out, const environment<T, Q>& env)
+bool check_batch_inputs(const Points& points, const Materials& materials, [[maybe_unused]] std::span<const light<T, Q>> lights,
+                        const Output& out, std::size_t n)
 {
-    using V = simd_batch<T>;
-    constexpr std::size_t W = batch_width<T>;
     constexpr bool shared_material = std::is_same_v<Materials, material<T, Q>>;
     constexpr bool table = std::is_same_v<Materials, material_table<T, Q>>;
-    const std::size_t n = vec3_count(points.positions);
     [[maybe_unused]] std::size_t out_size = 0;
     if constexpr (std::is_same_v<Output, soa_rgba<T>>)
         out_size = std::min({out.r.size(), out.g.size(), out.b.size(), F.alpha ? out.a.size() : out.r.size()});
@@ -1038,15 +1035,13 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
         PHONG_ASSERT(n == 0 || !materials.materials.empty(), "shade_batch: material_table without materials");
         lengths_ok = lengths_ok && materials.ids.size() == n;
         // Checked in every build: with no entry there is nothing to read (an id is clamped to the last entry).
-        if (n != 0 && materials.materials.empty()) return;
+        if (n != 0 && materials.materials.empty()) return false;
     } else if constexpr (!shared_material) {
         PHONG_ASSERT(materials.size() == n, "shade_batch: one material per point");
         lengths_ok = lengths_ok && materials.size() == n;
     }
 #if !defined(NDEBUG)
-    // A precondition handler that returns (set_precondition_handler) must not lead to reads or
-    // writes past a span: nothing is shaded then.
-    if (!lengths_ok) return;
+    if (!lengths_ok) return false;
     if constexpr (std::is_same_v<Points, soa_points<T>>) {
         PHONG_ASSERT((!output_overlaps_input<F.alpha ? 4 : 3, T, Q>(points.positions, points.normals, materials, out, points.front_facing, n)),
                      "shade_batch: an output span overlaps an input span (only an output channel equal to an input "
@@ -1072,20 +1067,36 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     }
     for (const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
 #endif
+    return true;
+}
 
-    // One material for all points: folded into the lights (shade_lanes' folded_sums).
-    std::vector<light<V, Q>> lane_lights;
-    lane_lights.reserve(lights.size());
+/// The lights in lanes, splatted once per call; with one material for all points, the material
+/// folded into them (La_i ka, Ld_i kd, Ls_i ks: shade_lanes' folded_sums).
+template <class V, class T, glm::qualifier Q, class Materials>
+std::vector<light<V, Q>> lane_lights_of(std::span<const light<T, Q>> lights, const Materials& materials)
+{
+    std::vector<light<V, Q>> lanes;
+    lanes.reserve(lights.size());
     for (light<T, Q> L : lights) {
-        if constexpr (shared_material) L.ambient *= materials.ka, L.diffuse *= materials.kd, L.specular *= materials.ks;
-        lane_lights.push_back(splat<V>(L));
+        if constexpr (std::is_same_v<Materials, material<T, Q>>) L.ambient *= materials.ka, L.diffuse *= materials.kd, L.specular *= materials.ks;
+        lanes.push_back(splat<V>(L));
     }
-    environment<T, Q> call_env = env;
-    if constexpr (shared_material) { // the folded sums' start (shade_lanes): emission + ka (La [+ sum_i La_i])
+    return lanes;
+}
+
+/// The environment in lanes. With one material for all points, its ambient is the folded sums'
+/// start (shade_lanes): emission + ka La, and + ka sum_i La_i where the lights' ambient terms are
+/// hoisted (ambient_hoistable, no masks).
+template <features F, class V, class T, glm::qualifier Q, class Materials>
+environment<V, Q> lane_environment(const environment<T, Q>& env, const Materials& materials, std::span<const light<T, Q>> lights,
+                                   [[maybe_unused]] bool masks)
+{
+    environment<T, Q> e = env;
+    if constexpr (std::is_same_v<Materials, material<T, Q>>) {
         glm::vec<3, T, Q> ambient(T(0));
         if constexpr (F.scene_ambient) ambient = env.ambient;
         if constexpr (ambient_hoistable<F>) {
-            if (points.light_masks.empty()) {
+            if (!masks) {
                 glm::vec<3, T, Q> sum(T(0));
                 for (const light<T, Q>& L : lights) sum += L.ambient;
                 ambient = F.scene_ambient ? env.ambient + sum : sum;
@@ -1093,18 +1104,35 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
         }
         glm::vec<3, T, Q> start = materials.ka * ambient;
         if constexpr (F.emission) start = materials.emission + start;
-        call_env.ambient = start;
+        e.ambient = start;
     }
-    const environment<V, Q> lane_env{splat<V>(call_env.ambient), splat<V>(call_env.eye)};
+    return {splat<V>(e.ambient), splat<V>(e.eye)};
+}
+
+/// shade_batch over soa_points or aos_points: preconditions checked (debug builds), lights,
+/// shared material (or a material table) and environment broadcast once, then one
+/// shade_points_step per W points. Materials: material<T, Q> (one for all), a span of N
+/// materials (one per point) or material_table<T, Q> (a table and N ids).
+template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
+void shade_points_impl(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
+                       const Output& out, const environment<T, Q>& env)
+{
+    using V = simd_batch<T>;
+    constexpr std::size_t W = batch_width<T>;
+    const std::size_t n = vec3_count(points.positions);
+    if (!check_batch_inputs<F>(points, materials, lights, out, n)) return;
+
+    const std::vector<light<V, Q>> lane_lights = lane_lights_of<V>(lights, materials);
     const std::span<const light<V, Q>> lane_span(lane_lights);
+    const environment<V, Q> lane_env = lane_environment<F, V>(env, materials, lights, !points.light_masks.empty());
     const auto run = [&](const auto& material_lanes) {
         std::size_t i = 0;
         for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, material_lanes, lane_span, lane_env, out);
         if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, material_lanes, lane_span, lane_env, out);
     };
-    if constexpr (shared_material) {
+    if constexpr (std::is_same_v<Materials, material<T, Q>>) {
         run(shared_lanes<V, Q>{splat<V>(materials)});
-    } else if constexpr (table) {
+    } else if constexpr (std::is_same_v<Materials, material_table<T, Q>>) {
         table_lanes<V, T, Q> lanes{materials.materials, materials.ids, {}};
         lanes.splatted.reserve(materials.materials.size());
         for (const material<T, Q>& m : materials.materials) lanes.splatted.push_back(splat<V>(m));
