@@ -13,6 +13,8 @@
 #include "shade.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <array>
 #include <cstddef>
 #include <functional>
@@ -847,8 +849,14 @@ PHONG_BATCH_NOINLINE color<F, V, Q> shade_lanes(const glm::vec<3, V, Q>& positio
     return finish<F>(sums, s, mat, env);
 }
 
-/// One material for every point: its lanes, splatted once per call.
+/// One material for every point: its lanes, splatted once per call (folded into the lights).
 template <class V, glm::qualifier Q> struct shared_lanes {
+    material<V, Q> lanes;
+    template <class Use> void with_step(std::size_t, std::size_t, Use&& use) const { use(lanes); }
+};
+/// The same where folding would lose a product to underflow or overflow (foldable below): the
+/// material multiplies the sums at the end, as per point.
+template <class V, glm::qualifier Q> struct unfolded_shared_lanes {
     material<V, Q> lanes;
     template <class Use> void with_step(std::size_t, std::size_t, Use&& use) const { use(lanes); }
 };
@@ -1070,15 +1078,34 @@ bool check_batch_inputs(const Points& points, const Materials& materials, [[mayb
     return true;
 }
 
-/// The lights in lanes, splatted once per call; with one material for all points, the material
-/// folded into them (La_i ka, Ld_i kd, Ls_i ks: shade_lanes' folded_sums).
+/// Whether one material can be folded into the lights: every product La_i ka, Ld_i kd, Ls_i ks is
+/// 0 exactly (a zero factor) or a normal number. A product lost to underflow would drop a term
+/// that f_i (up to the attenuation cap, ~1e38 in float) may scale back to a visible size (found by
+/// tests/fuzz/fuzz_batch.cpp: kd 2e-19, Ld 1e-30, f 3e28); one that overflows would turn a
+/// finite colour into inf.
+template <class T, glm::qualifier Q>
+bool foldable(const material<T, Q>& m, std::span<const light<T, Q>> lights)
+{
+    const auto fine = [](T a, T b) {
+        const T p = a * b;
+        return a == T(0) || b == T(0) || (std::abs(p) >= std::numeric_limits<T>::min() && std::abs(p) <= std::numeric_limits<T>::max());
+    };
+    for (const light<T, Q>& L : lights)
+        for (int c = 0; c < 3; ++c)
+            if (!fine(m.ka[c], L.ambient[c]) || !fine(m.kd[c], L.diffuse[c]) || !fine(m.ks[c], L.specular[c])) return false;
+    return true;
+}
+
+/// The lights in lanes, splatted once per call; with one material for all points and fold, the
+/// material folded into them (La_i ka, Ld_i kd, Ls_i ks: shade_lanes' folded_sums).
 template <class V, class T, glm::qualifier Q, class Materials>
-std::vector<light<V, Q>> lane_lights_of(std::span<const light<T, Q>> lights, const Materials& materials)
+std::vector<light<V, Q>> lane_lights_of(std::span<const light<T, Q>> lights, const Materials& materials, [[maybe_unused]] bool fold)
 {
     std::vector<light<V, Q>> lanes;
     lanes.reserve(lights.size());
     for (light<T, Q> L : lights) {
-        if constexpr (std::is_same_v<Materials, material<T, Q>>) L.ambient *= materials.ka, L.diffuse *= materials.kd, L.specular *= materials.ks;
+        if constexpr (std::is_same_v<Materials, material<T, Q>>)
+            if (fold) L.ambient *= materials.ka, L.diffuse *= materials.kd, L.specular *= materials.ks;
         lanes.push_back(splat<V>(L));
     }
     return lanes;
@@ -1089,10 +1116,11 @@ std::vector<light<V, Q>> lane_lights_of(std::span<const light<T, Q>> lights, con
 /// hoisted (ambient_hoistable, no masks).
 template <features F, class V, class T, glm::qualifier Q, class Materials>
 environment<V, Q> lane_environment(const environment<T, Q>& env, const Materials& materials, std::span<const light<T, Q>> lights,
-                                   [[maybe_unused]] bool masks)
+                                   [[maybe_unused]] bool masks, [[maybe_unused]] bool fold)
 {
     environment<T, Q> e = env;
     if constexpr (std::is_same_v<Materials, material<T, Q>>) {
+        if (!fold) return {splat<V>(e.ambient), splat<V>(e.eye)};
         glm::vec<3, T, Q> ambient(T(0));
         if constexpr (F.scene_ambient) ambient = env.ambient;
         if constexpr (ambient_hoistable<F>) {
@@ -1122,16 +1150,19 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     const std::size_t n = vec3_count(points.positions);
     if (!check_batch_inputs<F>(points, materials, lights, out, n)) return;
 
-    const std::vector<light<V, Q>> lane_lights = lane_lights_of<V>(lights, materials);
+    bool fold = false; // one material: folded into the lights where no product is lost
+    if constexpr (std::is_same_v<Materials, material<T, Q>>) fold = foldable(materials, lights);
+    const std::vector<light<V, Q>> lane_lights = lane_lights_of<V>(lights, materials, fold);
     const std::span<const light<V, Q>> lane_span(lane_lights);
-    const environment<V, Q> lane_env = lane_environment<F, V>(env, materials, lights, !points.light_masks.empty());
+    const environment<V, Q> lane_env = lane_environment<F, V>(env, materials, lights, !points.light_masks.empty(), fold);
     const auto run = [&](const auto& material_lanes) {
         std::size_t i = 0;
         for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, material_lanes, lane_span, lane_env, out);
         if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, material_lanes, lane_span, lane_env, out);
     };
     if constexpr (std::is_same_v<Materials, material<T, Q>>) {
-        run(shared_lanes<V, Q>{splat<V>(materials)});
+        if (fold) run(shared_lanes<V, Q>{splat<V>(materials)});
+        else run(unfolded_shared_lanes<V, Q>{splat<V>(materials)});
     } else if constexpr (std::is_same_v<Materials, material_table<T, Q>>) {
         table_lanes<V, T, Q> lanes{materials.materials, materials.ids, {}};
         lanes.splatted.reserve(materials.materials.size());
