@@ -407,8 +407,8 @@ template <class T> constexpr double class_bound(const exact_limits& k)
     return exact_bound<T>(worst, k.lights);
 }
 
-/// The exact mode's table: derived max_rel and max_ulp, measured p99.
-template <class T> constexpr table exact_table(const std::array<double, input_class_count>& p99)
+/// A derived table: max_rel = bound(the class's limits) and max_ulp from it, measured p99.
+template <class T, class Bound> constexpr table derived_table(const std::array<double, input_class_count>& p99, Bound bound)
 {
     table t{};
     for (std::size_t i = 0; i < input_class_count; ++i) {
@@ -417,10 +417,16 @@ template <class T> constexpr table exact_table(const std::array<double, input_cl
             t[i] = {inf, inf, inf};
             continue;
         }
-        const double rel = class_bound<T>(limits_of<T>(c));
+        const double rel = bound(limits_of<T>(c));
         t[i] = {p99[i], rel / unit_roundoff<T>, rel};
     }
     return t;
+}
+
+/// The exact mode's table: derived max_rel and max_ulp, measured p99.
+template <class T> constexpr table exact_table(const std::array<double, input_class_count>& p99)
+{
+    return derived_table<T>(p99, [](const exact_limits& k) { return class_bound<T>(k); });
 }
 } // namespace detail
 
@@ -578,17 +584,7 @@ template <class T> constexpr double fast_class_bound(const exact_limits& k)
 
 template <class T> constexpr table fast_table(const std::array<double, input_class_count>& p99)
 {
-    table t{};
-    for (std::size_t i = 0; i < input_class_count; ++i) {
-        const auto c = static_cast<input_class>(i);
-        if (c == input_class::non_finite) {
-            t[i] = {inf, inf, inf};
-            continue;
-        }
-        const double rel = fast_class_bound<T>(limits_of<T>(c));
-        t[i] = {p99[i], rel / unit_roundoff<T>, rel};
-    }
-    return t;
+    return derived_table<T>(p99, [](const exact_limits& k) { return fast_class_bound<T>(k); });
 }
 } // namespace detail
 
