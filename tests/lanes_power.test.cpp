@@ -24,14 +24,18 @@ namespace {
 using V = phong::simd_batch<float>;
 constexpr std::size_t W = phong::batch_width<float>;
 
+/// kernel(x, m) on lanes all holding x and m, one lane read back.
+template <class Kernel> float on_lanes(Kernel kernel, float x, float m)
+{
+    alignas(64) float out[W];
+    kernel(V(x), V(m)).store_aligned(out);
+    return out[W / 2];
+}
+
 /// pow_unit on one lane value (the others: copies), read back.
 float lanes_pow(float x, float m)
 {
-    alignas(64) float xs[W], ms[W], out[W];
-    for (std::size_t k = 0; k < W; ++k) xs[k] = x, ms[k] = m;
-    const V r = phong::math_traits<V>::pow_unit(V::load_aligned(xs), V::load_aligned(ms));
-    r.store_aligned(out);
-    return out[W / 2];
+    return on_lanes([](const V& a, const V& b) { return phong::math_traits<V>::pow_unit(a, b); }, x, m);
 }
 
 struct worst_case {
@@ -104,11 +108,7 @@ TEST_CASE("shade_batch's float power: within its documented bound on seeded base
 /// (1 - x)^m through math_traits<V>::pow_one_minus (the stable mode's power), one lane value.
 float lanes_pow_one_minus(float x, float m)
 {
-    alignas(64) float xs[W], ms[W], out[W];
-    for (std::size_t k = 0; k < W; ++k) xs[k] = x, ms[k] = m;
-    const V r = phong::math_traits<V>::pow_one_minus(V::load_aligned(xs), V::load_aligned(ms));
-    r.store_aligned(out);
-    return out[W / 2];
+    return on_lanes([](const V& a, const V& b) { return phong::math_traits<V>::pow_one_minus(a, b); }, x, m);
 }
 
 /// Checks (1 - x)^m against the wide reference on the exact 1 - x; returns error / bound.
