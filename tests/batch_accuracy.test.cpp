@@ -89,3 +89,33 @@ TEST_CASE_TEMPLATE("shade_batch fast: every stiff and extreme class within the p
     check_batch_classes<T, specular_model::phong, evaluation::fast>();
     check_batch_classes<T, specular_model::blinn, evaluation::fast>();
 }
+
+TEST_CASE("shade_batch stable, float: both sides of the double-lane route's shininess limit stay within the m = 1e5 bound")
+{
+    // Float lanes run the geometry in double up to m = 2^20 (detail/stable_lanes.hpp) and the
+    // twofold route above. The near-peak scenes of the shininess classes at m = 1e6 (double lanes,
+    // at the limit's edge: the double x's error m * 8 * 2^-53 is largest there) and at m = 2e6 and
+    // 1e8 (twofold route) meet the published bound of the largest published class, shininess_1e5.
+    using phong::accuracy::input_class;
+    const phong::accuracy::bound bound = phong::accuracy::of<evaluation::stable, float, phong::stable_precision::twofold>(input_class::shininess_1e5);
+    for (const double m : {1e6, 2e6, 1e8}) {
+        phong_test::splitmix g{0x5eed ^ std::uint64_t(m)};
+        std::vector<phong_test::stiff_scene<float>> scenes;
+        for (int i = 0; i < 300; ++i) scenes.push_back(phong_test::detail::near_peak<float>(g, m));
+        for (const specular_model S : {specular_model::phong, specular_model::blinn}) {
+            std::size_t disagree = 0;
+            const error_stats e = S == specular_model::phong
+                                      ? measure_batch<phong::accuracy::measured_features(evaluation::stable, specular_model::phong), float>(scenes, disagree)
+                                      : measure_batch<phong::accuracy::measured_features(evaluation::stable, specular_model::blinn), float>(scenes, disagree);
+            CAPTURE(m);
+            CAPTURE(S == specular_model::phong ? "phong" : "blinn");
+            MESSAGE("stable float m = " << m << (S == specular_model::phong ? " phong" : " blinn") << ": p99 " << e.p99_ulp << " max "
+                                        << e.max_ulp << " ulp, max rel " << e.max_rel);
+            CHECK(disagree == 0);
+            CHECK(e.non_finite == 0);
+            CHECK(e.p99_ulp <= bound.p99_ulp);
+            CHECK(e.max_ulp <= bound.max_ulp);
+            CHECK(e.max_rel <= bound.max_rel);
+        }
+    }
+}

@@ -30,7 +30,8 @@
 // Summary, stable mode: float (evaluated in double) correctly rounded but for near-ties, within
 // 1 ulp in every class; with twofold precision (double, SIMD batches, or float on request) every
 // class within a few ulp (p99 <= 5, max <= 12 measured), m up to 1e5 near the peak and n.l ~ 1e-6
-// included.
+// included. Float SIMD batches on x86 run the geometry in double lanes (detail/stable_lanes.hpp)
+// and are held to the same twofold bounds (tests/batch_accuracy.test.cpp).
 #pragma once
 
 #include "detail/constexpr_math.hpp"
@@ -436,8 +437,8 @@ template <class T> constexpr double exact_class_bound(input_class c) { return de
 template <class T> constexpr exact_limits exact_class_limits(input_class c) { return detail::limits_of<T>(c); }
 
 /// The published bounds, indexed by input_class (use accuracy::of<M, T>(c)). P, the stable mode's
-/// precision (features::precision), matters for float only: double always runs twofold, and so
-/// do SIMD batches (their bound is bounds<stable, T, twofold>).
+/// precision (features::precision), matters for float only: double always runs twofold, and SIMD
+/// batches are held to bounds<stable, T, twofold> (float lanes on x86: geometry in double lanes).
 template <evaluation M, class T, stable_precision P = stable_precision::wider> inline constexpr detail::table bounds{};
 
 // clang-format off

@@ -40,6 +40,7 @@
 #  include <xsimd/xsimd.hpp>
 #  include "detail/lanes_power.hpp"
 #  define PHONG_HAS_XSIMD 1
+#  include "detail/stable_lanes.hpp"
 #else
 #  define PHONG_HAS_XSIMD 0
 #endif
@@ -754,6 +755,18 @@ template <class V, class T> struct lane_visibility {
     }
 };
 
+/// The qualifier of a sums type (light_sums<V, Q> or folded_sums<V, Q>).
+template <class Sums> struct sums_qualifier;
+template <template <class, glm::qualifier> class S, class V, glm::qualifier Q> struct sums_qualifier<S<V, Q>> {
+    static constexpr glm::qualifier value = Q;
+};
+template <class Sums> inline constexpr glm::qualifier Q_of = sums_qualifier<Sums>::value;
+
+#if defined(__GNUC__) || defined(__clang__)
+#  define PHONG_BATCH_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#  define PHONG_BATCH_ALWAYS_INLINE inline
+#endif
 /// Every light's terms added to the sums of one step, light j only in the lanes whose mask has
 /// bit j (bits: one mask per lane, 0 past the tail; null: every light in every lane). A light no
 /// lane sees is skipped; one that every point of the step sees is added as without masks; else
@@ -763,34 +776,40 @@ template <class V, class T> struct lane_visibility {
 /// the light left out) and a call without masks run the same compiled code. Which lanes see a
 /// light: one bit test of the W masks per light (AVX-512: two vector tests, the result a k-mask
 /// used as is; AVX2: a shift and a movemask per four lanes).
-#if defined(__GNUC__) || defined(__clang__)
-#  define PHONG_BATCH_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#  define PHONG_BATCH_ALWAYS_INLINE inline
-#endif
-template <features F, class V, class T, glm::qualifier Q, class Sums>
-PHONG_BATCH_ALWAYS_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
-                       const V& m, const std::uint64_t* bits, std::size_t count)
+/// each_visible_light calls add_light(sums, j) for every light j (light_count of them) by these
+/// rules; the frame and the route are the caller's (add_masked_lights: detail::add_light).
+template <class V, class T, class Sums, class AddLight>
+PHONG_BATCH_ALWAYS_INLINE void each_visible_light(Sums& sums, std::size_t light_count, const std::uint64_t* bits, std::size_t count,
+                                                  AddLight&& add_light)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
-    if constexpr (std::is_same_v<V, T>) { // scalar lanes (no xsimd): shade<F>'s own light loop
-        if (!bits) add_lights<F>(sums, s, lights, m);
-        else add_lights<F>(sums, s, masked(lights, bits[0]), m);
-        return;
-    }
     // Without masks every lane sees every light: the same loop (one call site of add_light, which
     // the compiler then inlines; with a second loop for this case g++ 12 kept add_light out of
     // line: 9 % more instructions in shade_lanes with masks, AVX2, 1 light).
     const std::uint32_t live = count >= W ? std::uint32_t((std::uint64_t(1) << W) - 1) : std::uint32_t((1u << count) - 1);
     const lane_visibility<V, T> visibility(bits);
-    const std::size_t n = bits ? std::min<std::size_t>(lights.size(), 64) : lights.size();
+    const std::size_t n = bits ? std::min<std::size_t>(light_count, 64) : light_count;
     for (std::size_t j = 0; j < n; ++j) {
         const std::uint32_t seeing = bits ? visibility.lanes_seeing(j) : live;
         if (!seeing) continue;
         const bool partial = seeing != live;
         const Sums before = sums;
-        detail::add_light<F>(sums, s, lights[j], m);
-        if (partial) sums = select_sums<V, Q>(lane_visibility<V, T>::mask(seeing), sums, before);
+        add_light(sums, j);
+        if (partial) sums = select_sums<V, Q_of<Sums>>(lane_visibility<V, T>::mask(seeing), sums, before);
+    }
+}
+
+template <features F, class V, class T, glm::qualifier Q, class Sums>
+PHONG_BATCH_ALWAYS_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
+                       const V& m, const std::uint64_t* bits, std::size_t count)
+{
+    if constexpr (std::is_same_v<V, T>) { // scalar lanes (no xsimd): shade<F>'s own light loop
+        if (!bits) add_lights<F>(sums, s, lights, m);
+        else add_lights<F>(sums, s, masked(lights, bits[0]), m);
+        return;
+    } else {
+        each_visible_light<V, T>(sums, lights.size(), bits, count,
+                                 [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], m); });
     }
 }
 
@@ -809,6 +828,15 @@ inline constexpr features ambient_hoisted = [] {
     g.light_ambient = false;
     return g;
 }();
+
+/// Whether shade_batch runs F on lanes V through detail/stable_lanes.hpp (the stable mode on
+/// float lanes of x86).
+template <features F, class V> inline constexpr bool stable_lanes_route =
+#if PHONG_STABLE_LANES
+    F.mode == evaluation::stable && stable_lanes::applies<V>;
+#else
+    false;
+#endif
 
 #if defined(__GNUC__) || defined(__clang__)
 #  define PHONG_BATCH_NOINLINE __attribute__((noinline, flatten))
@@ -832,11 +860,34 @@ inline constexpr features ambient_hoisted = [] {
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
 PHONG_BATCH_NOINLINE color<F, V, Q> shade_lanes(const glm::vec<3, V, Q>& position, const glm::vec<3, V, Q>& normal,
                                                 const glm::vec<3, V, Q>& view, const mask_t<V>& front, const material<V, Q>& mat,
-                                                std::span<const light<V, Q>> lights, const environment<V, Q>& env,
-                                                const std::uint64_t* bits, std::size_t count)
+                                                std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
+                                                const environment<V, Q>& env, const std::uint64_t* bits, std::size_t count)
 {
+    using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
+#if PHONG_STABLE_LANES
+    if constexpr (stable_lanes_route<F, V>) {
+        // The stable mode's geometry in double lanes (detail/stable_lanes.hpp), unless a lane's
+        // shininess is above that route's limit: then the twofold route below.
+        if (!xsimd::any(mat.shininess > V(stable_lanes::max_shininess))) {
+            const stable_lanes::surface_frame<V, Q> s = stable_lanes::prepare<F>(position, normal, view, env, front);
+            Sums sums{};
+            if constexpr (Folded) sums.total = env.ambient;
+            const auto run = [&]<features G>() {
+                each_visible_light<V, T>(sums, lights.size(), bits, count, [&](Sums& step_sums, std::size_t j) {
+                    stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
+                });
+                return finish<G>(sums, s, mat, env);
+            };
+            if constexpr (Folded && ambient_hoistable<F>)
+                if (!bits) return run.template operator()<ambient_hoisted<F>>();
+            return run.template operator()<F>();
+        }
+    }
+#else
+    (void)wide_lights;
+#endif
     const frame_t<F, V, Q> s = prepare<F>(position, normal, view, env, front);
-    std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>> sums{};
+    Sums sums{};
     if constexpr (Folded) sums.total = env.ambient;
     if constexpr (Folded && ambient_hoistable<F>) {
         if (!bits) {
@@ -884,7 +935,8 @@ template <class V, class T, glm::qualifier Q> struct per_point_lanes {
 /// material lanes (shared_lanes, per_point_lanes or table_lanes).
 template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
 void shade_points_step(std::size_t i, std::size_t count, const Points& points, const MaterialLanes& materials,
-                       std::span<const light<V, Q>> lights, const environment<V, Q>& env, const Output& out)
+                       std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
+                       const environment<V, Q>& env, const Output& out)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     using vec3 = glm::vec<3, T, Q>;
@@ -915,7 +967,7 @@ void shade_points_step(std::size_t i, std::size_t count, const Points& points, c
     }
     color<F, V, Q> c;
     materials.with_step(i, count, [&](const material<V, Q>& mat) {
-        c = shade_lanes<F, V, T, Q, folded>(position, normal, view, front, mat, lights, env, bits, count);
+        c = shade_lanes<F, V, T, Q, folded>(position, normal, view, front, mat, lights, wide_lights, env, bits, count);
     });
 
     constexpr int channels = F.alpha ? 4 : 3;
@@ -1154,11 +1206,17 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     if constexpr (std::is_same_v<Materials, material<T, Q>>) fold = foldable(materials, lights);
     const std::vector<light<V, Q>> lane_lights = lane_lights_of<V>(lights, materials, fold);
     const std::span<const light<V, Q>> lane_span(lane_lights);
+    std::vector<light<double, Q>> wide_lights; // the lights in double, for stable_lanes_route
+    if constexpr (stable_lanes_route<F, V>) {
+        wide_lights.reserve(lights.size());
+        for (const light<T, Q>& L : lights) wide_lights.push_back(splat<double>(L));
+    }
+    const std::span<const light<double, Q>> wide_span(wide_lights);
     const environment<V, Q> lane_env = lane_environment<F, V>(env, materials, lights, !points.light_masks.empty(), fold);
     const auto run = [&](const auto& material_lanes) {
         std::size_t i = 0;
-        for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, material_lanes, lane_span, lane_env, out);
-        if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, material_lanes, lane_span, lane_env, out);
+        for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, material_lanes, lane_span, wide_span, lane_env, out);
+        if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, material_lanes, lane_span, wide_span, lane_env, out);
     };
     if constexpr (std::is_same_v<Materials, material<T, Q>>) {
         if (fold) run(shared_lanes<V, Q>{splat<V>(materials)});
@@ -1253,8 +1311,9 @@ void shade_batch(const soa3<T>& positions, const soa3<T>& normals, std::span<con
 /// a light whose bit is clear gives that point nothing, its ambient term included, exactly as if
 /// it were removed), front_facing only for facing::flag. Every other argument, the kernels,
 /// edges, NaN policy and accuracy are those of the shade_batch overloads above; masks and views
-/// change no other lane's result (but with features::stable_twofold_above > 0 the stable mode
-/// picks its depth per step from every lane).
+/// change no other lane's result (but the stable mode picks its route per step from every lane:
+/// the twofold route where any lane's shininess is above 2^20 on float lanes, and its depth with
+/// features::stable_twofold_above > 0).
 /// lights, materials and out are spans (a std::vector converts); N = the number of positions.
 /// Pre (debug assertions): normals, and views with view_model::given, N long (views empty
 /// otherwise); front_facing and light_masks empty or N long; out at least N long; per-point

@@ -72,9 +72,12 @@ enum class evaluation : unsigned char { exact, stable, fast };
 /// float input is exact in double, no square of a float overflows or underflows there, and double
 /// carries 29 more bits than float, so the colour is float's correct rounding of the model but for
 /// near-ties (about 0.5 ulp). The default: on CPUs it is the fastest and most accurate choice.
-/// T without a wider hardware type (double, SIMD batches) takes `twofold`. `twofold`: T arithmetic
-/// with power-of-two rescaled vectors and twofold unit vectors, n.l and chords (detail/twofold.hpp);
-/// for GPU code, where double runs at a fraction of float's rate.
+/// T without a wider hardware type (double, double SIMD batches) takes `twofold`. `twofold`: T
+/// arithmetic with power-of-two rescaled vectors and twofold unit vectors, n.l and chords
+/// (detail/twofold.hpp); for GPU code, where double runs at a fraction of float's rate. Float SIMD
+/// batches on x86 (shade_batch) read neither: their geometry runs in double lanes and the power
+/// in float (detail/stable_lanes.hpp), held to the twofold bounds; steps with a shininess above
+/// 2^20 in any lane take the twofold route.
 enum class stable_precision : unsigned char { wider, twofold };
 
 /// Everything shade<F> can compute. Defaults: seed 000's classic model with one ambient term,
@@ -101,6 +104,8 @@ struct features {
     /// grows like sqrt(m) eps. With M = 256, float, 2000 scenes per input class against __float128
     /// (tests/stable_hybrid.test.cpp): well-conditioned p99 2.6 ulp, max 16 ulp; worst class max
     /// 50 ulp, max relative 3.5e-6; every target of the stable mode met. Higher m stays twofold.
+    /// Not read by float SIMD batches on x86 (their double-lane route is faster and more accurate
+    /// than either depth) but for steps with m above 2^20, which take the twofold route.
     unsigned stable_twofold_above = 0;
     /// The normal (and, for view_model::given, the view vector) come at unit length: used as
     /// given, with no normalization and no length guards (checked in debug builds). For the

@@ -94,7 +94,9 @@ PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T
 /// not attenuated. U is the light's own scalar type: float lights shaded in double keep float's
 /// cap on f (attenuation.hpp), so a light at Q gives the same large finite value as in float.
 /// visibility: unweighted, or the caller's weight in [0, 1] (phong::weighted: soft shadows).
-template <features F, class T, glm::qualifier Q, class U, class W>
+/// Cap: the scalar type whose cap applies (U's; float lights widened to double by the caller
+/// name float here, detail/stable_lanes.hpp).
+template <features F, class T, glm::qualifier Q, class U, class W, class Cap = U>
 PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
                                   [[maybe_unused]] const glm::vec<3, T, Q>& l, [[maybe_unused]] W visibility)
 {
@@ -105,7 +107,7 @@ PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T dista
             fa = phong::attenuation_polynomial(distance, T(L.attenuation.constant), T(L.attenuation.linear), T(L.attenuation.quadratic));
         else
             fa = phong::attenuation_windowed(distance, T(L.attenuation.range));
-        if constexpr (!std::is_same_v<U, T>) fa = phong::min(fa, T(1 / attenuation_denominator_min<U>));
+        if constexpr (!std::is_same_v<Cap, T>) fa = phong::min(fa, T(1 / attenuation_denominator_min<Cap>));
         if constexpr (F.lights == light_kind::any) f = phong::select(w > T(0), fa, T(1));
         else f = fa;
     }
