@@ -189,4 +189,43 @@ TEST_CASE("shade_batch's float power: edges")
     CHECK(std::isfinite(r));
     CHECK(r <= std::numeric_limits<float>::min());
 }
+
+#if PHONG_STABLE_LANES
+TEST_CASE("stable_lanes: float lanes split to double and back exactly; the double 1/sqrt within 3 ulp over the float-derived range")
+{
+    namespace sl = phong::detail::stable_lanes;
+    using D = sl::double_t<V>;
+    constexpr std::size_t H = W / 2;
+    // split/join: lane k of the float batch is lane k % H of half k / H, exactly (floats are
+    // doubles); join rounds each lane once (exact here: the values came from floats).
+    alignas(64) float in[W], back[W];
+    for (std::size_t k = 0; k < W; ++k) in[k] = std::ldexp(1.0f + float(k) / 64, int(k) * 9 - 70); // 2^-70 .. 2^65
+    in[1] = std::numeric_limits<float>::denorm_min();
+    const sl::halves<V> h = sl::split(V::load_aligned(in));
+    alignas(64) double lo[H], hi[H];
+    h.lo.store_aligned(lo);
+    h.hi.store_aligned(hi);
+    for (std::size_t k = 0; k < H; ++k) {
+        CHECK(lo[k] == double(in[k]));
+        CHECK(hi[k] == double(in[H + k]));
+    }
+    sl::join<V>(h.lo, h.hi).store_aligned(back);
+    for (std::size_t k = 0; k < W; ++k) CHECK(back[k] == in[k]);
+
+    // 1/sqrt(x) against the wide type's, log-uniform over [2^-298, 2^257] (the squares of float
+    // differences) and at its ends; the documented bound is 3 u of double.
+    std::mt19937_64 rng(20261124);
+    double worst = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const double e = std::uniform_real_distribution<double>(-298, 257)(rng);
+        const double x = i == 0 ? 0x1p-298 : i == 1 ? 0x1.fffffffffffffp256 : std::exp2(e);
+        alignas(64) double y[H];
+        sl::rsqrt_normal(D(x)).store_aligned(y);
+        const phong_test::wide exact = phong_test::wide(1) / phong_test::wsqrt(phong_test::wide(x));
+        worst = std::max(worst, double(phong_test::wabs(phong_test::wide(y[0]) - exact) / exact) / 0x1p-53);
+    }
+    MESSAGE("stable_lanes rsqrt_normal (double): worst " << worst << " u");
+    CHECK(worst <= 3.0);
+}
+#endif
 #endif
