@@ -328,8 +328,10 @@ std::vector<std::uint32_t> step_patterned_ids(scene_gen<float>& gen, std::size_t
 /// shade_batch with a material_table equals the per-point overload given materials[ids[i]],
 /// bit for bit (the same lane values, so the same compiled kernel gives the same bits): every
 /// layout pair, light masks on, every tail length, ids in uniform, nearly uniform and mixed
-/// steps. The per-point overload is itself checked against shade<F> above.
-template <class T, features F> void check_material_table(std::uint64_t seed)
+/// steps. The per-point overload is itself checked against shade<F> above. table_size: 5 (a table
+/// of at most batch_width entries: float lanes take mixed steps by in-register permutes) or more
+/// than batch_width (gathers).
+template <class T, features F> void check_material_table(std::uint64_t seed, int table_size = 5)
 {
     constexpr bool given = F.view == view_model::given;
     constexpr std::size_t W = batch_width<T>;
@@ -340,10 +342,10 @@ template <class T, features F> void check_material_table(std::uint64_t seed)
     for (std::size_t count : {std::size_t(0), std::size_t(1), W - 1, W, W + 1, 3 * W + 5, std::size_t(61), 9 * W + 2}) {
         const batch_case<T> c(gen, F, count, 1 + gen.integer(0, 4));
         std::vector<material<T>> table;
-        for (int j = 0; j < 5; ++j) {
+        for (int j = 0; j < table_size; ++j) {
             material<T> m = gen.material(1, 100);
             m.emission = glm::vec<3, T>(T(0.01) * T(j), T(0.02) * T(j), T(0.03)); // every field differs between entries
-            m.alpha = T(0.5) + T(0.1) * T(j);
+            m.alpha = T(0.5) + T(0.5) * T(j) / T(table_size); // in [0.5, 1)
             table.push_back(m);
         }
         const std::vector<std::uint32_t> ids = step_patterned_ids(id_gen, count, W, int(table.size()));
@@ -383,6 +385,7 @@ TEST_CASE_TEMPLATE("shade_batch: a material table with per-point ids equals per-
     check_material_table<T, input_feature_sets[7]>(9002); // stable, Blinn, smooth spot, facing flags, emission, alpha
     check_material_table<T, presets::classic_phong>(9003);
     check_material_table<T, presets::glsl_ads>(9004);
+    check_material_table<T, presets::raytracer_phong>(9005, int(batch_width<T>) + 3); // past the permutable size: gathers
 }
 
 TEST_CASE_TEMPLATE("shade_batch: material_table on hand-made points", T, float, double)

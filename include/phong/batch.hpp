@@ -290,8 +290,9 @@ template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
 /// materials[ids[i]], bit for bit as the overloads that take one material per point would with
 /// that material, without copying a material per point: the table goes to SIMD lanes once per
 /// call; a step whose points all have one id (coherent primary hits: most steps) uses those
-/// lanes as they are, and a step of mixed ids gathers each field from the table (AVX-512 and
-/// AVX2: one gather instruction per field).
+/// lanes as they are, and a step of mixed ids takes each field from the table: with float lanes
+/// and at most batch_width<float> entries (16 with AVX-512, 8 with AVX2), one in-register
+/// permute per field; else one gather instruction per field (AVX-512 and AVX2).
 ///   materials: the table, validate() for each entry; not empty when there are points;
 ///   ids: N indices (N = the number of points), each < materials.size().
 /// Pre (debug assertions through the precondition handler): ids N long, every id in the
@@ -484,6 +485,56 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
     std::span<const material<T, Q>> table;
     std::span<const std::uint32_t> ids;
     std::vector<material<V, Q>> splatted; ///< table[j] in every lane
+    /// A table of at most W entries (float lanes, AVX-512 or AVX2; empty otherwise): field f of
+    /// entry j in lane j (the last entry repeated past the table). A step of mixed ids then takes
+    /// each field with one in-register permute by id instead of a gather from memory (a scene's
+    /// few materials: 14 permutes against 14 gathers, the same values).
+    std::vector<V> columns;
+
+    /// The lanes of field f of table[id[k]] in lane k, from columns (ids: W clamped ids in a register).
+    template <class Ids> material<V, Q> permuted([[maybe_unused]] const Ids& id) const
+    {
+        V field[14];
+        for (int f = 0; f < 14; ++f) {
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+            if constexpr (avx512_lanes<V, T> && std::is_same_v<T, float>) field[f] = V(_mm512_permutexvar_ps(id, columns[std::size_t(f)]));
+#endif
+#if PHONG_HAS_XSIMD && defined(__AVX2__) && !defined(__AVX512F__)
+            if constexpr (avx2_float_lanes<V, T>) field[f] = V(_mm256_permutevar8x32_ps(columns[std::size_t(f)], id));
+#endif
+        }
+        return {{field[0], field[1], field[2]}, {field[3], field[4], field[5]}, {field[6], field[7], field[8]},
+                {field[9], field[10], field[11]}, field[12], field[13]};
+    }
+    /// Fills columns when the table is small enough and the lanes have the permute (see columns).
+    void make_columns()
+    {
+        constexpr std::size_t W = sizeof(V) / sizeof(T);
+        constexpr bool permutable =
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+            avx512_lanes<V, T> && std::is_same_v<T, float>;
+#elif PHONG_HAS_XSIMD && defined(__AVX2__)
+            avx2_float_lanes<V, T>;
+#else
+            false;
+#endif
+        if constexpr (permutable) {
+            if (table.empty() || table.size() > W) return;
+            alignas(64) T lane[14][W];
+            for (std::size_t k = 0; k < W; ++k) {
+                const material<T, Q>& m = table[std::min(k, table.size() - 1)];
+                for (int c = 0; c < 3; ++c) {
+                    lane[c][k] = m.ka[c];
+                    lane[3 + c][k] = m.kd[c];
+                    lane[6 + c][k] = m.ks[c];
+                    lane[9 + c][k] = m.emission[c];
+                }
+                lane[12][k] = m.shininess;
+                lane[13][k] = m.alpha;
+            }
+            for (int f = 0; f < 14; ++f) columns.push_back(load<V>(lane[f]));
+        }
+    }
 
     /// Calls use(material<V, Q> const&) with the lanes of points i .. i + count - 1.
     template <class Use> void with_step(std::size_t i, std::size_t count, Use&& use) const
@@ -497,6 +548,7 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
                 const std::uint32_t first = std::min(id[0], last);
                 const __m512i clamped = _mm512_min_epu32(_mm512_loadu_si512(id), _mm512_set1_epi32(int(last)));
                 if (_mm512_cmpneq_epi32_mask(clamped, _mm512_set1_epi32(int(first))) == 0) return use(splatted[first]);
+                if (!columns.empty()) return use(permuted(clamped));
                 alignas(64) std::uint32_t element[W];
                 _mm512_store_si512(element, clamped);
                 return use(gather<V, true>(table.data(), element));
@@ -509,6 +561,7 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
                 const std::uint32_t first = std::min(id[0], last);
                 const __m256i clamped = _mm256_min_epu32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(id)), _mm256_set1_epi32(int(last)));
                 if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(clamped, _mm256_set1_epi32(int(first)))) == -1) return use(splatted[first]);
+                if (!columns.empty()) return use(permuted(clamped));
                 alignas(32) std::uint32_t element[W];
                 _mm256_store_si256(reinterpret_cast<__m256i*>(element), clamped);
                 return use(gather<V, true>(table.data(), element));
@@ -1164,9 +1217,10 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
         if (fold) run(shared_lanes<V, Q>{splat<V>(materials)});
         else run(unfolded_shared_lanes<V, Q>{splat<V>(materials)});
     } else if constexpr (std::is_same_v<Materials, material_table<T, Q>>) {
-        table_lanes<V, T, Q> lanes{materials.materials, materials.ids, {}};
+        table_lanes<V, T, Q> lanes{materials.materials, materials.ids, {}, {}};
         lanes.splatted.reserve(materials.materials.size());
         for (const material<T, Q>& m : materials.materials) lanes.splatted.push_back(splat<V>(m));
+        lanes.make_columns();
         run(lanes);
     } else {
         run(per_point_lanes<V, T, Q>{materials});
@@ -1207,6 +1261,8 @@ void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Ma
 /// would otherwise overwrite points before they are read. Lights, a shared material and env are
 /// copied before the first store and may alias anything.
 /// Edges and NaN policy: those of shade<F>, point by point.
+/// Lights: a span of light<T> (they go to SIMD lanes once per call). A renderer's own light type
+/// (light_traits, light.hpp): convert the list once per call with to_light, not per point.
 /// Accuracy: within the published bound of F.mode (phong/accuracy.hpp), tested against the
 /// __float128 reference; against the scalar shade<F> the results differ by the SIMD rsqrt
 /// estimate (< 2 ulp, float lanes) and the exp/log implementations, amplified by the exponent m in
