@@ -49,7 +49,7 @@ struct light {
 };
 
 /// How shade<F> reads a light of type L: the specialization point for a renderer's own light type
-/// (the adaptor of issue 13), so that its light list goes to shade<F> as it is, nothing copied into
+/// (an adaptor), so that its light list goes to shade<F> as it is, nothing copied into
 /// a light<T> per point. light<T, Q> has one (below); any other type has none: shade<F> then
 /// stops with a static_assert that names light_traits. A specialization has static functions
 /// (PHONG_HD ones for CUDA device code), each returning a value or a reference:
