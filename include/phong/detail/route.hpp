@@ -31,10 +31,11 @@ PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, c
     else return exact::prepare<F>(position, normal, given_view, env, front_facing);
 }
 
-/// One light's terms added to the sums, by F's route (U: the light's scalar type; visibility:
-/// unweighted, or a weight that multiplies f).
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class W = unweighted>
-PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, T m,
+/// One light's terms added to the sums, by F's route (U: the light's scalar type; m: the shininess,
+/// T, or exact::integer_exponent<T> in the fast mode's SIMD lanes; visibility: unweighted, or a
+/// weight that multiplies f).
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class Exponent, class W = unweighted>
+PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, const Exponent& m,
                                   W visibility = {})
 {
     if constexpr (F.mode == evaluation::stable) stable::add_light<F>(sums, s, L, m, visibility);
