@@ -884,7 +884,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_lanes<V, Q>* in, std::size_t st
         const T m0 = mat.shininess.get(0);
         if (m0 >= T(0) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
             math_traits<V>::all(mat.shininess == V(m0)))
-            return run(exact::integer_exponent<V>{mat.shininess, unsigned(m0)});
+            return run(exact::integer_exponent<V>{unsigned(m0)});
     }
     if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
         run(exact::lane_shininess<V>{mat.shininess, mat.shininess == V(T(0))}); // m == 0 tested once

@@ -159,8 +159,7 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
 /// fast::pow_integer (binary powering: five multiplications for n = 32, against two polynomials),
 /// within the fast power's bound (fast::pow_integer_max_rel <= fast::pow_unit_max_rel).
 template <class T> struct integer_exponent {
-    T m;        ///< n in every lane
-    unsigned n; ///< the exponent
+    unsigned n; ///< the shininess of every lane
 };
 template <evaluation M, class T>
 PHONG_HD constexpr T route_cosine_power(T x, T scale, const integer_exponent<T>& m)
@@ -236,7 +235,8 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 
 /// One light's terms added to the sums. U is the light's scalar type (U = T, or float lights in
 /// double arithmetic: the stable mode's wider route); visibility: unweighted or a weight in [0, 1];
-/// m: the shininess, T (or integer_exponent<T>: the fast mode on SIMD lanes).
+/// m: the shininess, T (SIMD lanes in shade_batch: lane_shininess<T>, or integer_exponent<T> in
+/// the fast mode).
 /// Dot products are taken with d = L.xyz - w Q itself and scaled by 1/|d| only for lit pairs:
 /// the signs that decide the branches do not wait for a square root and a division.
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class Exponent, class W>

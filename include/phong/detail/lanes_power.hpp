@@ -107,9 +107,9 @@ template <class V> PHONG_LANES_POWER_INLINE V exp2_nonpositive(const V& y_in)
     return mantissa * xsimd::bitwise_cast<V>(field);
 }
 
-/// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound).
-/// x^m as pow_unit below, with m_is_zero = (m == 0) given: a caller whose m is the same for many
-/// x (the light loop of shade_batch) computes it once.
+/// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound),
+/// with m_is_zero = (m == 0) given: a caller whose m is the same for many x (the light loop of
+/// shade_batch) computes it once.
 template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m, const typename V::batch_bool_type& m_is_zero)
 {
     V e;
@@ -119,6 +119,7 @@ template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m, c
     return xsimd::select(x > V(0.0f) || m_is_zero, power, V(0.0f));
 }
 
+/// x^m lane-wise for x in [0, 1], m >= 0 finite.
 template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m) { return pow_unit(x, m, m == V(0.0f)); }
 
 /// The documented relative error bound of pow_one_minus below, for y = m log2(1 - x) (results

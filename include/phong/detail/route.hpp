@@ -32,7 +32,7 @@ PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, c
 }
 
 /// One light's terms added to the sums, by F's route (U: the light's scalar type; m: the shininess,
-/// T, or exact::integer_exponent<T> in the fast mode's SIMD lanes; visibility: unweighted, or a
+/// T, or exact::lane_shininess<T> / integer_exponent<T> in shade_batch's lanes; visibility: unweighted, or a
 /// weight that multiplies f).
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class Exponent, class W = unweighted>
 PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, const Exponent& m,
