@@ -127,6 +127,12 @@ struct math_traits<xsimd::batch<T, A>> {
         if constexpr (float_lanes) return detail::lanes::pow_unit(x, m);
         else return pow(x, m);
     }
+    /// pow_unit with m_is_zero = (m == 0) given (computed once per call by shade_batch).
+    PHONG_LANES_INLINE static V pow_unit(const V& x, const V& m, const mask& m_is_zero)
+    {
+        if constexpr (float_lanes) return detail::lanes::pow_unit(x, m, m_is_zero);
+        else return pow(x, m);
+    }
     /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
     /// xsimd's kernels (exp clamped as above: m log1p(-x) reaches -1e30 and below for the
     /// shininess validate accepts); x >= 1 gives 0, and 1 for m = 0.
@@ -821,9 +827,9 @@ template <class V, class T> struct lane_visibility {
 #else
 #  define PHONG_BATCH_ALWAYS_INLINE inline
 #endif
-template <features F, class V, class T, glm::qualifier Q, class Sums>
+template <features F, class V, class T, glm::qualifier Q, class Sums, class Exponent>
 PHONG_BATCH_ALWAYS_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
-                       const V& m, const std::uint64_t* bits, std::size_t count)
+                       const Exponent& m, const std::uint64_t* bits, std::size_t count)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     if constexpr (std::is_same_v<V, T>) { // scalar lanes (no xsimd): shade<F>'s own light loop
@@ -869,37 +875,75 @@ inline constexpr features ambient_hoisted = [] {
 #  define PHONG_BATCH_NOINLINE
 #endif
 
-/// The lanes' colour: prepare, every (visible) light, finish. Not inlined, on purpose: every
-/// layout (soa3, soa_points, aos_points; either output) calls this one compiled function, so the
-/// compiler's choices (FMA contraction above all) are the same for all of them and the layouts
-/// agree bit for bit (inlined, AoS and SoA differed by an ulp at -march=native). Flattened: every
-/// call inside (the light loop's add_light, the power, xsimd's kernels) is inlined into it, so
-/// the point's frame and sums stay in registers across the light loop (before, add_light was
-/// a call per light per step with its operands in memory: batch exact took 1.5x to 2.6x the
-/// hand-written kernel's time, now 1.1x to 1.6x; benchmarks/hand_simd.bench.cpp).
-/// bits: W light masks (0 past the tail), or null. Folded: the lights carry the material's ka, kd
-/// and ks (one material for all points, shade_points_impl): folded_sums, else light_sums.
-/// Folded, env.ambient is not the scene's ambient but the colour's point-independent part,
-/// emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the loop runs
-/// without the lights' ambient terms); the sums start from it.
+/// The lanes of one batch step: W points' position, normal, view vector (set and read only with
+/// view_model::given) and front-facing flags.
+template <class V, glm::qualifier Q> struct step_lanes {
+    glm::vec<3, V, Q> position;
+    glm::vec<3, V, Q> normal;
+    glm::vec<3, V, Q> view;
+    mask_t<V> front;
+};
+
+/// Steps per call of shade_lanes (one material for all points): the per-call work (entry, the
+/// hoisted constants, the return) is shared by that many steps, and the out-of-order core
+/// overlaps one step's long dependent chain (normalizations, the power's polynomial) with the
+/// next step's, which a call per step kept apart (batch exact at K = 1: 1.4x the hand-written
+/// kernel's time with a call per step; docs/batch.md).
+inline constexpr std::size_t steps_per_call = 8;
+
+/// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
+/// steps (out[k] from in[k]). Not inlined, on purpose: every layout (soa3, soa_points,
+/// aos_points; either output) calls this one compiled function, so the compiler's choices (FMA
+/// contraction above all) are the same for all of them and the layouts agree bit for bit
+/// (inlined, AoS and SoA differed by an ulp at -march=native). Flattened: every call inside
+/// (the light loop's add_light, the power, xsimd's kernels) is inlined into it, so the point's
+/// frame and sums stay in registers across the light loop (before, add_light was a call per
+/// light per step with its operands in memory: batch exact took 1.5x to 2.6x the hand-written
+/// kernel's time; benchmarks/hand_simd.bench.cpp).
+/// bits: W light masks per step (step k's at bits + k W; 0 past the tail), or null; count: the
+/// live lanes of each step (W, or a tail's count with steps = 1). Folded: the lights carry the
+/// material's ka, kd and ks (one material for all points, shade_points_impl): folded_sums, else
+/// light_sums. Folded, env.ambient is not the scene's ambient but the colour's point-independent
+/// part, emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the
+/// loop runs without the lights' ambient terms); the sums start from it.
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
-PHONG_BATCH_NOINLINE color<F, V, Q> shade_lanes(const glm::vec<3, V, Q>& position, const glm::vec<3, V, Q>& normal,
-                                                const glm::vec<3, V, Q>& view, const mask_t<V>& front, const material<V, Q>& mat,
-                                                std::span<const light<V, Q>> lights, const environment<V, Q>& env,
-                                                const std::uint64_t* bits, std::size_t count)
+PHONG_BATCH_NOINLINE void shade_lanes(const step_lanes<V, Q>* in, std::size_t steps, color<F, V, Q>* out,
+                                      const material<V, Q>& mat, std::span<const light<V, Q>> lights,
+                                      const environment<V, Q>& env, const std::uint64_t* bits, std::size_t count)
 {
-    const frame_t<F, V, Q> s = prepare<F>(position, normal, view, env, front);
-    std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>> sums{};
-    if constexpr (Folded) sums.total = env.ambient;
-    if constexpr (Folded && ambient_hoistable<F>) {
-        if (!bits) {
-            constexpr features G = ambient_hoisted<F>;
-            add_masked_lights<G, V, T, Q>(sums, s, lights, mat.shininess, bits, count);
-            return finish<G>(sums, s, mat, env);
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
+    using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
+    const auto run = [&](const auto& m) { // m: the shininess (V, exact::lane_shininess<V> or exact::integer_exponent<V>)
+        for (std::size_t k = 0; k < steps; ++k) {
+            const std::uint64_t* step_bits = bits ? bits + k * W : nullptr;
+            const frame_t<F, V, Q> s = prepare<F>(in[k].position, in[k].normal, in[k].view, env, in[k].front);
+            Sums sums{};
+            if constexpr (Folded) sums.total = env.ambient;
+            if constexpr (Folded && ambient_hoistable<F>) {
+                if (!step_bits) {
+                    constexpr features G = ambient_hoisted<F>;
+                    add_masked_lights<G, V, T, Q>(sums, s, lights, m, step_bits, count);
+                    out[k] = finish<G>(sums, s, mat, env);
+                    continue;
+                }
+            }
+            add_masked_lights<F, V, T, Q>(sums, s, lights, m, step_bits, count);
+            out[k] = finish<F>(sums, s, mat, env);
         }
+    };
+    if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) {
+        // One integer shininess in every lane (a shared material, or a step of equal ones):
+        // the fast power by binary powering, decided here once rather than per pair.
+        const T m0 = mat.shininess.get(0);
+        if (m0 >= T(0) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
+            math_traits<V>::all(mat.shininess == V(m0)))
+            return run(exact::integer_exponent<V>{unsigned(m0)});
     }
-    add_masked_lights<F, V, T, Q>(sums, s, lights, mat.shininess, bits, count);
-    return finish<F>(sums, s, mat, env);
+    if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
+        run(exact::lane_shininess<V>{mat.shininess, mat.shininess == V(T(0))}); // m == 0 tested once
+    } else {
+        run(mat.shininess);
+    }
 }
 
 /// One material for every point: its lanes, splatted once per call (folded into the lights).
@@ -930,47 +974,33 @@ template <class V, class T, glm::qualifier Q> struct per_point_lanes {
     }
 };
 
-/// One batch step over points of any layout (soa_points, aos_points): shade_batch's kernel over
-/// `count` <= W points starting at index i. Full steps load SoA spans directly and AoS through
-/// a transpose; tails go through padded copies (the pad: Q = (0, 0, -1), n = v = (0, 0, 1),
-/// facing the eye). Light masks of a full step are read in place. `materials` gives the step's
-/// material lanes (shared_lanes, per_point_lanes or table_lanes).
-template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
-void shade_points_step(std::size_t i, std::size_t count, const Points& points, const MaterialLanes& materials,
-                       std::span<const light<V, Q>> lights, const environment<V, Q>& env, const Output& out)
+/// Loads the lanes of one batch step over points of any layout (soa_points, aos_points):
+/// `count` <= W points starting at index i. Full steps load SoA spans directly and AoS through a
+/// transpose; tails go through padded copies (the pad: Q = (0, 0, -1), n = v = (0, 0, 1), facing
+/// the eye).
+template <features F, class V, class Points, class T, glm::qualifier Q>
+void load_step(std::size_t i, std::size_t count, const Points& points, step_lanes<V, Q>& lanes)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     using vec3 = glm::vec<3, T, Q>;
-    const glm::vec<3, V, Q> position = load_vec3<V, Q>(points.positions, i, count, vec3(T(0), T(0), T(-1)));
-    const glm::vec<3, V, Q> normal = load_vec3<V, Q>(points.normals, i, count, vec3(T(0), T(0), T(1)));
-    glm::vec<3, V, Q> view(V(T(0)));
-    if constexpr (F.view == view_model::given) view = load_vec3<V, Q>(points.views, i, count, vec3(T(0), T(0), T(1)));
-    mask_t<V> front(true);
+    lanes.position = load_vec3<V, Q>(points.positions, i, count, vec3(T(0), T(0), T(-1)));
+    lanes.normal = load_vec3<V, Q>(points.normals, i, count, vec3(T(0), T(0), T(1)));
+    if constexpr (F.view == view_model::given) lanes.view = load_vec3<V, Q>(points.views, i, count, vec3(T(0), T(0), T(1)));
+    lanes.front = mask_t<V>(true);
     if constexpr (F.two_sided == facing::flag) {
         if (!points.front_facing.empty()) {
             alignas(64) T buf[W];
             for (std::size_t k = 0; k < W; ++k) buf[k] = k < count && !points.front_facing[i + k] ? T(0) : T(1);
-            front = load<V>(buf) > V(T(0));
+            lanes.front = load<V>(buf) > V(T(0));
         }
     }
+}
 
-    // One material for all points: shade_points_impl folded it into the lights.
-    constexpr bool folded = std::is_same_v<MaterialLanes, shared_lanes<V, Q>>;
-    alignas(64) std::uint64_t tail_bits[W]; // a tail's masks, 0 past count (full steps read them in place)
-    const std::uint64_t* bits = nullptr;
-    if (!points.light_masks.empty()) {
-        if (count == W) {
-            bits = points.light_masks.data() + i;
-        } else {
-            for (std::size_t k = 0; k < W; ++k) tail_bits[k] = k < count ? points.light_masks[i + k] : 0;
-            bits = tail_bits;
-        }
-    }
-    color<F, V, Q> c;
-    materials.with_step(i, count, [&](const material<V, Q>& mat) {
-        c = shade_lanes<F, V, T, Q, folded>(position, normal, view, front, mat, lights, env, bits, count);
-    });
-
+/// Stores the colours of one batch step (count <= W points from index i).
+template <features F, class V, class T, glm::qualifier Q, class Output>
+void store_step(const color<F, V, Q>& c, std::size_t i, std::size_t count, const Output& out)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
     constexpr int channels = F.alpha ? 4 : 3;
     if constexpr (std::is_same_v<Output, soa_rgba<T>>) {
         T* dst[4] = {out.r.data(), out.g.data(), out.b.data(), F.alpha ? out.a.data() : nullptr};
@@ -986,6 +1016,45 @@ void shade_points_step(std::size_t i, std::size_t count, const Points& points, c
     } else {
         store_interleaved<V, T>(c, out.data() + i, count);
     }
+}
+
+/// Up to steps_per_call batch steps from point i (steps full steps of W points, or one step of
+/// count < W points: a tail), through one call of shade_lanes. Light masks of full steps are
+/// read in place. `materials` gives each step's material lanes (shared_lanes, per_point_lanes or
+/// table_lanes); materials that differ per step go one step per call.
+template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
+void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, const Points& points,
+                        const MaterialLanes& materials, std::span<const light<V, Q>> lights,
+                        const environment<V, Q>& env, const Output& out)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
+    // One material for all points: shade_points_impl folded it into the lights.
+    constexpr bool folded = std::is_same_v<MaterialLanes, shared_lanes<V, Q>>;
+    constexpr bool shared = folded || std::is_same_v<MaterialLanes, unfolded_shared_lanes<V, Q>>;
+    step_lanes<V, Q> in[steps_per_call];
+    color<F, V, Q> c[steps_per_call];
+    for (std::size_t k = 0; k < steps; ++k) load_step<F, V, Points, T, Q>(i + k * W, count, points, in[k]);
+
+    alignas(64) std::uint64_t tail_bits[W]; // a tail's masks, 0 past count (full steps read them in place)
+    const std::uint64_t* bits = nullptr;
+    if (!points.light_masks.empty()) {
+        if (count == W) {
+            bits = points.light_masks.data() + i;
+        } else {
+            for (std::size_t k = 0; k < W; ++k) tail_bits[k] = k < count ? points.light_masks[i + k] : 0;
+            bits = tail_bits;
+        }
+    }
+    if constexpr (shared) {
+        shade_lanes<F, V, T, Q, folded>(in, steps, c, materials.lanes, lights, env, bits, count);
+    } else {
+        for (std::size_t k = 0; k < steps; ++k) {
+            materials.with_step(i + k * W, count, [&](const material<V, Q>& mat) {
+                shade_lanes<F, V, T, Q, folded>(in + k, 1, c + k, mat, lights, env, bits ? bits + k * W : nullptr, count);
+            });
+        }
+    }
+    for (std::size_t k = 0; k < steps; ++k) store_step<F, V, T, Q>(c[k], i + k * W, count, out);
 }
 
 /// The bytes [p, p + bytes) and [q, q + bytes_q) share at least one byte (std::less: a total
@@ -1191,8 +1260,8 @@ environment<V, Q> lane_environment(const environment<T, Q>& env, const Materials
 }
 
 /// shade_batch over soa_points or aos_points: preconditions checked (debug builds), lights,
-/// shared material (or a material table) and environment broadcast once, then one
-/// shade_points_step per W points. Materials: material<T, Q> (one for all), a span of N
+/// shared material (or a material table) and environment broadcast once, then
+/// shade_points_steps per steps_per_call W points. Materials: material<T, Q> (one for all), a span of N
 /// materials (one per point) or material_table<T, Q> (a table and N ids).
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
 void shade_points_impl(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
@@ -1210,8 +1279,12 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     const environment<V, Q> lane_env = lane_environment<F, V>(env, materials, lights, !points.light_masks.empty(), fold);
     const auto run = [&](const auto& material_lanes) {
         std::size_t i = 0;
-        for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, material_lanes, lane_span, lane_env, out);
-        if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, material_lanes, lane_span, lane_env, out);
+        for (; i + W <= n;) {
+            const std::size_t steps = std::min(steps_per_call, (n - i) / W);
+            shade_points_steps<F, V, Points, T, Q>(i, steps, W, points, material_lanes, lane_span, lane_env, out);
+            i += steps * W;
+        }
+        if (i < n) shade_points_steps<F, V, Points, T, Q>(i, 1, n - i, points, material_lanes, lane_span, lane_env, out);
     };
     if constexpr (std::is_same_v<Materials, material<T, Q>>) {
         if (fold) run(shared_lanes<V, Q>{splat<V>(materials)});

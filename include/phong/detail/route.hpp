@@ -33,9 +33,10 @@ PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, c
 }
 
 /// One light's terms added to the sums, by F's route (Light: a light_source, light.hpp, read
-/// through light_traits; visibility: unweighted, or a weight that multiplies f).
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class W = unweighted>
-PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const Light& L, T m,
+/// through light_traits; m: the shininess, T, or exact::lane_shininess<T> / integer_exponent<T> in
+/// shade_batch's lanes; visibility: unweighted, or a weight that multiplies f).
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent, class W = unweighted>
+PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const Light& L, const Exponent& m,
                                   W visibility = {})
 {
     if constexpr (F.mode == evaluation::stable) stable::add_light<F>(sums, s, L, m, visibility);
