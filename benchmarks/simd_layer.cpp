@@ -29,6 +29,7 @@ template <> struct math_traits<SV> {
     static V fma(const V& a, const V& b, const V& c) { return stdx::fma(a, b, c); }
     static V select(const mask& m, const V& a, const V& b) { V r = b; stdx::where(m, r) = a; return r; }
     static bool any(const mask& m) { return stdx::any_of(m); }
+    static bool all(const mask& m) { return stdx::all_of(m); }
     static mask both(const mask& a, const mask& b) { return a && b; }
     static V abs(const V& x) { return stdx::abs(x); }
     static V min(const V& a, const V& b) { return stdx::min(a, b); }

@@ -215,6 +215,38 @@ template <class T, features F> void check_masked_equals_removed(std::uint64_t se
     }
 }
 
+/// shade_lanes takes up to steps_per_call steps per call: a long call (several calls of several
+/// steps, masked or not, SoA and AoS) gives each point the bits that point gets shaded alone (a
+/// tail of one point: a call of one step). Lanes are independent, so the position of a point in
+/// its step and of a step in its call must not matter.
+template <class T, features F> void check_long_call_equals_points_alone(std::uint64_t seed, bool integer_shininess = false)
+{
+    constexpr bool given = F.view == view_model::given;
+    constexpr std::size_t W = batch_width<T>;
+    scene_gen<T> gen(seed);
+    const std::size_t count = (2 * detail::steps_per_call + 3) * W + 5; // three calls, the last one short, and a tail
+    batch_case<T> c(gen, F, count, 3);
+    // An integer shininess: the fast mode's lanes then take fast::pow_integer.
+    if (integer_shininess) c.base.mat.shininess = std::round(std::min(c.base.mat.shininess, T(64)));
+    for (bool masked : {false, true}) {
+        std::vector<color<F, T>> soa_out(count), aos_out(count);
+        shade_batch<F>(c.soa(given, masked), c.base.mat, c.base.lights, std::span<color<F, T>>(soa_out), c.base.env);
+        shade_batch<F>(c.aos(given, masked), c.base.mat, c.base.lights, std::span<color<F, T>>(aos_out), c.base.env);
+        std::size_t same = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            std::vector<color<F, T>> alone(1);
+            const bool front = c.front[i];
+            aos_points<T> one{std::span(&c.p[i], 1), std::span(&c.n[i], 1), {}, std::span(&front, 1), {}};
+            if (given) one.views = std::span(&c.v[i], 1);
+            if (masked) one.light_masks = std::span(&c.masks[i], 1);
+            shade_batch<F>(one, c.base.mat, c.base.lights, std::span<color<F, T>>(alone), c.base.env);
+            same += soa_out[i] == alone[0] && aos_out[i] == alone[0];
+        }
+        CAPTURE(masked);
+        CHECK(same == count);
+    }
+}
+
 // Per-point views (view_model::given) in both modes, Phong and Blinn, diffuse only, per-light
 // ambient not attenuated (a masked light must not leave its ambient term), unit inputs, facing
 // flags with alpha; and the other view models with masks.
@@ -254,6 +286,16 @@ template <class T, std::size_t... I> void check_all_masked(std::index_sequence<I
 TEST_CASE_TEMPLATE("shade_batch with per-point views and light masks equals shade<F> with masked(), AoS = SoA", T, float, double)
 {
     check_all_inputs<T>(std::make_index_sequence<std::size(input_feature_sets)>{});
+}
+
+TEST_CASE_TEMPLATE("shade_batch: a long call equals each point shaded alone, bit for bit", T, float, double)
+{
+    check_long_call_equals_points_alone<T, presets::classic_phong>(9001);
+    check_long_call_equals_points_alone<T, presets::blinn_phong_per_light_ambient>(9002);
+    check_long_call_equals_points_alone<T, presets::with_mode(presets::classic_phong, evaluation::fast)>(9003);
+    check_long_call_equals_points_alone<T, presets::with_mode(presets::classic_phong, evaluation::fast)>(9006, true);
+    check_long_call_equals_points_alone<T, presets::with_mode(presets::raytracer_phong, evaluation::stable)>(9004);
+    check_long_call_equals_points_alone<T, input_feature_sets[2]>(9005); // Blinn, given views
 }
 
 TEST_CASE_TEMPLATE("shade_batch: a masked light equals a removed light, bit for bit", T, float, double)
@@ -328,8 +370,10 @@ std::vector<std::uint32_t> step_patterned_ids(scene_gen<float>& gen, std::size_t
 /// shade_batch with a material_table equals the per-point overload given materials[ids[i]],
 /// bit for bit (the same lane values, so the same compiled kernel gives the same bits): every
 /// layout pair, light masks on, every tail length, ids in uniform, nearly uniform and mixed
-/// steps. The per-point overload is itself checked against shade<F> above.
-template <class T, features F> void check_material_table(std::uint64_t seed)
+/// steps. The per-point overload is itself checked against shade<F> above. table_size: 5 (a table
+/// of at most batch_width entries: float lanes take mixed steps by in-register permutes) or more
+/// than batch_width (gathers).
+template <class T, features F> void check_material_table(std::uint64_t seed, int table_size = 5)
 {
     constexpr bool given = F.view == view_model::given;
     constexpr std::size_t W = batch_width<T>;
@@ -340,10 +384,10 @@ template <class T, features F> void check_material_table(std::uint64_t seed)
     for (std::size_t count : {std::size_t(0), std::size_t(1), W - 1, W, W + 1, 3 * W + 5, std::size_t(61), 9 * W + 2}) {
         const batch_case<T> c(gen, F, count, 1 + gen.integer(0, 4));
         std::vector<material<T>> table;
-        for (int j = 0; j < 5; ++j) {
+        for (int j = 0; j < table_size; ++j) {
             material<T> m = gen.material(1, 100);
             m.emission = glm::vec<3, T>(T(0.01) * T(j), T(0.02) * T(j), T(0.03)); // every field differs between entries
-            m.alpha = T(0.5) + T(0.1) * T(j);
+            m.alpha = T(0.5) + T(0.5) * T(j) / T(table_size); // in [0.5, 1)
             table.push_back(m);
         }
         const std::vector<std::uint32_t> ids = step_patterned_ids(id_gen, count, W, int(table.size()));
@@ -383,6 +427,7 @@ TEST_CASE_TEMPLATE("shade_batch: a material table with per-point ids equals per-
     check_material_table<T, input_feature_sets[7]>(9002); // stable, Blinn, smooth spot, facing flags, emission, alpha
     check_material_table<T, presets::classic_phong>(9003);
     check_material_table<T, presets::glsl_ads>(9004);
+    check_material_table<T, presets::raytracer_phong>(9005, int(batch_width<T>) + 3); // past the permutable size: gathers
 }
 
 TEST_CASE_TEMPLATE("shade_batch: material_table on hand-made points", T, float, double)

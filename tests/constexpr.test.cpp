@@ -1,11 +1,12 @@
 // Compile-time evaluation: static_asserts of the scalar kernels' special values, of the vector
 // functions, of the view, attenuation and specular factors, and of whole 3-light shades
-// (positional + directional + spot, attenuation, Phong and Blinn, exact and stable) against
+// (positional + directional + spot, attenuation, Phong and Blinn, exact, stable and fast) against
 // hand-worked values. Compiled by g++ and clang++ (clang rejects any non-constexpr std:: call in
 // constant evaluation that g++ would fold). Then, at run time, the constant-evaluation path
 // against the run-time path: tables evaluated at compile time, and detail::ce called directly.
 #include "support/numeric.hpp"
 
+#include <phong/fast_math.hpp>
 #include <phong/phong.hpp>
 
 #include <doctest/doctest.h>
@@ -325,6 +326,40 @@ static_assert(degenerate_shades<float, evaluation::exact>());
 static_assert(degenerate_shades<float, evaluation::stable>());
 static_assert(degenerate_shades<double, evaluation::exact>());
 static_assert(degenerate_shades<double, evaluation::stable>());
+static_assert(degenerate_shades<float, evaluation::fast>());
+static_assert(degenerate_shades<double, evaluation::fast>());
+
+// The fast mode's approximations (phong/fast_math.hpp) are constant expressions for scalars:
+// within their published relative bounds of hand-worked values, and whole fast shades within the
+// power's bound (plus the shade's 16 eps) of the three-light scene's expected colour.
+template <class T> constexpr bool within_rel(T a, double b, double rel) { return cabs(double(a) - b) <= rel * cabs(b); }
+template <class T> constexpr bool within_rel(const vec4<T>& a, const vec4<T>& b, double rel)
+{
+    double scale = 0;
+    for (int k = 0; k < 4; ++k) scale = cabs(double(b[k])) > scale ? cabs(double(b[k])) : scale;
+    for (int k = 0; k < 4; ++k)
+        if (!(cabs(double(a[k]) - double(b[k])) <= rel * scale)) return false;
+    return true;
+}
+template <class T> constexpr bool fast_kernels()
+{
+    using phong::fast::pow_unit_max_rel;
+    using phong::fast::rsqrt_max_rel;
+    static_assert(within_rel(phong::fast::pow_unit(T(0.5), T(2)), 0.25, pow_unit_max_rel));
+    static_assert(within_rel(phong::fast::pow_unit(T(0.75), T(10)), 0.056313514709472656, pow_unit_max_rel)); // 3^10 / 4^10
+    static_assert(within_rel(phong::fast::pow_unit(T(0.9), T(0.5)), 0.94868329805051379, pow_unit_max_rel));  // sqrt(0.9)
+    static_assert(phong::fast::pow_unit(T(1), T(200)) == T(1) && phong::fast::pow_unit(T(0), T(3)) == T(0));
+    static_assert(within_rel(phong::fast::rsqrt(T(4)), 0.5, rsqrt_max_rel<T>));
+    static_assert(within_rel(phong::fast::rsqrt(T(3)), 0.57735026918962576, rsqrt_max_rel<T>));
+    constexpr double shade_rel = pow_unit_max_rel + 16 * double(std::numeric_limits<T>::epsilon());
+    static_assert(within_rel(three_light_shade<three_light_features(specular_model::phong, spot_model::opengl, evaluation::fast), T>(),
+                             three_light_expected<T>(false), shade_rel));
+    static_assert(within_rel(three_light_shade<three_light_features(specular_model::blinn, spot_model::smooth, evaluation::fast), T>(),
+                             three_light_expected<T>(true), shade_rel));
+    return true;
+}
+static_assert(fast_kernels<float>());
+static_assert(fast_kernels<double>());
 
 // ---------------------------------------------------------------------------------------------
 // Constant evaluation against run time.

@@ -105,6 +105,62 @@ TEST_CASE_TEMPLATE("fast::pow_unit: the edges are exact", T, float, double)
     static_assert(pow_unit(T(1), T(3)) == T(1) && pow_unit(T(0), T(0)) == T(1)); // constexpr for scalars
 }
 
+/// fast::pow_integer for every n in [0, 64] over pow_bases, scalars and lanes: within (n - 1) u
+/// (the derivation beside pow_integer_max_rel; u = T's unit roundoff) where x^n >= T's smallest
+/// normal number, and pow_integer_max_rel overall; below, within 2^-126 absolute (float; double's
+/// smallest normal in double).
+TEST_CASE_TEMPLATE("fast::pow_integer: within (n - 1) u of x^n for n in [0, 64], edges exact", T, float, double)
+{
+    using phong::fast::pow_integer;
+    const W u = W(std::numeric_limits<T>::epsilon()) / 2;
+    const W tiny = W(std::numeric_limits<T>::min());
+    const std::vector<T> xs = pow_bases<T>();
+    double worst = 0, worst_abs = 0;
+    bool within_each = true, finite = true;
+    for (unsigned n = 0; n <= phong::fast::pow_integer_max_exponent; ++n) {
+        const W allowed = n == 0 ? W(0) : W(n - 1) * u * W(1.0001); // second-order terms: (n u)^2
+        for (T x : xs) {
+            const T got = pow_integer(x, n);
+            finite = finite && std::isfinite(got) && got >= T(0);
+            const W ref = n == 0 ? W(1) : std::pow(W(x), W(n));
+            if (ref >= tiny) {
+                const W rel = std::fabs(W(got) - ref) / ref;
+                worst = std::max(worst, double(rel));
+                within_each = within_each && rel <= allowed;
+            } else {
+                worst_abs = std::max(worst_abs, double(std::fabs(W(got) - ref)));
+            }
+        }
+    }
+    MESSAGE("fast::pow_integer, scalar: max relative error ", worst, " (bound ", phong::fast::pow_integer_max_rel<T>, "), max absolute ", worst_abs, " below the smallest normal");
+    CHECK(finite);
+    CHECK(within_each);
+    CHECK(worst <= phong::fast::pow_integer_max_rel<T>);
+    CHECK(phong::fast::pow_integer_max_rel<T> <= phong::fast::pow_unit_max_rel);
+    CHECK(worst_abs <= double(tiny));
+    CHECK(pow_integer(T(0), 0u) == T(1)); // pow(0, 0) = 1
+    CHECK(pow_integer(T(0), 1u) == T(0));
+    CHECK(pow_integer(T(0), 64u) == T(0));
+    CHECK(pow_integer(T(1), 64u) == T(1));
+    CHECK(pow_integer(T(0.5), 10u) == T(1) / T(1024)); // powers of two are exact
+    CHECK(pow_integer(T(0.75), 3u) == T(0.421875));    // 27/64: exact in T
+    static_assert(pow_integer(T(0.5), 2u) == T(0.25)); // constexpr for scalars
+#if PHONG_HAS_XSIMD
+    using V = phong::simd_batch<T>;
+    constexpr std::size_t lanes = V::size;
+    alignas(64) T in[64], out[64];
+    bool same = true; // lanes: the same multiplications, so the scalar's bits
+    for (unsigned n : {0u, 1u, 2u, 7u, 32u, 63u, 64u}) {
+        for (std::size_t i = 0; i + lanes <= xs.size(); i += lanes) {
+            std::memcpy(in, &xs[i], lanes * sizeof(T));
+            pow_integer(V::load_unaligned(in), n).store_unaligned(out);
+            for (std::size_t k = 0; k < lanes; ++k) same = same && out[k] == pow_integer(in[k], n);
+        }
+    }
+    CHECK(same);
+#endif
+}
+
 TEST_CASE("fast::rsqrt: within rsqrt_max_rel over every float from 1 to 4, edges")
 {
     double worst = 0;

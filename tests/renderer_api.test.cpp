@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <type_traits>
 #include <ranges>
 #include <span>
 #include <vector>
@@ -90,7 +92,54 @@ template <class T> struct my_light {
     vec3<T> color;
 };
 
+/// A renderer's light in a layout of its own, with every field the model reads: shaded through
+/// the light_traits specialization below, never copied into a light<T>.
+template <class T> struct renderer_light {
+    T where[3];
+    bool directional;
+    vec3<T> glow, colour, highlight; // ambient, diffuse, specular
+    T c0, c1, c2;
+    spot_cone<T> cone;
+};
+
+/// The same light as a light<T>, field by field (what the traits must be equivalent to).
+template <class T> light<T> as_light(const renderer_light<T>& r)
+{
+    light<T> L;
+    L.position = glm::vec<4, T>(r.where[0], r.where[1], r.where[2], r.directional ? T(0) : T(1));
+    L.ambient = r.glow;
+    L.diffuse = r.colour;
+    L.specular = r.highlight;
+    L.attenuation = {r.c0, r.c1, r.c2, std::numeric_limits<T>::infinity()};
+    L.spot = r.cone;
+    return L;
+}
+
 } // namespace
+
+template <class T> struct phong::light_traits<renderer_light<T>> {
+    static glm::vec<4, T> position(const renderer_light<T>& r)
+    {
+        return {r.where[0], r.where[1], r.where[2], r.directional ? T(0) : T(1)};
+    }
+    static const vec3<T>& ambient(const renderer_light<T>& r) { return r.glow; }
+    static const vec3<T>& diffuse(const renderer_light<T>& r) { return r.colour; }
+    static vec3<T> specular(const renderer_light<T>& r) { return r.highlight; } // by value: either works
+    static falloff<T> attenuation(const renderer_light<T>& r) { return {r.c0, r.c1, r.c2, std::numeric_limits<T>::infinity()}; }
+    static const spot_cone<T>& spot(const renderer_light<T>& r) { return r.cone; }
+};
+
+/// The minimal adaptor: a point light with one colour (my_light), the optional fields left out.
+template <class T> struct phong::light_traits<my_light<T>> {
+    static glm::vec<4, T> position(const my_light<T>& L) { return glm::vec<4, T>(L.position, T(1)); }
+    static const vec3<T>& diffuse(const my_light<T>& L) { return L.color; }
+    static const vec3<T>& specular(const my_light<T>& L) { return L.color; }
+};
+
+static_assert(light_source<light<float>> && light_source<const light<double>&> && light_source<my_light<float>>);
+static_assert(!light_source<int> && !light_source<glm::vec4> && !light_source<material<float>>,
+              "a type without a light_traits specialization is not a light (tests/nan_policy/light_traits_reject.cpp: the error)");
+static_assert(std::is_same_v<light_scalar_t<renderer_light<double>>, double>);
 
 TEST_CASE_TEMPLATE("given view: v = -Q reproduces eye_at_origin, v = E - Q reproduces eye_point, bit for bit", T, float, double)
 {
@@ -248,6 +297,73 @@ TEST_CASE("lights: the renderer's own light type through std::views::transform, 
                     shade<F>(Q, n, v, mat, std::span<const light<T>>(copied).subspan(1))));
 }
 #endif
+
+TEST_CASE_TEMPLATE("light_traits: a renderer's own light type gives the colour of the equivalent light<T> bit for bit", T, float, double)
+{
+    // Every field through the traits (by value and by reference), attenuation and spot included,
+    // in every feature set, as a vector, a std::array, a masked and a weighted list; the expected
+    // colour is shade<F> on the light<T> built field by field (as_light).
+    check_property("shade(renderer_light) == shade(light<T>)", [] {
+        const T step = T(1) / T(8);
+        const int count = *rc::gen::inRange(1, 5);
+        std::vector<renderer_light<T>> mine;
+        std::vector<light<T>> reference;
+        for (int i = 0; i < count; ++i) {
+            const light<T> g = *gen_light<T>(*rc::gen::arbitrary<bool>());
+            renderer_light<T> r{{g.position.x, g.position.y, g.position.z}, g.position.w == T(0), g.ambient, g.diffuse, g.specular,
+                                *grid<T>(1, 8, T(0.25)), *grid<T>(0, 8, T(0.125)), *grid<T>(0, 8, T(1) / T(16)), spot_cone<T>{}};
+            const vec3<T> axis = *gen_nonzero_vec3<T>(-8, 8, T(0.25));
+            if (*rc::gen::arbitrary<bool>()) r.cone = spot_cone<T>::smooth(axis, T(*rc::gen::inRange(5, 40)), T(*rc::gen::inRange(45, 80)));
+            else r.cone = spot_cone<T>::opengl(axis, T(*rc::gen::inRange(0, 16)), T(*rc::gen::inRange(10, 90)));
+            mine.push_back(r);
+            reference.push_back(as_light(r));
+        }
+        const vec3<T> Q(*grid<T>(-32, 32, step), *grid<T>(-32, 32, step), *grid<T>(-64, -8, step));
+        const vec3<T> n = *gen_nonzero_vec3<T>(-8, 8, T(0.25)), v = *gen_nonzero_vec3<T>(-8, 8, T(0.25));
+        const material<T> mat = *gen_material<T>(128);
+        environment<T> env;
+        env.ambient = *gen_color<T>();
+        const std::uint64_t mask = std::uint64_t(*rc::gen::inRange(0, 32));
+        std::vector<T> weights;
+        for (int i = 0; i < count; ++i) weights.push_back(T(*rc::gen::inRange(0, 9)) / T(8));
+        const std::span<const T> w(weights);
+        bool same = true;
+        for_each_feature_set<view_model::given>([&]<features F>() {
+            same = same && same_bits(shade<F>(Q, n, v, mat, mine, env), shade<F>(Q, n, v, mat, reference, env));
+            same = same && same_bits(shade<F>(Q, n, v, mat, masked(mine, mask), env), shade<F>(Q, n, v, mat, masked(reference, mask), env));
+            same = same && same_bits(shade<F>(Q, n, v, mat, weighted(mine, w), env), shade<F>(Q, n, v, mat, weighted(reference, w), env));
+            const auto t = shade_terms<F>(Q, n, v, mat, mine, env), u = shade_terms<F>(Q, n, v, mat, reference, env);
+            same = same && same_bits(t.sum(), u.sum());
+        });
+        // A std::array (unrolled), in the stable mode's wider route (float lights in double).
+        constexpr features S = presets::with_mode(with_view(presets::blinn_phong_per_light_ambient, view_model::given), evaluation::stable);
+        const std::array<renderer_light<T>, 1> one{mine[0]};
+        const std::array<light<T>, 1> one_reference{reference[0]};
+        same = same && same_bits(shade<S>(Q, n, v, mat, one, env), shade<S>(Q, n, v, mat, one_reference, env));
+        RC_ASSERT(same);
+    });
+}
+
+TEST_CASE("light_traits: the minimal adaptor (position, diffuse, specular) takes light<T>'s defaults for the rest")
+{
+    using T = float;
+    const std::vector<my_light<T>> mine{{{1, 4, 2}, {1, 0.9f, 0.8f}}, {{-3, 2, 1}, {0.2f, 0.3f, 0.9f}}};
+    std::vector<light<T>> copied;
+    for (const my_light<T>& L : mine) copied.push_back(light<T>::with_strength(glm::vec<4, T>(L.position, 1), L.color));
+    const light<T> converted = to_light(mine[1]);
+    CHECK(std::memcmp(&converted, &copied[1], sizeof(light<T>)) == 0);
+    constexpr features F = with_view(presets::blinn_phong_per_light_ambient, view_model::given); // reads ambient: 0 by default
+    const vec3<T> Q(0, 0, -3), n(0, 0.6f, 0.8f), v(0, 0, 1);
+    material<T> mat{};
+    mat.ka = vec3<T>(0.5f);
+    CHECK(same_bits(shade<F>(Q, n, v, mat, mine), shade<F>(Q, n, v, mat, copied)));
+    CHECK(same_bits(shade<F>(Q, n, v, mat, masked(mine, 0b10)), shade<F>(Q, n, v, mat, std::span<const light<T>>(copied).subspan(1))));
+    // By hand: one light at (-3, 2, 1) from Q = (0, 0, -3), the diffuse term alone (ks = 0).
+    mat.ks = vec3<T>(0);
+    const double nl = (0.6 * 2.0 + 0.8 * 4.0) / std::sqrt(29.0);
+    const vec3<T> one = shade<F>(Q, n, v, mat, std::span<const my_light<T>>(mine).subspan(1));
+    for (int k = 0; k < 3; ++k) CHECK(double(one[k]) == doctest::Approx(double(mat.kd[k]) * double(mine[1].color[k]) * nl).epsilon(1e-6));
+}
 
 TEST_CASE("given view: a zero view vector keeps the diffuse term and has no specular, a NaN one gives NaN in every channel")
 {

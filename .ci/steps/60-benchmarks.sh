@@ -6,7 +6,7 @@
 # and tests benchmarks/report.py on them.
 set -euo pipefail
 cmake --preset bench >/dev/null
-cmake --build --preset bench -j 2 --target phong_bench phong_feature_cost phong_hand_simd_check
+cmake --build --preset bench -j 2 --target phong_bench phong_feature_cost phong_hand_simd_check phong_simd_layer
 build/bench/benchmarks/phong_feature_cost --check
 build/bench/benchmarks/phong_hand_simd_check
 build/bench/benchmarks/phong_bench --benchmark_filter='(naive_glm|scalar|batch|hand_simd)\.exact\.phong\.float/typical/K:4/N:65536|feature\.full\.' \

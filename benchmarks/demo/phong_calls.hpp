@@ -5,6 +5,8 @@
 // How the ray tracer calls phong (the renderer-facing API):
 //  * shade<F> with view_model::given takes v = -ray.dir itself, right for primary, reflected and
 //    refracted rays; features::unit_inputs says that n and v are unit already (no normalization);
+//  * the tracer's own light type goes to phong as it is, through a phong::light_traits
+//    specialization (whitted.cpp, next to the type): no phong::light<float> built per hit;
 //  * the per-hit shadow mask is passed with the whole light list, masked(lights, visible): no
 //    per-hit copy of the visible lights;
 //  * shade_batch<F> takes the hit arrays as they are (aos_points: glm::vec3 positions, normals and
@@ -21,6 +23,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -62,10 +65,11 @@ inline phong::material<float> make_material(const glm::vec3& ka, const glm::vec3
 }
 
 /// One hit, scalar shade<F>: v = -ray.dir given, the lights seen from the hit by the bits of
-/// `visible` (bit i: lights[i] not in shadow), nothing copied per hit.
-template <phong::features F>
+/// `visible` (bit i: lights[i] not in shadow), nothing copied per hit. Light: the renderer's own
+/// light type (with a phong::light_traits specialization) or phong::light<float>.
+template <phong::features F, phong::light_source Light>
 inline glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, const glm::vec3& v, unsigned visible,
-                                    std::span<const phong::light<float>> lights, const phong::material<float>& mat,
+                                    std::span<const Light> lights, const phong::material<float>& mat,
                                     const glm::vec3& ambient)
 {
     const phong::environment<float> env{.ambient = ambient};
@@ -80,16 +84,21 @@ struct batch_scratch {
 
 /// Primary hits, shade_batch<F> on the hit arrays as the tracer keeps them (AoS glm::vec3), each
 /// point with its own view vector (-ray.dir), shadow mask and material id into the scene's
-/// material table (material_table): one call, nothing copied or repacked (all of it timed).
-template <phong::features F>
+/// material table (material_table): one call, no point copied or repacked (all of it timed).
+/// shade_batch takes phong::light<float>: the renderer's lights are converted once per call
+/// (phong::to_light, through their light_traits), not per hit.
+template <phong::features F, phong::light_source Light>
 inline void shade_phong_batch(std::span<const glm::vec3> P, std::span<const glm::vec3> n, std::span<const glm::vec3> v,
                               std::span<const std::uint64_t> visible, std::span<const std::uint32_t> material_id,
-                              std::span<const phong::material<float>> materials, std::span<const phong::light<float>> lights,
+                              std::span<const phong::material<float>> materials, std::span<const Light> lights,
                               const glm::vec3& ambient, std::span<glm::vec3> out)
 {
     const phong::environment<float> env{.ambient = ambient};
+    std::array<phong::light<float>, max_lights> converted;
+    for (std::size_t i = 0; i < lights.size() && i < max_lights; ++i) converted[i] = phong::to_light(lights[i]);
     phong::shade_batch<F>(phong::aos_points<float>{.positions = P, .normals = n, .views = v, .light_masks = visible},
-                          phong::material_table<float>{.materials = materials, .ids = material_id}, lights, out, env);
+                          phong::material_table<float>{.materials = materials, .ids = material_id},
+                          std::span<const phong::light<float>>(converted.data(), std::min(lights.size(), max_lights)), out, env);
 }
 
 // ---- Software rasterizer --------------------------------------------------------------------

@@ -2,7 +2,8 @@
 // Spheres and a checkered floor, 1, 2 or 4 point lights, hard shadows, mirror reflection and
 // refraction to a fixed depth, Phong lighting at every hit, done four ways over the same hits:
 //   inline  the ten lines a ray tracer's author writes (no guards, n and v taken as unit);
-//   phong   phong::shade<F>, exact mode, v = -ray.dir given, unit inputs, masked(lights, visible);
+//   phong   phong::shade<F>, exact mode, v = -ray.dir given, unit inputs, masked(lights, visible),
+//           the tracer's own point_light read through its phong::light_traits specialization;
 //   stable  the same in evaluation::stable;
 //   batch   primary hits only: phong::shade_batch<F> on the hit arrays as kept (aos_points, material_table);
 // plus the inline formula in double as the reference image.
@@ -54,6 +55,17 @@ struct tracer_material {
 struct point_light {
     vec3 position, colour;
 };
+} // namespace
+
+/// How phong reads the tracer's lights: a positional light whose colour is its diffuse and
+/// specular strength (no ambient term, no falloff: light_traits' defaults).
+template <> struct phong::light_traits<point_light> {
+    static glm::vec4 position(const point_light& L) { return glm::vec4(L.position, 1.0f); }
+    static const vec3& diffuse(const point_light& L) { return L.colour; }
+    static const vec3& specular(const point_light& L) { return L.colour; }
+};
+
+namespace {
 
 struct scene {
     std::vector<sphere> spheres;
@@ -221,7 +233,8 @@ glm::vec<3, T> shade_inline(const hit_record& h, const scene& sc)
     return colour;
 }
 
-/// Everything the phong methods need, converted once (not timed).
+/// The materials as phong takes them, converted once (not timed); lights as phong::light<float>
+/// for the kernel reference only (the phong methods read the tracer's own lights).
 struct phong_scene {
     std::vector<phong::light<float>> lights;
     std::vector<phong::material<float>> materials;
@@ -244,7 +257,7 @@ void shade_all_phong(const std::vector<hit_record>& hits, const scene& sc, const
 {
     for (std::size_t i = 0; i < hits.size(); ++i) {
         const hit_record& h = hits[i];
-        out[i] = phong_calls::shade_phong_scalar<F>(h.position, h.normal, h.view, h.visible, ps.lights,
+        out[i] = phong_calls::shade_phong_scalar<F>(h.position, h.normal, h.view, h.visible, std::span<const point_light>(sc.lights),
                                                    ps.materials[std::size_t(h.material)], sc.ambient);
     }
 }
@@ -258,7 +271,8 @@ struct primary_arrays {
 
 void shade_all_batch(const primary_arrays& a, const scene& sc, const phong_scene& ps, std::vector<vec3>& out)
 {
-    phong_calls::shade_phong_batch<phong_calls::whitted_exact>(a.P, a.n, a.v, a.visible, a.material, ps.materials, ps.lights,
+    phong_calls::shade_phong_batch<phong_calls::whitted_exact>(a.P, a.n, a.v, a.visible, a.material, ps.materials,
+                                                               std::span<const point_light>(sc.lights),
                                                                sc.ambient, out);
 }
 
@@ -290,6 +304,46 @@ void shade_kernel_reference(kernel_reference_input& k, const phong_scene& ps, co
     phong::shade_batch<phong_calls::whitted_exact>(points, ps.materials[0], ps.lights, phong::soa_rgba<float>{k.r, k.g, k.b, {}},
                                                    phong::environment<float>{.ambient = sc.ambient});
     out[0] = vec3(k.r[0], k.g[0], k.b[0]); // keep the result observable
+}
+
+/// How the primary hits fall into shade_batch's steps (batch_width<float> consecutive hits): per
+/// (step, light), whether no hit, every hit or only some hits of the step see the light (some: the
+/// step shades the light in every lane and keeps the result where it is seen), and the share of
+/// steps whose hits all have one material (else the step gathers its materials).
+struct coherence_stats {
+    int lights;
+    double none, every, some, one_material;
+};
+coherence_stats step_coherence(const primary_arrays& a, int light_count)
+{
+    constexpr std::size_t W = phong::batch_width<float>;
+    std::size_t steps = 0, none = 0, every = 0, some = 0, one_material = 0;
+    for (std::size_t i = 0; i + W <= a.visible.size(); i += W, ++steps) {
+        std::uint64_t seen_by_any = 0, seen_by_all = ~std::uint64_t(0);
+        bool uniform = true;
+        for (std::size_t k = i; k < i + W; ++k) {
+            seen_by_any |= a.visible[k];
+            seen_by_all &= a.visible[k];
+            uniform = uniform && a.material[k] == a.material[i];
+        }
+        for (int j = 0; j < light_count; ++j) {
+            if (!(seen_by_any >> j & 1u)) ++none;
+            else if (seen_by_all >> j & 1u) ++every;
+            else ++some;
+        }
+        one_material += uniform;
+    }
+    const double pairs = double(steps) * light_count;
+    return {light_count, double(none) / pairs, double(every) / pairs, double(some) / pairs, double(one_material) / double(steps)};
+}
+
+/// The memory floor of the batch method: the same bytes read and written (positions, normals,
+/// views, masks, material ids in; one colour out per hit) with no shading, as a lower bound on
+/// the batch method's time in this loop, where the other methods evict the hit arrays from the
+/// caches between its runs.
+void stream_floor(const primary_arrays& a, std::vector<vec3>& out)
+{
+    for (std::size_t i = 0; i < a.P.size(); ++i) out[i] = a.P[i] + a.n[i] * a.v[i] + float(a.visible[i] + a.material[i]);
 }
 
 /// Whitted's sum: the missed rays' background plus weight * local colour of every hit.
@@ -328,6 +382,8 @@ int main(int argc, char** argv)
     std::vector<checks> results;
     std::vector<std::string> rows_cpu, rows_wall; // the timing tables, one row per light count
     std::vector<std::pair<int, double>> speedups; // scalar phong / batch on the primary hits (CPU time), per light count
+    std::vector<coherence_stats> coherence;       // the primary hits' steps, per light count
+    std::vector<std::pair<double, double>> floors; // ns per primary hit: stream_floor, and scalar phong / 4 (the batch target)
     for (const int light_count : {1, 2, 4}) {
         const scene sc = make_scene(light_count);
         const phong_scene ps = to_phong(sc);
@@ -336,7 +392,7 @@ int main(int argc, char** argv)
         double visible = 0.0;
         for (const hit_record& h : f.hits) visible += double(std::popcount(h.visible));
 
-        std::vector<vec3> c_inline(N), c_exact(N), c_stable(N), p_inline(NP), p_exact(NP), p_batch(NP), p_kernel(NP);
+        std::vector<vec3> c_inline(N), c_exact(N), c_stable(N), p_inline(NP), p_exact(NP), p_batch(NP), p_kernel(NP), p_floor(NP);
         std::vector<glm::dvec3> c_double(N);
         primary_arrays pa;
         for (const hit_record& h : f.primary) {
@@ -347,6 +403,7 @@ int main(int argc, char** argv)
             pa.material.push_back(std::uint32_t(h.material));
         }
         kernel_reference_input kernel_in = make_kernel_reference_input(pa);
+        coherence.push_back(step_coherence(pa, light_count));
         const renderers::timings t = renderers::interleaved_medians(opt.reps, {
             [&] { shade_all_inline(f.hits, sc, c_inline); },
             [&] { shade_all_phong<phong_calls::whitted_exact>(f.hits, sc, ps, c_exact); },
@@ -355,6 +412,7 @@ int main(int argc, char** argv)
             [&] { shade_all_phong<phong_calls::whitted_exact>(f.primary, sc, ps, p_exact); },
             [&] { shade_all_batch(pa, sc, ps, p_batch); },
             [&] { shade_kernel_reference(kernel_in, ps, sc, p_kernel); },
+            [&] { stream_floor(pa, p_floor); },
         });
         for (std::size_t i = 0; i < N; ++i) c_double[i] = shade_inline<double>(f.hits[i], sc);
 
@@ -369,6 +427,7 @@ int main(int argc, char** argv)
             rows->push_back(row);
         }
         speedups.push_back({light_count, t.cpu[4] / t.cpu[5]});
+        floors.push_back({t.cpu[7] * pns, t.cpu[4] * pns / 4});
 
         const image<float> i_inline = compose<float>(f, c_inline, W, H), i_exact = compose<float>(f, c_exact, W, H),
                            i_stable = compose<float>(f, c_stable, W, H);
@@ -399,6 +458,16 @@ int main(int argc, char** argv)
         "same hits, thread CPU time):");
     for (const auto& [lights, speedup] : speedups) out(" %d light%s %.2fx %s;", lights, lights == 1 ? "" : "s", speedup, renderers::verdict(speedup >= 4.0, fast));
     out(" %s\n", fast ? "PASS" : "FAIL");
+    out("memory floor of the batch method (its %zu bytes per hit streamed, no shading; thread CPU time) against the 4x budget, "
+        "ns per hit:", 3 * sizeof(vec3) + sizeof(std::uint64_t) + sizeof(std::uint32_t) + sizeof(vec3));
+    for (std::size_t k = 0; k < floors.size(); ++k)
+        out(" %d light%s %.2f / %.2f;", speedups[k].first, speedups[k].first == 1 ? "" : "s", floors[k].first, floors[k].second);
+    out("\n");
+    out("primary hits in steps of %zu: share of (step, light) pairs where no hit / every hit / some hits see the light "
+        "(binning by mask could only move the last); steps with one material\n", phong::batch_width<float>);
+    for (const coherence_stats& c : coherence)
+        out("  %d light%s: %5.1f %% / %5.1f %% / %5.1f %%; %5.1f %%\n", c.lights, c.lights == 1 ? " " : "s", 100 * c.none, 100 * c.every,
+            100 * c.some, 100 * c.one_material);
     out("\nimages (8-bit sRGB, %d pixels): pixels differing / max difference in levels\n", W * H);
     out("%-6s %-26s %-26s %-22s %-22s\n", "lights", "phong exact vs inline", "phong stable vs double", "(exact vs double)",
         "(batch vs inline, primary)");

@@ -128,6 +128,12 @@ struct math_traits<xsimd::batch<T, A>> {
         if constexpr (float_lanes) return detail::lanes::pow_unit(x, m);
         else return pow(x, m);
     }
+    /// pow_unit with m_is_zero = (m == 0) given (computed once per call by shade_batch).
+    PHONG_LANES_INLINE static V pow_unit(const V& x, const V& m, const mask& m_is_zero)
+    {
+        if constexpr (float_lanes) return detail::lanes::pow_unit(x, m, m_is_zero);
+        else return pow(x, m);
+    }
     /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
     /// xsimd's kernels (exp clamped as above: m log1p(-x) reaches -1e30 and below for the
     /// shininess validate accepts); x >= 1 gives 0, and 1 for m = 0.
@@ -291,8 +297,9 @@ template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
 /// materials[ids[i]], bit for bit as the overloads that take one material per point would with
 /// that material, without copying a material per point: the table goes to SIMD lanes once per
 /// call; a step whose points all have one id (coherent primary hits: most steps) uses those
-/// lanes as they are, and a step of mixed ids gathers each field from the table (AVX-512 and
-/// AVX2: one gather instruction per field).
+/// lanes as they are, and a step of mixed ids takes each field from the table: with float lanes
+/// and at most batch_width<float> entries (16 with AVX-512, 8 with AVX2), one in-register
+/// permute per field; else one gather instruction per field (AVX-512 and AVX2).
 ///   materials: the table, validate() for each entry; not empty when there are points;
 ///   ids: N indices (N = the number of points), each < materials.size().
 /// Pre (debug assertions through the precondition handler): ids N long, every id in the
@@ -485,6 +492,56 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
     std::span<const material<T, Q>> table;
     std::span<const std::uint32_t> ids;
     std::vector<material<V, Q>> splatted; ///< table[j] in every lane
+    /// A table of at most W entries (float lanes, AVX-512 or AVX2; empty otherwise): field f of
+    /// entry j in lane j (the last entry repeated past the table). A step of mixed ids then takes
+    /// each field with one in-register permute by id instead of a gather from memory (a scene's
+    /// few materials: 14 permutes against 14 gathers, the same values).
+    std::vector<V> columns;
+
+    /// The lanes of field f of table[id[k]] in lane k, from columns (ids: W clamped ids in a register).
+    template <class Ids> material<V, Q> permuted([[maybe_unused]] const Ids& id) const
+    {
+        V field[14];
+        for (int f = 0; f < 14; ++f) {
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+            if constexpr (avx512_lanes<V, T> && std::is_same_v<T, float>) field[f] = V(_mm512_permutexvar_ps(id, columns[std::size_t(f)]));
+#endif
+#if PHONG_HAS_XSIMD && defined(__AVX2__) && !defined(__AVX512F__)
+            if constexpr (avx2_float_lanes<V, T>) field[f] = V(_mm256_permutevar8x32_ps(columns[std::size_t(f)], id));
+#endif
+        }
+        return {{field[0], field[1], field[2]}, {field[3], field[4], field[5]}, {field[6], field[7], field[8]},
+                {field[9], field[10], field[11]}, field[12], field[13]};
+    }
+    /// Fills columns when the table is small enough and the lanes have the permute (see columns).
+    void make_columns()
+    {
+        constexpr std::size_t W = sizeof(V) / sizeof(T);
+        constexpr bool permutable =
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+            avx512_lanes<V, T> && std::is_same_v<T, float>;
+#elif PHONG_HAS_XSIMD && defined(__AVX2__)
+            avx2_float_lanes<V, T>;
+#else
+            false;
+#endif
+        if constexpr (permutable) {
+            if (table.empty() || table.size() > W) return;
+            alignas(64) T lane[14][W];
+            for (std::size_t k = 0; k < W; ++k) {
+                const material<T, Q>& m = table[std::min(k, table.size() - 1)];
+                for (int c = 0; c < 3; ++c) {
+                    lane[c][k] = m.ka[c];
+                    lane[3 + c][k] = m.kd[c];
+                    lane[6 + c][k] = m.ks[c];
+                    lane[9 + c][k] = m.emission[c];
+                }
+                lane[12][k] = m.shininess;
+                lane[13][k] = m.alpha;
+            }
+            for (int f = 0; f < 14; ++f) columns.push_back(load<V>(lane[f]));
+        }
+    }
 
     /// Calls use(material<V, Q> const&) with the lanes of points i .. i + count - 1.
     template <class Use> void with_step(std::size_t i, std::size_t count, Use&& use) const
@@ -498,6 +555,7 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
                 const std::uint32_t first = std::min(id[0], last);
                 const __m512i clamped = _mm512_min_epu32(_mm512_loadu_si512(id), _mm512_set1_epi32(int(last)));
                 if (_mm512_cmpneq_epi32_mask(clamped, _mm512_set1_epi32(int(first))) == 0) return use(splatted[first]);
+                if (!columns.empty()) return use(permuted(clamped));
                 alignas(64) std::uint32_t element[W];
                 _mm512_store_si512(element, clamped);
                 return use(gather<V, true>(table.data(), element));
@@ -510,6 +568,7 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
                 const std::uint32_t first = std::min(id[0], last);
                 const __m256i clamped = _mm256_min_epu32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(id)), _mm256_set1_epi32(int(last)));
                 if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(clamped, _mm256_set1_epi32(int(first)))) == -1) return use(splatted[first]);
+                if (!columns.empty()) return use(permuted(clamped));
                 alignas(32) std::uint32_t element[W];
                 _mm256_store_si256(reinterpret_cast<__m256i*>(element), clamped);
                 return use(gather<V, true>(table.data(), element));
@@ -799,9 +858,9 @@ PHONG_BATCH_ALWAYS_INLINE void each_visible_light(Sums& sums, std::size_t light_
     }
 }
 
-template <features F, class V, class T, glm::qualifier Q, class Sums>
+template <features F, class V, class T, glm::qualifier Q, class Sums, class Exponent>
 PHONG_BATCH_ALWAYS_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
-                       const V& m, const std::uint64_t* bits, std::size_t count)
+                       const Exponent& m, const std::uint64_t* bits, std::size_t count)
 {
     if constexpr (std::is_same_v<V, T>) { // scalar lanes (no xsimd): shade<F>'s own light loop
         if (!bits) add_lights<F>(sums, s, lights, m);
@@ -844,60 +903,106 @@ template <features F, class V> inline constexpr bool stable_lanes_route =
 #  define PHONG_BATCH_NOINLINE
 #endif
 
-/// The lanes' colour: prepare, every (visible) light, finish. Not inlined, on purpose: every
-/// layout (soa3, soa_points, aos_points; either output) calls this one compiled function, so the
-/// compiler's choices (FMA contraction above all) are the same for all of them and the layouts
-/// agree bit for bit (inlined, AoS and SoA differed by an ulp at -march=native). Flattened: every
-/// call inside (the light loop's add_light, the power, xsimd's kernels) is inlined into it, so
-/// the point's frame and sums stay in registers across the light loop (before, add_light was
-/// a call per light per step with its operands in memory: batch exact took 1.5x to 2.6x the
-/// hand-written kernel's time, now 1.1x to 1.6x; benchmarks/hand_simd.bench.cpp).
-/// bits: W light masks (0 past the tail), or null. Folded: the lights carry the material's ka, kd
-/// and ks (one material for all points, shade_points_impl): folded_sums, else light_sums.
-/// Folded, env.ambient is not the scene's ambient but the colour's point-independent part,
-/// emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the loop runs
-/// without the lights' ambient terms); the sums start from it.
+/// The lanes of one batch step: W points' position, normal, view vector (set and read only with
+/// view_model::given) and front-facing flags.
+template <class V, glm::qualifier Q> struct step_lanes {
+    glm::vec<3, V, Q> position;
+    glm::vec<3, V, Q> normal;
+    glm::vec<3, V, Q> view;
+    mask_t<V> front;
+};
+
+/// Steps per call of shade_lanes (one material for all points): the per-call work (entry, the
+/// hoisted constants, the return) is shared by that many steps, and the out-of-order core
+/// overlaps one step's long dependent chain (normalizations, the power's polynomial) with the
+/// next step's, which a call per step kept apart (batch exact at K = 1: 1.4x the hand-written
+/// kernel's time with a call per step; docs/batch.md).
+inline constexpr std::size_t steps_per_call = 8;
+
+/// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
+/// steps (out[k] from in[k]). Not inlined, on purpose: every layout (soa3, soa_points,
+/// aos_points; either output) calls this one compiled function, so the compiler's choices (FMA
+/// contraction above all) are the same for all of them and the layouts agree bit for bit
+/// (inlined, AoS and SoA differed by an ulp at -march=native). Flattened: every call inside
+/// (the light loop's add_light, the power, xsimd's kernels) is inlined into it, so the point's
+/// frame and sums stay in registers across the light loop (before, add_light was a call per
+/// light per step with its operands in memory: batch exact took 1.5x to 2.6x the hand-written
+/// kernel's time; benchmarks/hand_simd.bench.cpp).
+/// bits: W light masks per step (step k's at bits + k W; 0 past the tail), or null; count: the
+/// live lanes of each step (W, or a tail's count with steps = 1). Folded: the lights carry the
+/// material's ka, kd and ks (one material for all points, shade_points_impl): folded_sums, else
+/// light_sums. Folded, env.ambient is not the scene's ambient but the colour's point-independent
+/// part, emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the
+/// loop runs without the lights' ambient terms); the sums start from it.
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
-PHONG_BATCH_NOINLINE color<F, V, Q> shade_lanes(const glm::vec<3, V, Q>& position, const glm::vec<3, V, Q>& normal,
-                                                const glm::vec<3, V, Q>& view, const mask_t<V>& front, const material<V, Q>& mat,
-                                                std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
-                                                const environment<V, Q>& env, const std::uint64_t* bits, std::size_t count)
+PHONG_BATCH_NOINLINE void shade_lanes(const step_lanes<V, Q>* in, std::size_t steps, color<F, V, Q>* out,
+                                      const material<V, Q>& mat, std::span<const light<V, Q>> lights,
+                                      std::span<const light<double, Q>> wide_lights, const environment<V, Q>& env,
+                                      const std::uint64_t* bits, std::size_t count)
 {
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
     using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
 #if PHONG_STABLE_LANES
     if constexpr (stable_lanes_route<F, V>) {
         // The stable mode's geometry in double lanes (detail/stable_lanes.hpp), unless a lane's
         // shininess is above that route's limit: then the twofold route below.
         if (!xsimd::any(mat.shininess > V(stable_lanes::max_shininess))) {
-            const stable_lanes::surface_frame<V, Q> s = stable_lanes::prepare<F>(position, normal, view, env, front);
-            Sums sums{};
-            if constexpr (Folded) sums.total = env.ambient;
-            const auto run = [&]<features G>() {
-                each_visible_light<V, T>(sums, lights.size(), bits, count, [&](Sums& step_sums, std::size_t j) {
-                    stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
-                });
-                return finish<G>(sums, s, mat, env);
-            };
-            if constexpr (Folded && ambient_hoistable<F>)
-                if (!bits) return run.template operator()<ambient_hoisted<F>>();
-            return run.template operator()<F>();
+            for (std::size_t k = 0; k < steps; ++k) {
+                const std::uint64_t* step_bits = bits ? bits + k * W : nullptr;
+                const stable_lanes::surface_frame<V, Q> s = stable_lanes::prepare<F>(in[k].position, in[k].normal, in[k].view, env, in[k].front);
+                Sums sums{};
+                if constexpr (Folded) sums.total = env.ambient;
+                const auto shade_step = [&]<features G>() {
+                    each_visible_light<V, T>(sums, lights.size(), step_bits, count, [&](Sums& step_sums, std::size_t j) {
+                        stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
+                    });
+                    out[k] = finish<G>(sums, s, mat, env);
+                };
+                if constexpr (Folded && ambient_hoistable<F>) {
+                    if (!step_bits) {
+                        shade_step.template operator()<ambient_hoisted<F>>();
+                        continue;
+                    }
+                }
+                shade_step.template operator()<F>();
+            }
+            return;
         }
     }
 #else
     (void)wide_lights;
 #endif
-    const frame_t<F, V, Q> s = prepare<F>(position, normal, view, env, front);
-    Sums sums{};
-    if constexpr (Folded) sums.total = env.ambient;
-    if constexpr (Folded && ambient_hoistable<F>) {
-        if (!bits) {
-            constexpr features G = ambient_hoisted<F>;
-            add_masked_lights<G, V, T, Q>(sums, s, lights, mat.shininess, bits, count);
-            return finish<G>(sums, s, mat, env);
+    const auto run = [&](const auto& m) { // m: the shininess (V, exact::lane_shininess<V> or exact::integer_exponent<V>)
+        for (std::size_t k = 0; k < steps; ++k) {
+            const std::uint64_t* step_bits = bits ? bits + k * W : nullptr;
+            const frame_t<F, V, Q> s = prepare<F>(in[k].position, in[k].normal, in[k].view, env, in[k].front);
+            Sums sums{};
+            if constexpr (Folded) sums.total = env.ambient;
+            if constexpr (Folded && ambient_hoistable<F>) {
+                if (!step_bits) {
+                    constexpr features G = ambient_hoisted<F>;
+                    add_masked_lights<G, V, T, Q>(sums, s, lights, m, step_bits, count);
+                    out[k] = finish<G>(sums, s, mat, env);
+                    continue;
+                }
+            }
+            add_masked_lights<F, V, T, Q>(sums, s, lights, m, step_bits, count);
+            out[k] = finish<F>(sums, s, mat, env);
         }
+    };
+    if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) {
+        // One integer shininess in every lane (a shared material, or a step of equal ones):
+        // the fast power by binary powering, decided here once rather than per pair.
+        const T m0 = mat.shininess.get(0);
+        if (m0 >= T(0) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
+            math_traits<V>::all(mat.shininess == V(m0)))
+            return run(exact::integer_exponent<V>{unsigned(m0)});
     }
-    add_masked_lights<F, V, T, Q>(sums, s, lights, mat.shininess, bits, count);
-    return finish<F>(sums, s, mat, env);
+    if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
+        run(exact::lane_shininess<V>{mat.shininess, mat.shininess == V(T(0))}); // m == 0 tested once
+    } else {
+        run(mat.shininess);
+    }
 }
 
 /// One material for every point: its lanes, splatted once per call (folded into the lights).
@@ -928,48 +1033,33 @@ template <class V, class T, glm::qualifier Q> struct per_point_lanes {
     }
 };
 
-/// One batch step over points of any layout (soa_points, aos_points): shade_batch's kernel over
-/// `count` <= W points starting at index i. Full steps load SoA spans directly and AoS through
-/// a transpose; tails go through padded copies (the pad: Q = (0, 0, -1), n = v = (0, 0, 1),
-/// facing the eye). Light masks of a full step are read in place. `materials` gives the step's
-/// material lanes (shared_lanes, per_point_lanes or table_lanes).
-template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
-void shade_points_step(std::size_t i, std::size_t count, const Points& points, const MaterialLanes& materials,
-                       std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
-                       const environment<V, Q>& env, const Output& out)
+/// Loads the lanes of one batch step over points of any layout (soa_points, aos_points):
+/// `count` <= W points starting at index i. Full steps load SoA spans directly and AoS through a
+/// transpose; tails go through padded copies (the pad: Q = (0, 0, -1), n = v = (0, 0, 1), facing
+/// the eye).
+template <features F, class V, class Points, class T, glm::qualifier Q>
+void load_step(std::size_t i, std::size_t count, const Points& points, step_lanes<V, Q>& lanes)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     using vec3 = glm::vec<3, T, Q>;
-    const glm::vec<3, V, Q> position = load_vec3<V, Q>(points.positions, i, count, vec3(T(0), T(0), T(-1)));
-    const glm::vec<3, V, Q> normal = load_vec3<V, Q>(points.normals, i, count, vec3(T(0), T(0), T(1)));
-    glm::vec<3, V, Q> view(V(T(0)));
-    if constexpr (F.view == view_model::given) view = load_vec3<V, Q>(points.views, i, count, vec3(T(0), T(0), T(1)));
-    mask_t<V> front(true);
+    lanes.position = load_vec3<V, Q>(points.positions, i, count, vec3(T(0), T(0), T(-1)));
+    lanes.normal = load_vec3<V, Q>(points.normals, i, count, vec3(T(0), T(0), T(1)));
+    if constexpr (F.view == view_model::given) lanes.view = load_vec3<V, Q>(points.views, i, count, vec3(T(0), T(0), T(1)));
+    lanes.front = mask_t<V>(true);
     if constexpr (F.two_sided == facing::flag) {
         if (!points.front_facing.empty()) {
             alignas(64) T buf[W];
             for (std::size_t k = 0; k < W; ++k) buf[k] = k < count && !points.front_facing[i + k] ? T(0) : T(1);
-            front = load<V>(buf) > V(T(0));
+            lanes.front = load<V>(buf) > V(T(0));
         }
     }
+}
 
-    // One material for all points: shade_points_impl folded it into the lights.
-    constexpr bool folded = std::is_same_v<MaterialLanes, shared_lanes<V, Q>>;
-    alignas(64) std::uint64_t tail_bits[W]; // a tail's masks, 0 past count (full steps read them in place)
-    const std::uint64_t* bits = nullptr;
-    if (!points.light_masks.empty()) {
-        if (count == W) {
-            bits = points.light_masks.data() + i;
-        } else {
-            for (std::size_t k = 0; k < W; ++k) tail_bits[k] = k < count ? points.light_masks[i + k] : 0;
-            bits = tail_bits;
-        }
-    }
-    color<F, V, Q> c;
-    materials.with_step(i, count, [&](const material<V, Q>& mat) {
-        c = shade_lanes<F, V, T, Q, folded>(position, normal, view, front, mat, lights, wide_lights, env, bits, count);
-    });
-
+/// Stores the colours of one batch step (count <= W points from index i).
+template <features F, class V, class T, glm::qualifier Q, class Output>
+void store_step(const color<F, V, Q>& c, std::size_t i, std::size_t count, const Output& out)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
     constexpr int channels = F.alpha ? 4 : 3;
     if constexpr (std::is_same_v<Output, soa_rgba<T>>) {
         T* dst[4] = {out.r.data(), out.g.data(), out.b.data(), F.alpha ? out.a.data() : nullptr};
@@ -985,6 +1075,45 @@ void shade_points_step(std::size_t i, std::size_t count, const Points& points, c
     } else {
         store_interleaved<V, T>(c, out.data() + i, count);
     }
+}
+
+/// Up to steps_per_call batch steps from point i (steps full steps of W points, or one step of
+/// count < W points: a tail), through one call of shade_lanes. Light masks of full steps are
+/// read in place. `materials` gives each step's material lanes (shared_lanes, per_point_lanes or
+/// table_lanes); materials that differ per step go one step per call.
+template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
+void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, const Points& points,
+                        const MaterialLanes& materials, std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
+                        const environment<V, Q>& env, const Output& out)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
+    // One material for all points: shade_points_impl folded it into the lights.
+    constexpr bool folded = std::is_same_v<MaterialLanes, shared_lanes<V, Q>>;
+    constexpr bool shared = folded || std::is_same_v<MaterialLanes, unfolded_shared_lanes<V, Q>>;
+    step_lanes<V, Q> in[steps_per_call];
+    color<F, V, Q> c[steps_per_call];
+    for (std::size_t k = 0; k < steps; ++k) load_step<F, V, Points, T, Q>(i + k * W, count, points, in[k]);
+
+    alignas(64) std::uint64_t tail_bits[W]; // a tail's masks, 0 past count (full steps read them in place)
+    const std::uint64_t* bits = nullptr;
+    if (!points.light_masks.empty()) {
+        if (count == W) {
+            bits = points.light_masks.data() + i;
+        } else {
+            for (std::size_t k = 0; k < W; ++k) tail_bits[k] = k < count ? points.light_masks[i + k] : 0;
+            bits = tail_bits;
+        }
+    }
+    if constexpr (shared) {
+        shade_lanes<F, V, T, Q, folded>(in, steps, c, materials.lanes, lights, wide_lights, env, bits, count);
+    } else {
+        for (std::size_t k = 0; k < steps; ++k) {
+            materials.with_step(i + k * W, count, [&](const material<V, Q>& mat) {
+                shade_lanes<F, V, T, Q, folded>(in + k, 1, c + k, mat, lights, wide_lights, env, bits ? bits + k * W : nullptr, count);
+            });
+        }
+    }
+    for (std::size_t k = 0; k < steps; ++k) store_step<F, V, T, Q>(c[k], i + k * W, count, out);
 }
 
 /// The bytes [p, p + bytes) and [q, q + bytes_q) share at least one byte (std::less: a total
@@ -1190,8 +1319,8 @@ environment<V, Q> lane_environment(const environment<T, Q>& env, const Materials
 }
 
 /// shade_batch over soa_points or aos_points: preconditions checked (debug builds), lights,
-/// shared material (or a material table) and environment broadcast once, then one
-/// shade_points_step per W points. Materials: material<T, Q> (one for all), a span of N
+/// shared material (or a material table) and environment broadcast once, then
+/// shade_points_steps per steps_per_call W points. Materials: material<T, Q> (one for all), a span of N
 /// materials (one per point) or material_table<T, Q> (a table and N ids).
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
 void shade_points_impl(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
@@ -1215,16 +1344,21 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     const environment<V, Q> lane_env = lane_environment<F, V>(env, materials, lights, !points.light_masks.empty(), fold);
     const auto run = [&](const auto& material_lanes) {
         std::size_t i = 0;
-        for (; i + W <= n; i += W) shade_points_step<F, V, Points, T, Q>(i, W, points, material_lanes, lane_span, wide_span, lane_env, out);
-        if (i < n) shade_points_step<F, V, Points, T, Q>(i, n - i, points, material_lanes, lane_span, wide_span, lane_env, out);
+        for (; i + W <= n;) {
+            const std::size_t steps = std::min(steps_per_call, (n - i) / W);
+            shade_points_steps<F, V, Points, T, Q>(i, steps, W, points, material_lanes, lane_span, wide_span, lane_env, out);
+            i += steps * W;
+        }
+        if (i < n) shade_points_steps<F, V, Points, T, Q>(i, 1, n - i, points, material_lanes, lane_span, wide_span, lane_env, out);
     };
     if constexpr (std::is_same_v<Materials, material<T, Q>>) {
         if (fold) run(shared_lanes<V, Q>{splat<V>(materials)});
         else run(unfolded_shared_lanes<V, Q>{splat<V>(materials)});
     } else if constexpr (std::is_same_v<Materials, material_table<T, Q>>) {
-        table_lanes<V, T, Q> lanes{materials.materials, materials.ids, {}};
+        table_lanes<V, T, Q> lanes{materials.materials, materials.ids, {}, {}};
         lanes.splatted.reserve(materials.materials.size());
         for (const material<T, Q>& m : materials.materials) lanes.splatted.push_back(splat<V>(m));
+        lanes.make_columns();
         run(lanes);
     } else {
         run(per_point_lanes<V, T, Q>{materials});
@@ -1265,6 +1399,8 @@ void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Ma
 /// would otherwise overwrite points before they are read. Lights, a shared material and env are
 /// copied before the first store and may alias anything.
 /// Edges and NaN policy: those of shade<F>, point by point.
+/// Lights: a span of light<T> (they go to SIMD lanes once per call). A renderer's own light type
+/// (light_traits, light.hpp): convert the list once per call with to_light, not per point.
 /// Accuracy: within the published bound of F.mode (phong/accuracy.hpp), tested against the
 /// __float128 reference; against the scalar shade<F> the results differ by the SIMD rsqrt
 /// estimate (< 2 ulp, float lanes) and the exp/log implementations, amplified by the exponent m in

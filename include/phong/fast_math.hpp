@@ -145,6 +145,45 @@ PHONG_HD constexpr V pow_unit(V x, V m)
     return phong::select(positive, phong::select(m == V(S(0)), V(S(1)), p), phong::select(m == V(S(0)), V(S(1)), V(S(0))));
 }
 
+/// Largest exponent fast::pow_integer takes (its error grows like the exponent).
+inline constexpr unsigned pow_integer_max_exponent = 64;
+
+/// Relative error bound of fast::pow_integer in T's arithmetic (u = T's unit roundoff, 2^-24 for
+/// float): x^n by binary powering is a product of squares b_i = x^(2^i), each squaring doubling its
+/// operand's relative error and adding one rounding, so b_i carries at most (2^i - 1) u, and the
+/// product of the b_i of n's set bits, one rounding per multiplication after the first (1 * b is
+/// exact), at most (n - popcount(n)) u + (popcount(n) - 1) u = (n - 1) u, first order (n u < 4e-6).
+/// For n <= pow_integer_max_exponent: 63 u = 3.8e-6 in float, within pow_unit_max_rel (so the fast
+/// mode's bounds, phong/accuracy.hpp, hold unchanged). Results below T's smallest normal number
+/// are subnormal or 0 (absolute error below 2^-126). tests/fast_math.test.cpp checks it against
+/// long double pow for every n in [0, 64].
+template <class T> inline constexpr double pow_integer_max_rel = double(pow_integer_max_exponent - 1) * std::numeric_limits<scalar_t<T>>::epsilon() / 2;
+
+/// Fast x^n for a base x in [0, 1] and an integer exponent n in [0, pow_integer_max_exponent]:
+///   x^n = prod_{bit i of n set} x^(2^i)   (binary powering: floor(log2 n) squarings and
+///   popcount(n) - 1 multiplications; 5 squarings for n = 32, against the two polynomials of
+///   fast::pow_unit). n is one value for every lane. The fast mode's SIMD lanes take it where the
+///   shininess is such an integer (shade_batch with one material: Blinn-Phong exponents are
+///   usually small integers), else fast::pow_unit's kernels.
+/// Error: relative pow_integer_max_rel<T>. Edge: n = 0 gives 1 for every x (pow(0, 0) = 1); x = 0
+/// gives 0 for n > 0; x = 1 gives exactly 1. Pre: n <= pow_integer_max_exponent (larger n: the
+/// result is still x^n rounded, but the bound grows as (n - 1) u). Exact twin: phong::pow_unit.
+template <class V>
+PHONG_HD constexpr V pow_integer(V x, unsigned n)
+{
+    using S = scalar_t<V>;
+    V power(S(1));
+    bool first = true; // 1 * b is exact: the first factor is taken as it is
+    for (V square = x; n != 0; n >>= 1) {
+        if (n & 1u) {
+            power = first ? square : power * square;
+            first = false;
+        }
+        if (n > 1u) square = square * square;
+    }
+    return power;
+}
+
 /// Relative error bound of fast::rsqrt for a positive normal x: an estimate with relative error
 /// e0 <= 1.5 2^-12 (SSE rsqrtss/rsqrtps, the coarsest used) refined by one Newton step has
 /// 1.5 e0^2 = 2.0e-7, plus the step's roundings (<= 2.5 2^-24 = 1.5e-7): 3.5e-7, published 4e-7.

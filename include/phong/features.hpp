@@ -62,6 +62,9 @@ enum class view_model : unsigned char {
 /// routes (features::precision): float evaluated in double, or power-of-two rescaled vectors with
 /// the unit vectors n, l, v (h), n.l and the chords r - v, n - h carried twofold (to ~eps^2, from the
 /// exact L - Q; detail/twofold.hpp) and the half-chord exponent exp(m log1p(-|r - v|^2/2)).
+/// The twofold route's 1 - cosine carries ~eps^2 absolute, which the power multiplies by m: for
+/// m beyond ~1/eps^2 (2.8e14 float, 8e31 double) a highlight's factor is as uncertain as the
+/// inputs' last bits (exactly parallel vectors may give 0 instead of 1).
 /// `fast`: the exact mode's formulas and guards (the same NaN and degenerate-input policy) with the
 /// specular power and the light vector's 1/|d| taken by the approximations of phong/fast_math.hpp
 /// (fast::pow_unit, fast::rsqrt): for colours that end in 8-bit or half-float pixels.

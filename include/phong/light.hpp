@@ -5,6 +5,9 @@
 #include "attenuation.hpp"
 #include "validate.hpp"
 
+#include <type_traits>
+#include <utility>
+
 namespace phong {
 
 /// One light source, in the coordinates the surface is shaded in (eye coordinates for seeds 000
@@ -44,6 +47,106 @@ struct light {
         return with_strength(position, strength, attenuation);
     }
 };
+
+/// How shade<F> reads a light of type L: the specialization point for a renderer's own light type
+/// (an adaptor), so that its light list goes to shade<F> as it is, nothing copied into
+/// a light<T> per point. light<T, Q> has one (below); any other type has none: shade<F> then
+/// stops with a static_assert that names light_traits. A specialization has static functions
+/// (PHONG_HD ones for CUDA device code), each returning a value or a reference:
+///   position(L) -> glm::vec<4, U, Q>  required: the homogeneous position, as light::position
+///                                      (w = 1 positional, w = 0 directional; U, Q: the light's scalar
+///                                      type and qualifier, read from this function's return type);
+///   diffuse(L)  -> glm::vec<3, U, Q>  required: Ld (seed 001 lightdiff);
+///   specular(L) -> glm::vec<3, U, Q>  required: Ls (seed 001 lightspec);
+///   ambient(L)  -> glm::vec<3, U, Q>  optional, default 0: La (seed 001 lightamb);
+///   attenuation(L) -> falloff<U>      optional, default falloff<U>{} (f = 1): read with attenuation;
+///   spot(L)     -> spot_cone<U, Q>    optional, default spot_cone<U, Q>{} (no cone): read with a spot.
+/// Each function is called where the model reads that field (inlined: the same code as for the
+/// member of a light<T>), at most once per light per point, and only for the terms F has. A point
+/// light with one colour, for instance:
+///   template <> struct phong::light_traits<my_light> {
+///       static glm::vec4 position(const my_light& L) { return glm::vec4(L.position, 1.0f); }
+///       static const glm::vec3& diffuse(const my_light& L) { return L.colour; }
+///       static const glm::vec3& specular(const my_light& L) { return L.colour; }
+///   };
+/// Pre: the values returned are those validate() accepts in a light<U, Q> (checked in debug builds
+/// and in constant evaluation, through to_light).
+template <class L> struct light_traits {};
+
+/// light<T, Q>'s own fields, by reference.
+template <class T, glm::qualifier Q> struct light_traits<light<T, Q>> {
+    PHONG_HD static constexpr const glm::vec<4, T, Q>& position(const light<T, Q>& L) { return L.position; }
+    PHONG_HD static constexpr const glm::vec<3, T, Q>& ambient(const light<T, Q>& L) { return L.ambient; }
+    PHONG_HD static constexpr const glm::vec<3, T, Q>& diffuse(const light<T, Q>& L) { return L.diffuse; }
+    PHONG_HD static constexpr const glm::vec<3, T, Q>& specular(const light<T, Q>& L) { return L.specular; }
+    PHONG_HD static constexpr const falloff<T>& attenuation(const light<T, Q>& L) { return L.attenuation; }
+    PHONG_HD static constexpr const spot_cone<T, Q>& spot(const light<T, Q>& L) { return L.spot; }
+};
+
+namespace detail {
+template <class V> struct homogeneous_position_of {};
+template <class T, glm::qualifier Q> struct homogeneous_position_of<glm::vec<4, T, Q>> {
+    using scalar = T;
+    static constexpr glm::qualifier qualifier = Q;
+};
+template <class L>
+using light_position_t = std::remove_cvref_t<decltype(light_traits<L>::position(std::declval<const L&>()))>;
+} // namespace detail
+
+/// A type shade<F> takes as a light: light_traits<L> gives position (a glm::vec<4, U, Q>),
+/// diffuse and specular (cv and references ignored).
+template <class L>
+concept light_source = requires(const std::remove_cvref_t<L>& l) {
+    light_traits<std::remove_cvref_t<L>>::position(l);
+    light_traits<std::remove_cvref_t<L>>::diffuse(l);
+    light_traits<std::remove_cvref_t<L>>::specular(l);
+    typename detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::scalar;
+};
+
+/// The scalar type U and qualifier of a light_source's fields (from light_traits<L>::position).
+template <light_source L>
+using light_scalar_t = typename detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::scalar;
+template <light_source L>
+inline constexpr glm::qualifier light_qualifier_v = detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::qualifier;
+
+namespace detail {
+/// The fields of a light_source as shade<F> reads them: light_traits' function, or the default
+/// of light<U, Q> where the traits leave an optional field out. References stay references.
+template <class L> PHONG_HD constexpr decltype(auto) position_of(const L& l) { return light_traits<L>::position(l); }
+template <class L> PHONG_HD constexpr decltype(auto) diffuse_of(const L& l) { return light_traits<L>::diffuse(l); }
+template <class L> PHONG_HD constexpr decltype(auto) specular_of(const L& l) { return light_traits<L>::specular(l); }
+template <class L> PHONG_HD constexpr decltype(auto) ambient_of([[maybe_unused]] const L& l)
+{
+    if constexpr (requires { light_traits<L>::ambient(l); }) return light_traits<L>::ambient(l);
+    else return glm::vec<3, light_scalar_t<L>, light_qualifier_v<L>>(light_scalar_t<L>(0));
+}
+template <class L> PHONG_HD constexpr decltype(auto) attenuation_of([[maybe_unused]] const L& l)
+{
+    if constexpr (requires { light_traits<L>::attenuation(l); }) return light_traits<L>::attenuation(l);
+    else return falloff<light_scalar_t<L>>{};
+}
+template <class L> PHONG_HD constexpr decltype(auto) spot_of([[maybe_unused]] const L& l)
+{
+    if constexpr (requires { light_traits<L>::spot(l); }) return light_traits<L>::spot(l);
+    else return spot_cone<light_scalar_t<L>, light_qualifier_v<L>>{};
+}
+} // namespace detail
+
+/// The light<U, Q> a light_source stands for: every field read through light_traits (defaults
+/// where the traits leave one out). For what needs a light<T> itself: validate(), and shade_batch,
+/// which takes a span of light<T> (convert the list once per call, not per point).
+template <light_source L>
+PHONG_HD constexpr light<light_scalar_t<L>, light_qualifier_v<L>> to_light(const L& l)
+{
+    light<light_scalar_t<L>, light_qualifier_v<L>> out;
+    out.position = detail::position_of(l);
+    out.ambient = detail::ambient_of(l);
+    out.diffuse = detail::diffuse_of(l);
+    out.specular = detail::specular_of(l);
+    out.attenuation = detail::attenuation_of(l);
+    out.spot = detail::spot_of(l);
+    return out;
+}
 
 /// Checks a light against the model's domain. Rejected: a non-finite position or a w other than
 /// 0 or 1 (-0 counts as 0); NaN,

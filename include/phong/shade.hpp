@@ -166,6 +166,18 @@ PHONG_HD constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& positio
 template <features F, class T>
 using arithmetic_t = std::conditional_t<widened<F, T>, double, T>;
 
+/// shade<F>'s checks of its parameters: the material, and unit_inputs' unit vectors.
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q>& normal, [[maybe_unused]] const glm::vec<3, T, Q>& view,
+                                     const material<T, Q>& mat)
+{
+    check_material(mat);
+    if constexpr (F.unit_inputs) {
+        check_unit(normal, "shade: normal must be unit length (features::unit_inputs)");
+        if constexpr (F.view == view_model::given) check_unit(view, "shade: view vector must be unit length (features::unit_inputs)");
+    }
+}
+
 /// shade<F>'s body for either view argument: parameters checked, then the route (float's stable
 /// mode: the exact route in double). The terms come in the arithmetic type.
 template <features F, class T, glm::qualifier Q, class Lights>
@@ -173,16 +185,17 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
                                                                  const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
                                                                  Lights&& lights, const environment<T, Q>& env, bool front_facing)
 {
-    check_material(mat);
-    if constexpr (F.unit_inputs) {
-        check_unit(normal, "shade: normal must be unit length (features::unit_inputs)");
-        if constexpr (F.view == view_model::given) check_unit(view, "shade: view vector must be unit length (features::unit_inputs)");
-    }
-    if constexpr (widened<F, T>) {
+    static_assert(light_list<Lights>, "phong: the lights must be a range of phong::light<T> or of a type with a "
+                                      "phong::light_traits specialization (position, diffuse, specular; see light.hpp)");
+    if constexpr (!light_list<Lights>) {
+        return {}; // not instantiated further: the static_assert above is the one error reported
+    } else if constexpr (widened<F, T>) {
+        check_inputs<F>(normal, view, mat);
         using W = double;
         return evaluate<exact_of<F>>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view),
                                      widen<W>(mat), static_cast<Lights&&>(lights), widen<W>(env), front_facing);
     } else {
+        check_inputs<F>(normal, view, mat);
         return evaluate<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing);
     }
 }
@@ -198,11 +211,12 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
 ///
 /// position, normal: Q and its normal (any length, normalized here; unit and used as given with
 /// features::unit_inputs) in the lights' coordinates.
-/// lights: light<T> (or light<U>) values from any input range: a std::array<light, N> (unrolled
-/// at compile time), std::span, std::vector, a view (std::views::filter of the lights a shadow
-/// test lets through; std::views::transform from the renderer's own light type: nothing is
-/// copied per point once inlined), or masked(lights, bits) / weighted(lights, weights)
-/// (visibility.hpp). Each light is read once.
+/// lights: light<T> (or light<U>) values, or the renderer's own light type read through its
+/// light_traits specialization (light.hpp: nothing is copied into a light<T>), from any input
+/// range: a std::array<light, N> (unrolled at compile time), std::span, std::vector, a view
+/// (std::views::filter of the lights a shadow test lets through), or masked(lights, bits) /
+/// weighted(lights, weights) (visibility.hpp). Each light is read once. Anything else (a type
+/// without light_traits) is a compile error that names light_traits.
 /// The viewer: per features::view (eye_at_origin: v = normalize(-Q); fixed_direction, eye_point:
 /// from env.eye). For view_model::given, use the overload below that takes v.
 /// front_facing: read only for facing::flag.

@@ -56,3 +56,15 @@ foreach(case RANGE 0 1)
       PASS_REGULAR_EXPRESSION "view_model::given needs a view vector per point")
   endif()
 endforeach()
+
+# 4. A light type without a phong::light_traits specialization: one static_assert naming
+#    light_traits (case 0, the same type with its specialization, must compile).
+foreach(case RANGE 0 1)
+  add_test(NAME light_traits_reject_${case}
+           COMMAND ${CMAKE_CXX_COMPILER} -std=c++20 -fsyntax-only -Wall -Wextra -Wpedantic -Werror
+                   ${phong_reject_includes} -DPHONG_REJECT_CASE=${case} ${CMAKE_CURRENT_LIST_DIR}/light_traits_reject.cpp)
+  if(case EQUAL 1)
+    set_tests_properties(light_traits_reject_${case} PROPERTIES
+      PASS_REGULAR_EXPRESSION "phong::light_traits specialization")
+  endif()
+endforeach()

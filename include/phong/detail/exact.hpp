@@ -142,7 +142,8 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 }
 
 /// The specular power of add_specular: detail::cosine_power, or in the fast mode fast::pow_unit of
-/// the same clamped cosine. Float SIMD lanes keep cosine_power: the exact mode's power there already
+/// the same clamped cosine (SIMD lanes with one integer shininess m <= fast::pow_integer_max_exponent:
+/// fast::pow_integer, within the same bound). Float SIMD lanes keep cosine_power: the exact mode's power there already
 /// is a polynomial kernel of the same cost (detail/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
 /// fast::pow_unit_max_rel where x^m >= 2^-24); measured, fast::pow_unit made the batch rows 5-15 % slower.
 template <evaluation M, class T>
@@ -153,20 +154,60 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
     else return detail::cosine_power(x, scale, m);
 }
 
+/// The fast mode's shininess on SIMD lanes where every lane has the same integer n <=
+/// fast::pow_integer_max_exponent (shade_batch finds it once per call): the power is
+/// fast::pow_integer (binary powering: five multiplications for n = 32, against two polynomials),
+/// within the fast power's bound (fast::pow_integer_max_rel <= fast::pow_unit_max_rel).
+template <class T> struct integer_exponent {
+    unsigned n; ///< the shininess of every lane
+};
+template <evaluation M, class T>
+PHONG_HD constexpr T route_cosine_power(T x, T scale, const integer_exponent<T>& m)
+{
+    static_assert(M == evaluation::fast, "integer_exponent: the fast mode's power");
+    return fast::pow_integer(phong::clamp(x * scale, T(0), T(1)), m.n);
+}
+
+/// The shininess on SIMD lanes with m == 0 tested once (shade_batch: once per call, not per
+/// pair): the power of detail::cosine_power, the same bits.
+template <class T> struct lane_shininess {
+    T m;
+    mask_t<T> zero; ///< m == 0
+};
+template <evaluation M, class T>
+PHONG_HD constexpr T route_cosine_power(T x, T scale, const lane_shininess<T>& m)
+{
+    if constexpr (M == evaluation::fast && !std::is_same_v<scalar_t<T>, float>)
+        return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m.m);
+    else return math_traits<T>::pow_unit(phong::clamp(x * scale, T(0), T(1)), m.m, m.zero);
+}
+
+/// Where the shininess is 0, per lane (pow(0, 0) = 1 keeps the specular term on unlit cosines).
+template <class T, class Exponent> PHONG_HD constexpr mask_t<T> zero_exponent(const Exponent& m)
+{
+    if constexpr (std::is_same_v<Exponent, lane_shininess<T>>) return m.zero;
+    else if constexpr (std::is_same_v<Exponent, integer_exponent<T>>) return mask_t<T>(m.n == 0);
+    else return m == T(0);
+}
+
 /// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale (route_cosine_power).
 /// Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes that are lit and see
 /// the viewer (scalars: shade's light loop runs a point without a view vector with the specular
 /// term removed, detail::add_lights).
-template <evaluation M, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U>
-PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const light<U, Q>& L, T f, T x, T scale, T m,
+template <evaluation M, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent>
+PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x, T scale, const Exponent& m,
                                      [[maybe_unused]] mask_t<T> on)
 {
     glm::vec<3, T, Q>& sum = sum_of<term_kind::specular>(sums);
     if constexpr (std::is_floating_point_v<T>) {
-        if (x > T(0)) sum += in_type<T>(L.specular) * (f * route_cosine_power<M>(x, scale, m));
-        else if (m == T(0)) sum += in_type<T>(L.specular) * f; // cosine_power's pow(0, 0) = 1
+        if (x > T(0)) sum += in_type<T>(specular_of(L)) * (f * route_cosine_power<M>(x, scale, m));
+        else if (m == T(0)) sum += in_type<T>(specular_of(L)) * f; // cosine_power's pow(0, 0) = 1
     } else {
-        sum += in_type<T>(L.specular) * (f * phong::select(on, route_cosine_power<M>(x, scale, m), T(0)));
+        // Where no lane that is on has c > 0 (nor m = 0: pow(0, 0) = 1), every selected power is 0
+        // and the sum would only gain +0: the power is skipped for the whole step, as scalars skip
+        // it per point (the same bits).
+        if (!math_traits<T>::any(math_traits<T>::both(on, (x > T(0)) || zero_exponent<T>(m)))) return;
+        sum += in_type<T>(specular_of(L)) * (f * phong::select(on, route_cosine_power<M>(x, scale, m), T(0)));
     }
 }
 
@@ -193,21 +234,30 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
         const glm::vec<3, T, Q> sum = l + v;
         const T hh = phong::dot(sum, sum);
         return phong::select(hh >= T(scalar_t<T>(16 * er * er)), lit_inverse_length<M>(hh), T(0));
+    } else if constexpr (!std::is_same_v<mask_t<T>, bool>) {
+        // SIMD lanes: the lanes that are lit have l and v unit (or v = 0), so |l + v|^2 <= 4 and
+        // only the lower end (l = -v) needs a test; the others are selected away by add_light.
+        const glm::vec<3, T, Q> sum = l + v;
+        const T hh = phong::dot(sum, sum);
+        return phong::select(hh >= exact_min_square<T>(), detail::rsqrt_normal(hh), T(0));
     } else {
         return detail::inverse_halfway_length(l, v);
     }
 }
 
-/// One light's terms added to the sums. U is the light's scalar type (U = T, or float lights in
-/// double arithmetic: the stable mode's wider route); visibility: unweighted or a weight in [0, 1].
+/// One light's terms added to the sums. Light: a light_source (light.hpp) whose scalar type U is T,
+/// or float lights in double arithmetic (the stable mode's wider route); visibility: unweighted or
+/// a weight in [0, 1]; m: the shininess, T (SIMD lanes in shade_batch: lane_shininess<T>, or
+/// integer_exponent<T> in the fast mode).
 /// Dot products are taken with d = L.xyz - w Q itself and scaled by 1/|d| only for lit pairs:
 /// the signs that decide the branches do not wait for a square root and a division.
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class W>
-PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m, W visibility)
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent, class W>
+PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, const Exponent& m, W visibility)
 {
     using vec3 = glm::vec<3, T, Q>;
     const T w = light_w<F, T>(L);
-    const vec3 d = detail::homogeneous_difference<F.lights>(vec3(T(L.position.x), T(L.position.y), T(L.position.z)), w, s.position);
+    decltype(auto) p = position_of(L);
+    const vec3 d = detail::homogeneous_difference<F.lights>(vec3(T(p.x), T(p.y), T(p.z)), w, s.position);
     const T dd = phong::dot(d, d);
     const T nd = phong::dot(s.normal, d);
 
@@ -224,7 +274,12 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     add_ambient<F>(sums, L, f);
 
     const mask_t<T> on = lit<F>(s, dd, nd);
-    if (!math_traits<T>::any(on)) return;
+    // Scalars skip an unlit pair. SIMD lanes (a mask that is not a bool) do not test: every term
+    // below is selected by `on` (a lane that is off may compute inf or NaN, never added), and a
+    // branch per light on its lanes' signs mispredicts where lit and unlit steps mix.
+    if constexpr (std::is_same_v<mask_t<T>, bool>) {
+        if (!on) return;
+    }
     T nl;
     if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
         nl = nd / phong::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
@@ -232,7 +287,13 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
         if constexpr (F.spot == spot_model::none) inv = lit_inverse_length<F.mode>(dd); // lanes where dd is not normal are not lit: selected away
         nl = nd * inv;
     }
-    if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, on);
+    // Scalars with separate sums (light_sums): the diffuse term is added after the specular one,
+    // the same bits in either order, so that a light colour read for both terms (an adaptor
+    // returning one field as diffuse and specular) is not held in registers across the power
+    // (g++ 12 then spilled: 6 % slower per point). SIMD lanes and one sum (folded_sums): diffuse
+    // first (SIMD lanes measured slower the other way: the ray tracer's batch, 1 light).
+    constexpr bool diffuse_last = std::is_floating_point_v<T> && std::is_same_v<Sums<T, Q>, light_sums<T, Q>>;
+    if constexpr (F.diffuse && !diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
     [[maybe_unused]] const mask_t<T> specular_on = math_traits<T>::both(on, s.sees_viewer);
     if constexpr (F.specular == specular_model::phong) {
         add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
@@ -242,6 +303,7 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
             l = vec3(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
         add_specular<F.mode>(sums, L, f, nl + s.nv, route_inverse_halfway_length<F.mode>(l, s.view), m, specular_on);
     }
+    if constexpr (F.diffuse && diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
 }
 
 } // namespace phong::detail::exact

@@ -107,15 +107,20 @@ template <class V> PHONG_LANES_POWER_INLINE V exp2_nonpositive(const V& y_in)
     return mantissa * xsimd::bitwise_cast<V>(field);
 }
 
-/// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound).
-template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m)
+/// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound),
+/// with m_is_zero = (m == 0) given: a caller whose m is the same for many x (the light loop of
+/// shade_batch) computes it once.
+template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m, const typename V::batch_bool_type& m_is_zero)
 {
     V e;
     const V t = split_exponent(xsimd::max(x, V(std::numeric_limits<float>::min())), e); // 0, subnormals: 2^-126
     const V power = exp2_nonpositive(m * log2_of_split(t, e));
     // pow(0, m > 0) = 0 (2^(-126 m) above is not 0 for m < 1); pow(0, 0) = 1 comes out of y = 0.
-    return xsimd::select(x > V(0.0f) || m == V(0.0f), power, V(0.0f));
+    return xsimd::select(x > V(0.0f) || m_is_zero, power, V(0.0f));
 }
+
+/// x^m lane-wise for x in [0, 1], m >= 0 finite.
+template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m) { return pow_unit(x, m, m == V(0.0f)); }
 
 /// The documented relative error bound of pow_one_minus below, for y = m log2(1 - x) (results
 /// >= 2^-126): pow_unit's, plus the rounding of 1 - x (relative u, at most 2.9 u relative to

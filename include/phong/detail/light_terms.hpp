@@ -56,12 +56,12 @@ PHONG_HD constexpr decltype(auto) in_type(const glm::vec<N, U, Q>& v)
 }
 
 /// The light's w as F knows it: 1 for positional, 0 for directional lights, else L.position.w.
-template <features F, class T, class U, glm::qualifier Q>
-PHONG_HD constexpr T light_w(const light<U, Q>& L)
+template <features F, class T, class Light>
+PHONG_HD constexpr T light_w([[maybe_unused]] const Light& L)
 {
     if constexpr (F.lights == light_kind::positional) return T(1);
     else if constexpr (F.lights == light_kind::directional) return T(0);
-    else return T(L.position.w);
+    else return T(position_of(L).w);
 }
 
 /// x * 0 is 0 for finite x and NaN for NaN or inf: the NaN policy's poison of a point (its
@@ -94,19 +94,22 @@ PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T
 /// not attenuated. U is the light's own scalar type: float lights shaded in double keep float's
 /// cap on f (attenuation.hpp), so a light at Q gives the same large finite value as in float.
 /// visibility: unweighted, or the caller's weight in [0, 1] (phong::weighted: soft shadows).
-/// Cap: the scalar type whose cap applies (U's; float lights widened to double by the caller
-/// name float here, detail/stable_lanes.hpp).
-template <features F, class T, glm::qualifier Q, class U, class W, class Cap = U>
-PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
+/// Light: a light_source (light.hpp), read through light_traits. Cap: the scalar type whose cap
+/// applies (the light's; float lights widened to double by the caller name float here,
+/// detail/stable_lanes.hpp).
+template <features F, class T, glm::qualifier Q, class Light, class W, class Cap = light_scalar_t<Light>>
+PHONG_HD constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
                                   [[maybe_unused]] const glm::vec<3, T, Q>& l, [[maybe_unused]] W visibility)
 {
+    using U = light_scalar_t<Light>;
     T f = T(1);
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) {
         T fa;
+        decltype(auto) a = attenuation_of(L);
         if constexpr (F.attenuation == attenuation_model::polynomial)
-            fa = phong::attenuation_polynomial(distance, T(L.attenuation.constant), T(L.attenuation.linear), T(L.attenuation.quadratic));
+            fa = phong::attenuation_polynomial(distance, T(a.constant), T(a.linear), T(a.quadratic));
         else
-            fa = phong::attenuation_windowed(distance, T(L.attenuation.range));
+            fa = phong::attenuation_windowed(distance, T(a.range));
         if constexpr (!std::is_same_v<Cap, T>) fa = phong::min(fa, T(1 / attenuation_denominator_min<Cap>));
         if constexpr (F.lights == light_kind::any) f = phong::select(w > T(0), fa, T(1));
         else f = fa;
@@ -115,23 +118,24 @@ PHONG_HD constexpr T light_factor(const light<U, Q>& L, [[maybe_unused]] T dista
         // The model reads the axis's direction: validate accepts an axis within 1e-3 of unit
         // length, and a float axis is unit only to float precision (float lights shaded in double
         // would otherwise carry that rounding into the wider route's once-rounded colour).
-        glm::vec<3, T, Q> s(L.spot.direction);
+        decltype(auto) cone = spot_of(L);
+        glm::vec<3, T, Q> s(cone.direction);
         if constexpr (std::is_same_v<U, T>) s = phong::normalize_unscaled(s); // |s| within 1e-3 of 1: in range
         else s = phong::normalize(s);
-        if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, s, T(L.spot.exponent), T(L.spot.cos_cutoff));
-        else f = f * phong::spot_smooth(l, s, T(L.spot.cos_inner), T(L.spot.cos_outer));
+        if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, s, T(cone.exponent), T(cone.cos_cutoff));
+        else f = f * phong::spot_smooth(l, s, T(cone.cos_inner), T(cone.cos_outer));
     }
     if constexpr (!std::is_same_v<W, unweighted>) f = f * T(visibility);
     return f;
 }
 
 /// The light's ambient term: La_i f (or La_i, without features::attenuate_ambient).
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U>
-PHONG_HD constexpr void add_ambient(Sums<T, Q>& sums, const light<U, Q>& L, [[maybe_unused]] T f)
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light>
+PHONG_HD constexpr void add_ambient(Sums<T, Q>& sums, [[maybe_unused]] const Light& L, [[maybe_unused]] T f)
 {
     if constexpr (F.light_ambient) {
-        if constexpr (F.attenuate_ambient) sum_of<term_kind::ambient>(sums) += in_type<T>(L.ambient) * f;
-        else sum_of<term_kind::ambient>(sums) += in_type<T>(L.ambient);
+        if constexpr (F.attenuate_ambient) sum_of<term_kind::ambient>(sums) += in_type<T>(ambient_of(L)) * f;
+        else sum_of<term_kind::ambient>(sums) += in_type<T>(ambient_of(L));
     }
 }
 
@@ -141,13 +145,13 @@ template <features F> inline constexpr bool gated = F.specular_gate || F.specula
 
 /// The diffuse term Ld_i f max(n.l, 0) of a lit pair (on: the lanes that are lit; gated: on
 /// already implies n.l > 0).
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U>
-PHONG_HD constexpr void add_diffuse(Sums<T, Q>& sums, const light<U, Q>& L, T f, T nl, [[maybe_unused]] mask_t<T> on)
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light>
+PHONG_HD constexpr void add_diffuse(Sums<T, Q>& sums, const Light& L, T f, T nl, [[maybe_unused]] mask_t<T> on)
 {
     const T lambert = gated<F> ? nl : phong::max(nl, T(0));
     glm::vec<3, T, Q>& sum = sum_of<term_kind::diffuse>(sums);
-    if constexpr (std::is_floating_point_v<T>) sum += in_type<T>(L.diffuse) * (f * lambert);
-    else sum += in_type<T>(L.diffuse) * (f * phong::select(on, lambert, T(0)));
+    if constexpr (std::is_floating_point_v<T>) sum += in_type<T>(diffuse_of(L)) * (f * lambert);
+    else sum += in_type<T>(diffuse_of(L)) * (f * phong::select(on, lambert, T(0)));
 }
 
 } // namespace phong::detail

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <type_traits>
 #include <utility>
 
@@ -31,10 +32,11 @@ PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, c
     else return exact::prepare<F>(position, normal, given_view, env, front_facing);
 }
 
-/// One light's terms added to the sums, by F's route (U: the light's scalar type; visibility:
-/// unweighted, or a weight that multiplies f).
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class W = unweighted>
-PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const light<U, Q>& L, T m,
+/// One light's terms added to the sums, by F's route (Light: a light_source, light.hpp, read
+/// through light_traits; m: the shininess, T, or exact::lane_shininess<T> / integer_exponent<T> in
+/// shade_batch's lanes; visibility: unweighted, or a weight that multiplies f).
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent, class W = unweighted>
+PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const Light& L, const Exponent& m,
                                   W visibility = {})
 {
     if constexpr (F.mode == evaluation::stable) stable::add_light<F>(sums, s, L, m, visibility);
@@ -46,15 +48,18 @@ template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::t
 
 /// Checks one light against validate(): a compile error in constant evaluation, an assertion in
 /// debug builds, nothing under NDEBUG (not even evaluated). Done as the light is shaded, so a
-/// single-pass range of lights is read once.
-template <class U, glm::qualifier Q>
-PHONG_HD constexpr void check_light([[maybe_unused]] const light<U, Q>& L)
+/// single-pass range of lights is read once. A light of the renderer's own type is checked as the
+/// light<U> it stands for (to_light: a copy, in debug builds and constant evaluation only).
+template <class Light>
+PHONG_HD constexpr void check_light([[maybe_unused]] const Light& L)
 {
-    if constexpr (std::is_floating_point_v<U>) {
+    if constexpr (std::is_floating_point_v<light_scalar_t<Light>>) {
 #if defined(NDEBUG)
         if (!std::is_constant_evaluated()) return;
 #endif
-        const validation v = phong::validate(L);
+        validation v{};
+        if constexpr (std::is_same_v<Light, light<light_scalar_t<Light>, light_qualifier_v<Light>>>) v = phong::validate(L);
+        else v = phong::validate(phong::to_light(L));
         require(static_cast<bool>(v), v.message());
     }
 }
@@ -63,6 +68,19 @@ template <class R> struct is_masked : std::false_type {};
 template <class R> struct is_masked<masked_lights<R>> : std::true_type {};
 template <class R> struct is_weighted : std::false_type {};
 template <class R, class W> struct is_weighted<weighted_lights<R, W>> : std::true_type {};
+
+/// The range a light list iterates: the list itself, or the one inside masked() / weighted().
+template <class R> struct iterated_range { using type = R; };
+template <class R> struct iterated_range<masked_lights<R>> { using type = std::remove_cvref_t<R>; };
+template <class R, class W> struct iterated_range<weighted_lights<R, W>> { using type = std::remove_cvref_t<R>; };
+
+/// What shade<F> takes as lights: a range (masked() and weighted() ones too) whose elements are
+/// light_sources (light<T>, or a type with a light_traits specialization).
+/// (std::begin, not std::ranges: clang++ 14 with libstdc++ cannot compile its range concepts.)
+template <class R> using list_element_t = decltype(*std::begin(std::declval<R&>()));
+template <class Lights>
+concept light_list = requires { typename list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>; } &&
+                     light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>;
 
 /// F without its specular term.
 template <features F>

@@ -158,12 +158,13 @@ PHONG_HD constexpr T specular_factor(const surface_frame<T, Q>& s, const light_u
 }
 
 /// One light's terms added to the sums. A SIMD batch takes the twofold depth when any lane needs it.
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class U, class W>
-PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const light<U, Q>& L, T m, W visibility)
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class W>
+PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, T m, W visibility)
 {
     using vec3 = glm::vec<3, T, Q>;
     const T w = light_w<F, T>(L);
-    const twofold_vector<T, Q> d = difference_twofold<F.lights>(vec3(T(L.position.x), T(L.position.y), T(L.position.z)), w, s.position);
+    decltype(auto) p = position_of(L);
+    const twofold_vector<T, Q> d = difference_twofold<F.lights>(vec3(T(p.x), T(p.y), T(p.z)), w, s.position);
 
     // Twofold unless stable_twofold_above = M > 0 and no lane's shininess is above M.
     bool twofold = F.stable_twofold_above == 0 ||
@@ -188,7 +189,7 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
         T spec = specular_factor<F>(s, u, twofold, m);
         if constexpr (!std::is_floating_point_v<T>) // lanes computed but off, or without a view vector
             spec = phong::select(math_traits<T>::both(on, s.sees_viewer), spec, T(0));
-        sum_of<term_kind::specular>(sums) += in_type<T>(L.specular) * (f * spec);
+        sum_of<term_kind::specular>(sums) += in_type<T>(specular_of(L)) * (f * spec);
     }
 }
 

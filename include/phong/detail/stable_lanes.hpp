@@ -250,7 +250,7 @@ inline half_terms<D> half_light(const half_frame<D, Q>& s, const light<double, Q
     const vec3 l(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
     D distance(0.0);
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = dd * inv;
-    const D f = light_factor<F, D, Q, double, unweighted, float>(L, distance, w, l, unweighted{});
+    const D f = light_factor<F, D, Q, light<double, Q>, unweighted, float>(L, distance, w, l, unweighted{});
     auto on = s.defined && (inv > D(0.0));
     if constexpr (gated<F>) on = on && (nd > D(0.0));
     const D nl = nd * inv;
