@@ -1092,6 +1092,7 @@ void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, con
     constexpr bool shared = folded || std::is_same_v<MaterialLanes, unfolded_shared_lanes<V, Q>>;
     step_lanes<V, Q> in[steps_per_call];
     color<F, V, Q> c[steps_per_call];
+    steps = std::min(steps, steps_per_call); // callers pass at most steps_per_call; said here for g++'s -Wstringop-overflow
     for (std::size_t k = 0; k < steps; ++k) load_step<F, V, Points, T, Q>(i + k * W, count, points, in[k]);
 
     alignas(64) std::uint64_t tail_bits[W]; // a tail's masks, 0 past count (full steps read them in place)
