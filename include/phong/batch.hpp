@@ -1077,6 +1077,14 @@ void store_step(const color<F, V, Q>& c, std::size_t i, std::size_t count, const
     }
 }
 
+// g++ -O1 reports `in` below as maybe uninitialized when it passes the array to shade_lanes, which
+// reads in[k] only for k < steps, all loaded first: a false positive (found by CI's consumer build
+// with PHONG_NO_XSIMD -O1 -march=native). Silenced for this function only; with xsimd the region
+// opened before <xsimd/xsimd.hpp> covers it already.
+#if defined(__GNUC__) && !defined(__clang__)
+#  pragma GCC diagnostic push
+#  pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 /// Up to steps_per_call batch steps from point i (steps full steps of W points, or one step of
 /// count < W points: a tail), through one call of shade_lanes. Light masks of full steps are
 /// read in place. `materials` gives each step's material lanes (shared_lanes, per_point_lanes or
@@ -1116,6 +1124,9 @@ void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, con
     }
     for (std::size_t k = 0; k < steps; ++k) store_step<F, V, T, Q>(c[k], i + k * W, count, out);
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#  pragma GCC diagnostic pop
+#endif
 
 /// The bytes [p, p + bytes) and [q, q + bytes_q) share at least one byte (std::less: a total
 /// order on pointers, also between unrelated objects).
