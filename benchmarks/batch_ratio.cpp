@@ -38,11 +38,7 @@ template <bool Blinn, phong::evaluation Mode> void compare(std::size_t N, std::s
 {
     const scene sc = make_scene(input_set::typical, K);
     const points<float> pts = make_points<float>(input_set::typical, N, K);
-    std::vector<float> px(N), py(N), pz(N), nx(N), ny(N), nz(N), r(N), g(N), b(N);
-    for (std::size_t i = 0; i < N; ++i) {
-        px[i] = pts.position[i].x, py[i] = pts.position[i].y, pz[i] = pts.position[i].z;
-        nx[i] = pts.normal[i].x, ny[i] = pts.normal[i].y, nz[i] = pts.normal[i].z;
-    }
+    soa_float_points s(pts);
     const std::vector<phong::light<float>> lights = lights_of<float>(sc);
     const phong::material<float> mat = material_of<float>(sc);
     constexpr phong::features F = [] {
@@ -56,10 +52,10 @@ template <bool Blinn, phong::evaluation Mode> void compare(std::size_t N, std::s
     for (int rep = 0; rep < 60; ++rep) {
         const double t0 = thread_seconds();
         const hand_simd::constants c = hand_simd::make_constants(lights, mat); // per call, as shade_batch
-        hand_simd::shade<Blinn>(px.data(), py.data(), pz.data(), nx.data(), ny.data(), nz.data(), N, c, r.data(), g.data(), b.data());
+        hand_simd::shade<Blinn>(s.px.data(), s.py.data(), s.pz.data(), s.nx.data(), s.ny.data(), s.nz.data(), N, c, s.r.data(), s.g.data(), s.b.data());
         const double t1 = thread_seconds();
-        phong::shade_batch<F>(phong::soa3<float>{S(px), S(py), S(pz)}, phong::soa3<float>{S(nx), S(ny), S(nz)}, mat,
-                              std::span<const phong::light<float>>(lights), phong::soa_rgba<float>{r, g, b, {}});
+        phong::shade_batch<F>(phong::soa3<float>{S(s.px), S(s.py), S(s.pz)}, phong::soa3<float>{S(s.nx), S(s.ny), S(s.nz)}, mat,
+                              std::span<const phong::light<float>>(lights), phong::soa_rgba<float>{s.r, s.g, s.b, {}});
         const double t2 = thread_seconds();
         best_hand = std::min(best_hand, t1 - t0);
         best_batch = std::min(best_batch, t2 - t1);

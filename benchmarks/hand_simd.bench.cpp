@@ -25,18 +25,14 @@ void hand_row(benchmark::State& state, input_set set, std::size_t N, std::size_t
 {
     const scene sc = make_scene(set, K);
     const points<float>& pts = cached_points<float>(set, N, K);
-    std::vector<float> px(N), py(N), pz(N), nx(N), ny(N), nz(N), r(N), g(N), b(N);
-    for (std::size_t i = 0; i < N; ++i) {
-        px[i] = pts.position[i].x, py[i] = pts.position[i].y, pz[i] = pts.position[i].z;
-        nx[i] = pts.normal[i].x, ny[i] = pts.normal[i].y, nz[i] = pts.normal[i].z;
-    }
+    soa_float_points s(pts);
     const std::vector<phong::light<float>> lights = lights_of<float>(sc);
     const phong::material<float> mat = material_of<float>(sc);
 
     // Same model as phong's rows, or no row.
     const hand_simd::constants c = hand_simd::make_constants(lights, mat);
-    hand_simd::shade<Blinn>(px.data(), py.data(), pz.data(), nx.data(), ny.data(), nz.data(), N, c, r.data(), g.data(), b.data());
-    const double diff = hand_simd::max_difference_to_scalar<Blinn>(pts.position, pts.normal, lights, mat, r, g, b);
+    hand_simd::shade<Blinn>(s.px.data(), s.py.data(), s.pz.data(), s.nx.data(), s.ny.data(), s.nz.data(), N, c, s.r.data(), s.g.data(), s.b.data());
+    const double diff = hand_simd::max_difference_to_scalar<Blinn>(pts.position, pts.normal, lights, mat, s.r, s.g, s.b);
     if (!(diff <= hand_simd::check_tolerance(mat.shininess))) {
         state.SkipWithError(("hand_simd disagrees with phong::shade<F>: max relative difference " + std::to_string(diff) +
                              " > tolerance " + std::to_string(hand_simd::check_tolerance(mat.shininess)))
@@ -47,12 +43,12 @@ void hand_row(benchmark::State& state, input_set set, std::size_t N, std::size_t
     for (auto _ : state) {
         // Constants hoisted per call, as shade_batch broadcasts its lights per call.
         const hand_simd::constants cc = hand_simd::make_constants(lights, mat);
-        hand_simd::shade<Blinn>(px.data(), py.data(), pz.data(), nx.data(), ny.data(), nz.data(), N, cc, r.data(), g.data(), b.data());
-        benchmark::DoNotOptimize(r.data());
+        hand_simd::shade<Blinn>(s.px.data(), s.py.data(), s.pz.data(), s.nx.data(), s.ny.data(), s.nz.data(), N, cc, s.r.data(), s.g.data(), s.b.data());
+        benchmark::DoNotOptimize(s.r.data());
         benchmark::ClobberMemory();
     }
     std::vector<glm::vec3> rgb(N);
-    for (std::size_t i = 0; i < N; ++i) rgb[i] = {r[i], g[i], b[i]};
+    for (std::size_t i = 0; i < N; ++i) rgb[i] = {s.r[i], s.g[i], s.b[i]};
     report(state, N, K, rgb, cached_reference(hand_simd::model(Blinn), set, N, K), -1);
     state.counters["check_max_rel_diff"] = diff; // against phong::shade<F>, float
     state.SetLabel(hand_simd::isa_name);

@@ -177,6 +177,20 @@ struct points {
     std::vector<glm::vec<3, T>> position, normal;
 };
 
+/// Float points as SoA arrays, with SoA colour outputs r, g, b of the same length: the layout of
+/// the hand-written kernel (support/hand_simd.hpp) and of shade_batch's soa3 inputs.
+struct soa_float_points {
+    std::vector<float> px, py, pz, nx, ny, nz, r, g, b;
+    explicit soa_float_points(const points<float>& pts)
+    {
+        for (std::vector<float>* v : {&px, &py, &pz, &nx, &ny, &nz, &r, &g, &b}) v->resize(pts.position.size());
+        for (std::size_t i = 0; i < pts.position.size(); ++i) {
+            px[i] = pts.position[i].x, py[i] = pts.position[i].y, pz[i] = pts.position[i].z;
+            nx[i] = pts.normal[i].x, ny[i] = pts.normal[i].y, nz[i] = pts.normal[i].z;
+        }
+    }
+};
+
 template <class T>
 phong::material<T> material_of(const scene& s)
 {

@@ -414,6 +414,28 @@ template <int b> __m256 interleave8_block(__m256 x, __m256 y, __m256 z)
 template <class T, glm::qualifier Q> inline constexpr bool material_is_14_scalars =
     sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T) && sizeof(material<T, Q>) == 14 * sizeof(T) && std::is_standard_layout_v<material<T, Q>>;
 
+/// The material whose 14 fields, in material's order (ka, kd, ks, emission, shininess, alpha),
+/// are field[0..13].
+template <class V, glm::qualifier Q> material<V, Q> material_of_fields(const V (&field)[14])
+{
+    return {{field[0], field[1], field[2]}, {field[3], field[4], field[5]}, {field[6], field[7], field[8]},
+            {field[9], field[10], field[11]}, field[12], field[13]};
+}
+
+/// Material m's 14 fields, in the same order, into column k of lane (lane[f][k]): the scalar
+/// transpose of a step's (or a table's) materials into field lanes.
+template <class T, glm::qualifier Q, std::size_t W> void put_fields(T (&lane)[14][W], std::size_t k, const material<T, Q>& m)
+{
+    for (int c = 0; c < 3; ++c) {
+        lane[c][k] = m.ka[c];
+        lane[3 + c][k] = m.kd[c];
+        lane[6 + c][k] = m.ks[c];
+        lane[9 + c][k] = m.emission[c];
+    }
+    lane[12][k] = m.shininess;
+    lane[13][k] = m.alpha;
+}
+
 /// One material of lanes: lane k takes base[element[k]] (k < W). The same values as splatting
 /// each material, so the same bits downstream. With gather_instructions (a material table: small,
 /// in cache) and AVX-512 or AVX2: one gather instruction per field (14); otherwise a scalar
@@ -435,8 +457,7 @@ material<V, Q> gather(const material<T, Q>* base, const std::uint32_t* element)
             const __m256i index = _mm256_mullo_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(element)), _mm256_set1_epi32(14));
             for (int f = 0; f < 14; ++f) field[f] = V(_mm512_i32gather_pd(index, scalars + f, sizeof(T)));
         }
-        return {{field[0], field[1], field[2]}, {field[3], field[4], field[5]}, {field[6], field[7], field[8]},
-                {field[9], field[10], field[11]}, field[12], field[13]};
+        return material_of_fields<V, Q>(field);
     }
 #endif
 #if PHONG_HAS_XSIMD && defined(__AVX2__)
@@ -445,32 +466,14 @@ material<V, Q> gather(const material<T, Q>* base, const std::uint32_t* element)
         const __m256i index = _mm256_mullo_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(element)), _mm256_set1_epi32(14));
         V field[14];
         for (int f = 0; f < 14; ++f) field[f] = V(_mm256_i32gather_ps(scalars + f, index, sizeof(T)));
-        return {{field[0], field[1], field[2]}, {field[3], field[4], field[5]}, {field[6], field[7], field[8]},
-                {field[9], field[10], field[11]}, field[12], field[13]};
+        return material_of_fields<V, Q>(field);
     }
 #endif
     alignas(64) T lane[14][W];
-    for (std::size_t k = 0; k < W; ++k) {
-        const material<T, Q>& mk = base[element[k]];
-        for (int c = 0; c < 3; ++c) {
-            lane[c][k] = mk.ka[c];
-            lane[3 + c][k] = mk.kd[c];
-            lane[6 + c][k] = mk.ks[c];
-            lane[9 + c][k] = mk.emission[c];
-        }
-        lane[12][k] = mk.shininess;
-        lane[13][k] = mk.alpha;
-    }
-    material<V, Q> out;
-    for (int c = 0; c < 3; ++c) {
-        out.ka[c] = load<V>(lane[c]);
-        out.kd[c] = load<V>(lane[3 + c]);
-        out.ks[c] = load<V>(lane[6 + c]);
-        out.emission[c] = load<V>(lane[9 + c]);
-    }
-    out.shininess = load<V>(lane[12]);
-    out.alpha = load<V>(lane[13]);
-    return out;
+    for (std::size_t k = 0; k < W; ++k) put_fields(lane, k, base[element[k]]);
+    V field[14];
+    for (int f = 0; f < 14; ++f) field[f] = load<V>(lane[f]);
+    return material_of_fields<V, Q>(field);
 }
 
 /// The element indices 0, 1, ..., count - 1, then count - 1 repeated (a tail's pad lanes take
@@ -510,8 +513,7 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
             if constexpr (avx2_float_lanes<V, T>) field[f] = V(_mm256_permutevar8x32_ps(columns[std::size_t(f)], id));
 #endif
         }
-        return {{field[0], field[1], field[2]}, {field[3], field[4], field[5]}, {field[6], field[7], field[8]},
-                {field[9], field[10], field[11]}, field[12], field[13]};
+        return material_of_fields<V, Q>(field);
     }
     /// Fills columns when the table is small enough and the lanes have the permute (see columns).
     void make_columns()
@@ -528,17 +530,7 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
         if constexpr (permutable) {
             if (table.empty() || table.size() > W) return;
             alignas(64) T lane[14][W];
-            for (std::size_t k = 0; k < W; ++k) {
-                const material<T, Q>& m = table[std::min(k, table.size() - 1)];
-                for (int c = 0; c < 3; ++c) {
-                    lane[c][k] = m.ka[c];
-                    lane[3 + c][k] = m.kd[c];
-                    lane[6 + c][k] = m.ks[c];
-                    lane[9 + c][k] = m.emission[c];
-                }
-                lane[12][k] = m.shininess;
-                lane[13][k] = m.alpha;
-            }
+            for (std::size_t k = 0; k < W; ++k) put_fields(lane, k, table[std::min(k, table.size() - 1)]);
             for (int f = 0; f < 14; ++f) columns.push_back(load<V>(lane[f]));
         }
     }
