@@ -48,8 +48,8 @@ template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::t
 
 /// Checks one light against validate(): a compile error in constant evaluation, an assertion in
 /// debug builds, nothing under NDEBUG (not even evaluated). Done as the light is shaded, so a
-/// single-pass range of lights is read once. A light of the renderer's own type is checked as the
-/// light<U> it stands for (to_light: a copy, in debug builds and constant evaluation only).
+/// single-pass range of lights is read once. Every light is checked as the light<U> it stands for
+/// (to_light: a copy, in debug builds and constant evaluation only).
 template <class Light>
 PHONG_HD constexpr void check_light([[maybe_unused]] const Light& L)
 {
@@ -57,9 +57,7 @@ PHONG_HD constexpr void check_light([[maybe_unused]] const Light& L)
 #if defined(NDEBUG)
         if (!std::is_constant_evaluated()) return;
 #endif
-        validation v{};
-        if constexpr (std::is_same_v<Light, light<light_scalar_t<Light>, light_qualifier_v<Light>>>) v = phong::validate(L);
-        else v = phong::validate(phong::to_light(L));
+        const validation v = phong::validate(phong::to_light(L));
         require(static_cast<bool>(v), v.message());
     }
 }

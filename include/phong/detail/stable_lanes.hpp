@@ -205,7 +205,7 @@ inline surface_frame<V, Q> prepare(const glm::vec<3, V, Q>& position, const glm:
         vec3 e = eye[h];                                                            // fixed_direction
         if constexpr (F.view == view_model::eye_at_origin) e = -pos[h];
         if constexpr (F.view == view_model::given) e = given[h];
-        if constexpr (F.view == view_model::eye_point) e = eye[h] - pos[h] * eye_w[h]; // w Q exact in double
+        if constexpr (F.view == view_model::eye_point) e = detail::homogeneous_difference(eye[h], eye_w[h], pos[h]); // w Q exact in double
         const D ee = phong::dot(e, e), nn = phong::dot(nrm[h], nrm[h]);
         const D inv_e = inverse_length(ee), inv_n = inverse_length(nn);
         f.view = e * inv_e;
