@@ -1,8 +1,9 @@
 // The scalar kernels behind the model, each beside what a user would call instead: phong::pow_unit
 // (the specular and spot power, inline, detail/power.hpp) against std::pow, float and double; the
 // fast mode's approximations (phong/fast_math.hpp) beside their exact twins: fast::pow_unit against
-// phong::pow_unit, fast::rsqrt against phong::rsqrt (bound counter: their published constants; the
-// fast power's error over results >= 2^-24, where its relative bound holds).
+// phong::pow_unit, fast::pow_integer likewise (exponents 1..64 in turn), fast::rsqrt against
+// phong::rsqrt (bound counter: their published constants; the fast power's error over results
+// >= 2^-24, where its relative bound holds).
 // Time per call over 65536 (x, m) pairs of the lighting model's range (x in (0, 1], a third of them
 // within 1e-3 of 1 as near a highlight; m in [1, 200] and up to 1e4), and the error of every result
 // in T's normal range against pow in the __float128 reference type (tests/support/wide.hpp).
@@ -51,7 +52,15 @@ const power_inputs<T>& inputs()
     return in;
 }
 
-enum class power_kernel { phong, std_pow, fast };
+enum class power_kernel { phong, std_pow, fast, fast_integer };
+
+/// The exponent of pair i: the inputs' m, or for fast::pow_integer the integers 1..64 in turn (an
+/// n that changes every call mispredicts the squaring loop's branches: this row is pow_integer's
+/// error, and its time's worst case; shade_batch calls it with one n for a whole call).
+template <class T, power_kernel Kernel> T exponent_of(const power_inputs<T>& in, std::size_t i)
+{
+    return Kernel == power_kernel::fast_integer ? T(1 + i % phong::fast::pow_integer_max_exponent) : in.m[i];
+}
 
 template <class T, power_kernel Kernel>
 void power_row(benchmark::State& state)
@@ -62,6 +71,8 @@ void power_row(benchmark::State& state)
         for (std::size_t i = 0; i < n_pairs; ++i) {
             if constexpr (Kernel == power_kernel::phong) out[i] = phong::pow_unit(in.x[i], in.m[i]);
             else if constexpr (Kernel == power_kernel::fast) out[i] = phong::fast::pow_unit(in.x[i], in.m[i]);
+            else if constexpr (Kernel == power_kernel::fast_integer)
+                out[i] = phong::fast::pow_integer(in.x[i], unsigned(exponent_of<T, Kernel>(in, i)));
             else out[i] = T(std::pow(in.x[i], in.m[i]));
         }
         benchmark::DoNotOptimize(out.data());
@@ -73,7 +84,7 @@ void power_row(benchmark::State& state)
     std::vector<double> ulps;
     for (std::size_t i = 0; i < n_pairs; ++i) {
         if (!std::isfinite(out[i])) nan += 1;
-        const phong_test::wide ref = phong_test::wpow(phong_test::wide(in.x[i]), phong_test::wide(in.m[i]));
+        const phong_test::wide ref = phong_test::wpow(phong_test::wide(in.x[i]), phong_test::wide(exponent_of<T, Kernel>(in, i)));
         if (ref < phong_test::wide(Kernel == power_kernel::fast ? T(0x1p-24) : std::numeric_limits<T>::min())) continue;
         max_rel = std::max(max_rel, phong_test::error_rel(out[i], ref));
         ulps.push_back(phong_test::error_ulp(out[i], ref));
@@ -88,7 +99,9 @@ void power_row(benchmark::State& state)
     state.counters["p99_ulp"] = p99;
     state.counters["max_ulp"] = max_ulp;
     state.counters["nan_count"] = nan;
-    state.counters["bound"] = Kernel == power_kernel::fast ? phong::fast::pow_unit_max_rel : -1;
+    state.counters["bound"] = Kernel == power_kernel::fast           ? phong::fast::pow_unit_max_rel
+                              : Kernel == power_kernel::fast_integer ? phong::fast::pow_integer_max_rel<T>
+                                                                     : -1;
     state.counters["K"] = 1;
     state.counters["N"] = double(n_pairs);
 }
@@ -128,6 +141,8 @@ const bool registered = [] {
     benchmark::RegisterBenchmark(("kernel.std_pow.double" + tail).c_str(), power_row<double, power_kernel::std_pow>);
     benchmark::RegisterBenchmark(("kernel.fast_pow_unit.double" + tail).c_str(), power_row<double, power_kernel::fast>);
     benchmark::RegisterBenchmark(("kernel.rsqrt.float" + tail).c_str(), rsqrt_row<float, false>);
+    benchmark::RegisterBenchmark(("kernel.fast_pow_integer.float" + tail).c_str(), power_row<float, power_kernel::fast_integer>);
+    benchmark::RegisterBenchmark(("kernel.fast_pow_integer.double" + tail).c_str(), power_row<double, power_kernel::fast_integer>);
     benchmark::RegisterBenchmark(("kernel.fast_rsqrt.float" + tail).c_str(), rsqrt_row<float, true>);
     benchmark::RegisterBenchmark(("kernel.rsqrt.double" + tail).c_str(), rsqrt_row<double, false>);
     benchmark::RegisterBenchmark(("kernel.fast_rsqrt.double" + tail).c_str(), rsqrt_row<double, true>);

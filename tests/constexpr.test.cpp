@@ -349,6 +349,10 @@ template <class T> constexpr bool fast_kernels()
     static_assert(within_rel(phong::fast::pow_unit(T(0.75), T(10)), 0.056313514709472656, pow_unit_max_rel)); // 3^10 / 4^10
     static_assert(within_rel(phong::fast::pow_unit(T(0.9), T(0.5)), 0.94868329805051379, pow_unit_max_rel));  // sqrt(0.9)
     static_assert(phong::fast::pow_unit(T(1), T(200)) == T(1) && phong::fast::pow_unit(T(0), T(3)) == T(0));
+    static_assert(phong::fast::pow_integer(T(0.5), 10) == T(0x1p-10) && phong::fast::pow_integer(T(0), 0) == T(1) &&
+                  phong::fast::pow_integer(T(0), 5) == T(0)); // powers of two are exact; pow(0, 0) = 1
+    static_assert(within_rel(phong::fast::pow_integer(T(0.75), 32), 0.00010045242572063329, phong::fast::pow_integer_max_rel<T>)); // (3/4)^32
+    static_assert(within_rel(phong::fast::pow_integer(T(0.9375), 63), 0.01714708944101614, phong::fast::pow_integer_max_rel<T>)); // (15/16)^63
     static_assert(within_rel(phong::fast::rsqrt(T(4)), 0.5, rsqrt_max_rel<T>));
     static_assert(within_rel(phong::fast::rsqrt(T(3)), 0.57735026918962576, rsqrt_max_rel<T>));
     constexpr double shade_rel = pow_unit_max_rel + 16 * double(std::numeric_limits<T>::epsilon());
