@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,18 @@ void other(const char*, const char*, int) {}
 
 const std::array<light<float>, 1> one_light{light<float>::seed000({0, 0, 1, 0}, {1, 1, 1})};
 
+/// A renderer's own light type (one colour, a point light), read through light_traits.
+struct point_light {
+    glm::vec3 position, colour;
+};
+
 } // namespace
+
+template <> struct phong::light_traits<point_light> {
+    static glm::vec4 position(const point_light& L) { return glm::vec4(L.position, 1.0f); }
+    static const glm::vec3& diffuse(const point_light& L) { return L.colour; }
+    static const glm::vec3& specular(const point_light& L) { return L.colour; }
+};
 
 TEST_CASE("set_precondition_handler: returns the previous handler; nullptr restores the default")
 {
@@ -68,6 +80,25 @@ TEST_CASE("a failed precondition calls the installed handler with validate()'s m
         CHECK(k.file.find("phong") != std::string::npos);
         CHECK(k.line > 0);
     }
+#endif
+}
+
+TEST_CASE("a renderer's own light type: a failed precondition names the light<T> field it stands for")
+{
+    calls.clear();
+    const precondition_handler previous = set_precondition_handler(&record);
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const std::array<point_light, 3> bad{point_light{{0, 0, 2}, {1, -0.5f, 1}}, point_light{{nan, 0, 2}, {1, 1, 1}},
+                                         point_light{{0, inf, 2}, {1, 1, 1}}};
+    for (const point_light& L : bad) (void)shade<features{}>(glm::vec3(0, 0, -2), glm::vec3(0, 0, 1), material<float>{}, std::array{L});
+    set_precondition_handler(previous);
+#if defined(NDEBUG)
+    CHECK(calls.empty());
+#else
+    REQUIRE(calls.size() == 3);
+    CHECK(calls[0].message.find("light.diffuse") == 0);
+    CHECK(calls[1].message.find("light.position") == 0);
+    CHECK(calls[2].message.find("light.position") == 0);
 #endif
 }
 
