@@ -278,3 +278,38 @@ TEST_CASE("shade_batch: width and layer")
 }
 
 
+
+#if PHONG_HAS_XSIMD
+TEST_CASE_TEMPLATE("shade_batch lanes: normal_square is exactly 'min <= dd <= max', lane by lane", T, float, double)
+{
+    // The exact mode's range test of a squared length (one vfpclass on AVX-512DQ) against the
+    // definition evaluated in scalars, on every class of number: zeros, subnormals, the normal
+    // range's ends, negatives, infinities, NaN.
+    using V = simd_batch<T>;
+    constexpr std::size_t W = batch_width<T>;
+    using lim = std::numeric_limits<T>;
+    const std::vector<T> values{T(0), -T(0), lim::denorm_min(), std::nextafter(lim::min(), T(0)), lim::min(),
+                                std::nextafter(lim::min(), T(1)), T(0.5), T(1), T(3e7), std::nextafter(lim::max(), T(0)),
+                                lim::max(), lim::infinity(), -lim::infinity(), lim::quiet_NaN(), -lim::quiet_NaN(), -lim::min(),
+                                -T(1), -lim::max(), -lim::denorm_min()};
+    for (std::size_t start = 0; start < values.size(); start += W) {
+        alignas(64) T x[W];
+        alignas(64) T on_values[W];
+        for (std::size_t k = 0; k < W; ++k) {
+            x[k] = values[(start + k) % values.size()];
+            on_values[k] = k % 3 == 1 ? T(0) : T(1); // a mask with some lanes off
+        }
+        const V lanes = V::load_aligned(x);
+        const auto on = V::load_aligned(on_values) > V(T(0));
+        alignas(64) T got[W], got_and[W];
+        phong::select(detail::normal_square(lanes), V(T(1)), V(T(0))).store_aligned(got);
+        phong::select(detail::both_normal_square(on, lanes), V(T(1)), V(T(0))).store_aligned(got_and);
+        for (std::size_t k = 0; k < W; ++k) {
+            CAPTURE(x[k]);
+            const bool expected = x[k] >= lim::min() && x[k] <= lim::max();
+            CHECK((got[k] == T(1)) == expected);
+            CHECK((got_and[k] == T(1)) == (expected && on_values[k] == T(1)));
+        }
+    }
+}
+#endif

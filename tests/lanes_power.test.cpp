@@ -175,6 +175,13 @@ TEST_CASE("shade_batch's float power: edges")
             CHECK(lanes_pow(0.3f, m) == 1.0f);
         }
     }
+    // Below the domain: x <= 0 and NaN are powered like 0 (shade_batch passes an unclamped-below cosine).
+    for (float x : {-0.0f, -tiny, -0.5f, -1.0f, -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN()}) {
+        CAPTURE(x);
+        CHECK(lanes_pow(x, 32.0f) == 0.0f);
+        CHECK(lanes_pow(x, 0.5f) == 0.0f);
+        CHECK(lanes_pow(x, 0.0f) == 1.0f);
+    }
     CHECK(lanes_pow(0.5f, 1.0f) == 0.5f); // powers of two: y integral, r = 0, 2^k exact
     CHECK(lanes_pow(0.25f, 2.0f) == 0.0625f);
     CHECK(lanes_pow(0.5f, 149.0f) <= std::numeric_limits<float>::min()); // below 2^-126: within 2^-126 of 0

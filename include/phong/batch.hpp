@@ -94,6 +94,41 @@ struct math_traits<xsimd::batch<T, A>> {
             return V(T(1)) / xsimd::sqrt(x);
         }
     }
+    /// x >= min and x <= max of T (x a positive normal number: the exact mode's test of a squared
+    /// length). AVX-512DQ: one vfpclass for every other class (zeros, subnormals, negatives,
+    /// infinities, NaN) in place of two compares.
+    PHONG_LANES_INLINE static mask positive_normal(const V& x)
+    {
+#if defined(__AVX512DQ__)
+        if constexpr (float_lanes && std::is_base_of_v<xsimd::avx512f, A>)
+            return mask(typename mask::register_type(_knot_mask16(_mm512_fpclass_ps_mask(x, 0xff))));
+        else if constexpr (std::is_same_v<T, double> && std::is_base_of_v<xsimd::avx512f, A>)
+            return mask(typename mask::register_type(_knot_mask8(_mm512_fpclass_pd_mask(x, 0xff))));
+#endif
+        return (x >= V(std::numeric_limits<T>::min())) && (x <= V(std::numeric_limits<T>::max()));
+    }
+    /// m && positive_normal(x) (AVX-512DQ: vfpclass and one kandn).
+    PHONG_LANES_INLINE static mask both_positive_normal(const mask& m, const V& x)
+    {
+#if defined(__AVX512DQ__)
+        if constexpr (float_lanes && std::is_base_of_v<xsimd::avx512f, A>)
+            return mask(typename mask::register_type(_kandn_mask16(_mm512_fpclass_ps_mask(x, 0xff), m)));
+        else if constexpr (std::is_same_v<T, double> && std::is_base_of_v<xsimd::avx512f, A>)
+            return mask(typename mask::register_type(_kandn_mask8(_mm512_fpclass_pd_mask(x, 0xff), m)));
+#endif
+        return m && positive_normal(x);
+    }
+    /// all(a && b) (AVX-512: one kortest of the complements).
+    PHONG_LANES_INLINE static bool all_both(const mask& a, const mask& b)
+    {
+#if defined(__AVX512DQ__)
+        if constexpr (float_lanes && std::is_base_of_v<xsimd::avx512f, A>)
+            return _kortestz_mask16_u8(_knot_mask16(a), _knot_mask16(b));
+        else if constexpr (std::is_same_v<T, double> && std::is_base_of_v<xsimd::avx512f, A>)
+            return _kortestz_mask8_u8(_knot_mask8(a), _knot_mask8(b));
+#endif
+        return xsimd::all(a && b);
+    }
     /// e^x, lane-wise: xsimd::exp on the argument clamped to [minlog, maxlog] (xsimd's own
     /// thresholds: -88.38 / 88.38 in float, -708.40 / 709.78 in double), NaN passed through.
     /// Why: xsimd 8.1's exp converts round(x / ln 2) to an integer before it looks at the range,
@@ -128,7 +163,8 @@ struct math_traits<xsimd::batch<T, A>> {
         if constexpr (float_lanes) return detail::lanes::pow_unit(x, m);
         else return pow(x, m);
     }
-    /// pow_unit with m_is_zero = (m == 0) given (computed once per call by shade_batch).
+    /// pow_unit with m_is_zero = (m == 0) given (computed once per call by shade_batch). Both
+    /// kinds of lanes give x <= 0 and NaN the power of 0 (0, or 1 for m = 0).
     PHONG_LANES_INLINE static V pow_unit(const V& x, const V& m, const mask& m_is_zero)
     {
         if constexpr (float_lanes) return detail::lanes::pow_unit(x, m, m_is_zero);
@@ -842,7 +878,7 @@ PHONG_BATCH_ALWAYS_INLINE void each_visible_light(Sums& sums, std::size_t light_
     const std::size_t n = bits ? std::min<std::size_t>(light_count, 64) : light_count;
     for (std::size_t j = 0; j < n; ++j) {
         const std::uint32_t seeing = bits ? visibility.lanes_seeing(j) : live;
-        if (!seeing) continue;
+        if (bits && !seeing) continue; // live != 0: a step has at least one point
         const bool partial = seeing != live;
         const Sums before = sums;
         add_light(sums, j);
@@ -904,6 +940,43 @@ template <class V, glm::qualifier Q> struct step_lanes {
     mask_t<V> front;
 };
 
+/// Where shade_lanes reads its steps' lanes and writes their colours: one pointer per component
+/// (in: position x y z, normal x y z, view x y z; out: r g b a) and the elements from one step to
+/// the next. Full SoA steps point into the caller's spans (stride W: nothing copied); AoS input,
+/// interleaved output and tails point into a block of the call (stride: one block step). Every
+/// layout runs the same compiled shade_lanes through it, so their colours agree bit for bit.
+template <class V, class T> struct step_stream {
+    const T* in[9];          ///< view x y z: read only with view_model::given
+    std::size_t in_stride;
+    const mask_t<V>* front;  ///< front-facing lanes, one mask per step; null: every lane
+    T* out[4];               ///< a: written only with F.alpha
+    std::size_t out_stride;
+    /// The stream from step k on.
+    step_stream from(std::size_t k) const
+    {
+        step_stream s = *this;
+        for (const T*& p : s.in) p = p ? p + k * in_stride : p;
+        for (T*& p : s.out) p = p ? p + k * out_stride : p;
+        if (front) s.front = front + k;
+        return s;
+    }
+    template <features F, glm::qualifier Q> step_lanes<V, Q> lanes(std::size_t k) const
+    {
+        const std::size_t o = k * in_stride;
+        step_lanes<V, Q> s;
+        s.position = {load<V>(in[0] + o), load<V>(in[1] + o), load<V>(in[2] + o)};
+        s.normal = {load<V>(in[3] + o), load<V>(in[4] + o), load<V>(in[5] + o)};
+        if constexpr (F.view == view_model::given) s.view = {load<V>(in[6] + o), load<V>(in[7] + o), load<V>(in[8] + o)};
+        s.front = front ? front[k] : mask_t<V>(true);
+        return s;
+    }
+    template <features F, glm::qualifier Q> void put(std::size_t k, const color<F, V, Q>& c) const
+    {
+        constexpr int channels = F.alpha ? 4 : 3;
+        for (int ch = 0; ch < channels; ++ch) store(c[ch], out[ch] + k * out_stride);
+    }
+};
+
 /// Steps per call of shade_lanes (one material for all points): the per-call work (entry, the
 /// hoisted constants, the return) is shared by that many steps, and the out-of-order core
 /// overlaps one step's long dependent chain (normalizations, the power's polynomial) with the
@@ -912,7 +985,7 @@ template <class V, glm::qualifier Q> struct step_lanes {
 inline constexpr std::size_t steps_per_call = 8;
 
 /// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
-/// steps (out[k] from in[k]). Not inlined, on purpose: every layout (soa3, soa_points,
+/// steps (io's step k in, its colour k out). Not inlined, on purpose: every layout (soa3, soa_points,
 /// aos_points; either output) calls this one compiled function, so the compiler's choices (FMA
 /// contraction above all) are the same for all of them and the layouts agree bit for bit
 /// (inlined, AoS and SoA differed by an ulp at -march=native). Flattened: every call inside
@@ -927,12 +1000,12 @@ inline constexpr std::size_t steps_per_call = 8;
 /// part, emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the
 /// loop runs without the lights' ambient terms); the sums start from it.
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
-PHONG_BATCH_NOINLINE void shade_lanes(const step_lanes<V, Q>* in, std::size_t steps, color<F, V, Q>* out,
-                                      const material<V, Q>& mat, std::span<const light<V, Q>> lights,
-                                      std::span<const light<double, Q>> wide_lights, const environment<V, Q>& env,
-                                      const std::uint64_t* bits, std::size_t count)
+PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size_t steps, const material<V, Q>& mat,
+                                      std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
+                                      const environment<V, Q>& env, const std::uint64_t* bits, std::size_t count)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
+    const step_stream<V, T> io = stream; // a copy the colour stores cannot alias: its pointers stay in registers
     using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
 #if PHONG_STABLE_LANES
     if constexpr (stable_lanes_route<F, V>) {
@@ -941,14 +1014,15 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_lanes<V, Q>* in, std::size_t st
         if (!xsimd::any(mat.shininess > V(stable_lanes::max_shininess))) {
             for (std::size_t k = 0; k < steps; ++k) {
                 const std::uint64_t* step_bits = bits ? bits + k * W : nullptr;
-                const stable_lanes::surface_frame<V, Q> s = stable_lanes::prepare<F>(in[k].position, in[k].normal, in[k].view, env, in[k].front);
+                const step_lanes<V, Q> in = io.template lanes<F, Q>(k);
+                const stable_lanes::surface_frame<V, Q> s = stable_lanes::prepare<F>(in.position, in.normal, in.view, env, in.front);
                 Sums sums{};
-                if constexpr (Folded) sums.total = env.ambient;
+                if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
                 const auto shade_step = [&]<features G>() {
                     each_visible_light<V, T>(sums, lights.size(), step_bits, count, [&](Sums& step_sums, std::size_t j) {
                         stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
                     });
-                    out[k] = finish<G>(sums, s, mat, env);
+                    io.template put<G, Q>(k, finish<G>(sums, s, mat, env));
                 };
                 if constexpr (Folded && ambient_hoistable<F>) {
                     if (!step_bits) {
@@ -964,23 +1038,33 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_lanes<V, Q>* in, std::size_t st
 #else
     (void)wide_lights;
 #endif
-    const auto run = [&](const auto& m) { // m: the shininess (V, exact::lane_shininess<V> or exact::integer_exponent<V>)
+    // The steps with masks or without: two loops, so that a call without masks tests nothing per step.
+    const auto run_steps = [&]<bool Masks>(const auto& m) {
+        // Step k's colour is stored after step k + 1's lanes are loaded: stored before, it held up
+        // those loads (batch exact at K = 1: 1.07x the hand-written kernel's time against 0.78x,
+        // Blinn; the output spans and the input spans of this benchmark lie 4 KiB apart).
+        color<F, V, Q> pending;
         for (std::size_t k = 0; k < steps; ++k) {
-            const std::uint64_t* step_bits = bits ? bits + k * W : nullptr;
-            const frame_t<F, V, Q> s = prepare<F>(in[k].position, in[k].normal, in[k].view, env, in[k].front);
+            const std::uint64_t* step_bits = Masks ? bits + k * W : nullptr;
+            const step_lanes<V, Q> in = io.template lanes<F, Q>(k);
+            if (k > 0) io.template put<F, Q>(k - 1, pending);
+            const frame_t<F, V, Q> s = prepare<F>(in.position, in.normal, in.view, env, in.front);
             Sums sums{};
-            if constexpr (Folded) sums.total = env.ambient;
-            if constexpr (Folded && ambient_hoistable<F>) {
-                if (!step_bits) {
-                    constexpr features G = ambient_hoisted<F>;
-                    add_masked_lights<G, V, T, Q>(sums, s, lights, m, step_bits, count);
-                    out[k] = finish<G>(sums, s, mat, env);
-                    continue;
-                }
+            if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
+            if constexpr (Folded && ambient_hoistable<F> && !Masks) {
+                constexpr features G = ambient_hoisted<F>;
+                add_masked_lights<G, V, T, Q>(sums, s, lights, m, step_bits, count);
+                pending = finish<G>(sums, s, mat, env);
+            } else {
+                add_masked_lights<F, V, T, Q>(sums, s, lights, m, step_bits, count);
+                pending = finish<F>(sums, s, mat, env);
             }
-            add_masked_lights<F, V, T, Q>(sums, s, lights, m, step_bits, count);
-            out[k] = finish<F>(sums, s, mat, env);
         }
+        if (steps > 0) io.template put<F, Q>(steps - 1, pending);
+    };
+    const auto run = [&](const auto& m) { // m: the shininess (V, exact::lane_shininess<V> or exact::integer_exponent<V>)
+        if (bits) run_steps.template operator()<true>(m);
+        else run_steps.template operator()<false>(m);
     };
     if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) {
         // One integer shininess in every lane (a shared material, or a step of equal ones):
@@ -991,7 +1075,8 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_lanes<V, Q>* in, std::size_t st
             return run(exact::integer_exponent<V>{unsigned(m0)});
     }
     if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
-        run(exact::lane_shininess<V>{mat.shininess, mat.shininess == V(T(0))}); // m == 0 tested once
+        const mask_t<V> zero = mat.shininess == V(T(0)); // m == 0 tested once
+        run(exact::lane_shininess<V>{mat.shininess, zero, math_traits<V>::any(zero)});
     } else {
         run(mat.shininess);
     }
@@ -1025,26 +1110,26 @@ template <class V, class T, glm::qualifier Q> struct per_point_lanes {
     }
 };
 
-/// Loads the lanes of one batch step over points of any layout (soa_points, aos_points):
-/// `count` <= W points starting at index i. Full steps load SoA spans directly and AoS through a
-/// transpose; tails go through padded copies (the pad: Q = (0, 0, -1), n = v = (0, 0, 1), facing
-/// the eye).
+/// The front-facing lanes of one step (count <= W flags from index i; lanes past count: front).
+template <class V, class T> mask_t<V> front_lanes(std::span<const bool> front_facing, std::size_t i, std::size_t count)
+{
+    constexpr std::size_t W = sizeof(V) / sizeof(T);
+    alignas(64) T buf[W];
+    for (std::size_t k = 0; k < W; ++k) buf[k] = k < count && !front_facing[i + k] ? T(0) : T(1);
+    return load<V>(buf) > V(T(0));
+}
+
+/// Loads the position, normal and view lanes of one batch step over points of any layout
+/// (soa_points, aos_points): `count` <= W points starting at index i. Full steps load SoA spans
+/// directly and AoS through a transpose; tails go through padded copies (the pad: Q = (0, 0, -1),
+/// n = v = (0, 0, 1), facing the eye).
 template <features F, class V, class Points, class T, glm::qualifier Q>
 void load_step(std::size_t i, std::size_t count, const Points& points, step_lanes<V, Q>& lanes)
 {
-    constexpr std::size_t W = sizeof(V) / sizeof(T);
     using vec3 = glm::vec<3, T, Q>;
     lanes.position = load_vec3<V, Q>(points.positions, i, count, vec3(T(0), T(0), T(-1)));
     lanes.normal = load_vec3<V, Q>(points.normals, i, count, vec3(T(0), T(0), T(1)));
     if constexpr (F.view == view_model::given) lanes.view = load_vec3<V, Q>(points.views, i, count, vec3(T(0), T(0), T(1)));
-    lanes.front = mask_t<V>(true);
-    if constexpr (F.two_sided == facing::flag) {
-        if (!points.front_facing.empty()) {
-            alignas(64) T buf[W];
-            for (std::size_t k = 0; k < W; ++k) buf[k] = k < count && !points.front_facing[i + k] ? T(0) : T(1);
-            lanes.front = load<V>(buf) > V(T(0));
-        }
-    }
 }
 
 /// Stores the colours of one batch step (count <= W points from index i).
@@ -1078,8 +1163,8 @@ void store_step(const color<F, V, Q>& c, std::size_t i, std::size_t count, const
 #  pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 /// Up to steps_per_call batch steps from point i (steps full steps of W points, or one step of
-/// count < W points: a tail), through one call of shade_lanes. Light masks of full steps are
-/// read in place. `materials` gives each step's material lanes (shared_lanes, per_point_lanes or
+/// count < W points: a tail), through one call of shade_lanes. Full SoA steps and light masks of
+/// full steps are read in place, full steps' SoA colours written in place. `materials` gives each step's material lanes (shared_lanes, per_point_lanes or
 /// table_lanes); materials that differ per step go one step per call.
 template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
 void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, const Points& points,
@@ -1090,10 +1175,51 @@ void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, con
     // One material for all points: shade_points_impl folded it into the lights.
     constexpr bool folded = std::is_same_v<MaterialLanes, shared_lanes<V, Q>>;
     constexpr bool shared = folded || std::is_same_v<MaterialLanes, unfolded_shared_lanes<V, Q>>;
-    step_lanes<V, Q> in[steps_per_call];
-    color<F, V, Q> c[steps_per_call];
+    constexpr int channels = F.alpha ? 4 : 3;
     steps = std::min(steps, steps_per_call); // callers pass at most steps_per_call; said here for g++'s -Wstringop-overflow
-    for (std::size_t k = 0; k < steps; ++k) load_step<F, V, Points, T, Q>(i + k * W, count, points, in[k]);
+    // Full SoA steps are read and written in place; the rest goes through these blocks.
+    alignas(64) T in_block[steps_per_call][9][W];
+    alignas(64) T out_block[steps_per_call][4][W];
+    mask_t<V> front[steps_per_call];
+    step_stream<V, T> io{};
+    constexpr bool soa_in = std::is_same_v<Points, soa_points<T>>;
+    if (soa_in && count == W) {
+        if constexpr (soa_in) {
+            const soa3<T>* from[3] = {&points.positions, &points.normals, &points.views};
+            for (int v = 0; v < (F.view == view_model::given ? 3 : 2); ++v)
+                for (int c = 0; c < 3; ++c) io.in[3 * v + c] = (c == 0 ? from[v]->x : c == 1 ? from[v]->y : from[v]->z).data() + i;
+            io.in_stride = W;
+        }
+    } else {
+        for (std::size_t k = 0; k < steps; ++k) {
+            step_lanes<V, Q> lanes;
+            load_step<F, V, Points, T, Q>(i + k * W, count, points, lanes);
+            for (int c = 0; c < 3; ++c) {
+                store(lanes.position[c], in_block[k][c]);
+                store(lanes.normal[c], in_block[k][3 + c]);
+                if constexpr (F.view == view_model::given) store(lanes.view[c], in_block[k][6 + c]);
+            }
+        }
+        for (int c = 0; c < 9; ++c) io.in[c] = in_block[0][c];
+        io.in_stride = 9 * W;
+    }
+    if constexpr (F.two_sided == facing::flag) {
+        if (!points.front_facing.empty()) {
+            for (std::size_t k = 0; k < steps; ++k) front[k] = front_lanes<V, T>(points.front_facing, i + k * W, count);
+            io.front = front;
+        }
+    }
+    constexpr bool soa_out = std::is_same_v<Output, soa_rgba<T>>;
+    if (soa_out && count == W) {
+        if constexpr (soa_out) {
+            T* dst[4] = {out.r.data(), out.g.data(), out.b.data(), F.alpha ? out.a.data() : nullptr};
+            for (int ch = 0; ch < channels; ++ch) io.out[ch] = dst[ch] + i;
+            io.out_stride = W;
+        }
+    } else {
+        for (int ch = 0; ch < channels; ++ch) io.out[ch] = out_block[0][ch];
+        io.out_stride = 4 * W;
+    }
 
     alignas(64) std::uint64_t tail_bits[W]; // a tail's masks, 0 past count (full steps read them in place)
     const std::uint64_t* bits = nullptr;
@@ -1106,15 +1232,21 @@ void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, con
         }
     }
     if constexpr (shared) {
-        shade_lanes<F, V, T, Q, folded>(in, steps, c, materials.lanes, lights, wide_lights, env, bits, count);
+        shade_lanes<F, V, T, Q, folded>(io, steps, materials.lanes, lights, wide_lights, env, bits, count);
     } else {
         for (std::size_t k = 0; k < steps; ++k) {
             materials.with_step(i + k * W, count, [&](const material<V, Q>& mat) {
-                shade_lanes<F, V, T, Q, folded>(in + k, 1, c + k, mat, lights, wide_lights, env, bits ? bits + k * W : nullptr, count);
+                shade_lanes<F, V, T, Q, folded>(io.from(k), 1, mat, lights, wide_lights, env, bits ? bits + k * W : nullptr, count);
             });
         }
     }
-    for (std::size_t k = 0; k < steps; ++k) store_step<F, V, T, Q>(c[k], i + k * W, count, out);
+    if (io.out[0] == out_block[0][0]) {
+        for (std::size_t k = 0; k < steps; ++k) {
+            color<F, V, Q> c;
+            for (int ch = 0; ch < channels; ++ch) c[ch] = load<V>(out_block[k][ch]);
+            store_step<F, V, T, Q>(c, i + k * W, count, out);
+        }
+    }
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #  pragma GCC diagnostic pop

@@ -88,13 +88,15 @@ PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const Fra
 }
 
 /// The colour from folded sums (shade_batch with one material: the lights carry ka, kd and ks,
-/// and the total started at the point-independent part, emission + ka La): the total, alpha
-/// appended; poison as terms_of.
+/// and the total started at the point-independent part plus the poison, emission + ka La +
+/// poison): the total, alpha appended (mat.alpha + poison, as terms_of). The poison added first
+/// rather than last: the same colours (the total is never -0 then; x + 0 = x otherwise), and
+/// the poison is not held across the light loop.
 template <features F, class T, glm::qualifier Q, class Frame>
-PHONG_HD constexpr color<F, T, Q> finish(const folded_sums<T, Q>& sums, const Frame& s, const material<T, Q>& mat,
-                                         const environment<T, Q>&)
+PHONG_HD constexpr color<F, T, Q> finish(const folded_sums<T, Q>& sums, [[maybe_unused]] const Frame& s,
+                                         [[maybe_unused]] const material<T, Q>& mat, const environment<T, Q>&)
 {
-    const glm::vec<3, T, Q> c = sums.total + s.poison;
+    const glm::vec<3, T, Q> c = sums.total;
     if constexpr (F.alpha) return glm::vec<4, T, Q>(c, mat.alpha + s.poison);
     else return c;
 }

@@ -113,6 +113,23 @@ namespace detail {
 /// (a relative error of at most 1), never garbage or NaN.
 template <class T> PHONG_HD constexpr T exact_min_square() { return T(std::numeric_limits<scalar_t<T>>::min()); }
 
+/// dd is a positive normal number (exact_min_square <= dd <= largest): the exact mode's test of a
+/// squared length (SIMD lanes: math_traits' positive_normal where it has one, e.g. one vfpclass).
+template <class T>
+PHONG_HD constexpr mask_t<T> normal_square(T dd)
+{
+    if constexpr (requires { math_traits<T>::positive_normal(dd); }) return math_traits<T>::positive_normal(dd);
+    else return math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>());
+}
+
+/// on && normal_square(dd).
+template <class T>
+PHONG_HD constexpr mask_t<T> both_normal_square(mask_t<T> on, T dd)
+{
+    if constexpr (requires { math_traits<T>::both_positive_normal(on, dd); }) return math_traits<T>::both_positive_normal(on, dd);
+    else return math_traits<T>::both(on, normal_square(dd));
+}
+
 /// The exact mode's 1/|v| from dd = |v|^2: 0 when dd is not a normal number (rsqrt(inf) = 0 too).
 template <class T>
 PHONG_HD constexpr T exact_inverse_length(T dd)
@@ -121,8 +138,7 @@ PHONG_HD constexpr T exact_inverse_length(T dd)
         if (dd >= exact_min_square<T>()) [[likely]] return phong::rsqrt(dd);
         return T(0);
     } else {
-        const mask_t<T> normal = math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>());
-        return phong::select(normal, detail::rsqrt_normal(dd), T(0));
+        return phong::select(normal_square(dd), detail::rsqrt_normal(dd), T(0));
     }
 }
 

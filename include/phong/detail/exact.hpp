@@ -43,8 +43,16 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T sign = T(1))
 {
     const T dd = phong::dot(v, v);
-    const T inv = exact_inverse_length(dd);
-    return {v * (inv * sign), dd, inv > T(0)};
+    if constexpr (std::is_floating_point_v<T>) {
+        const T inv = exact_inverse_length(dd);
+        return {v * (inv * sign), dd, inv > T(0)};
+    } else {
+        // exact_inverse_length's range test is the mask itself (1/|v| > 0 exactly where dd is normal):
+        // SIMD lanes keep it rather than compare again.
+        const mask_t<T> normal = normal_square(dd);
+        const T inv = phong::select(normal, detail::rsqrt_normal(dd), T(0));
+        return {v * (inv * sign), dd, normal};
+    }
 }
 
 /// unit(e * sign), or, when no term reads v, only its square (the NaN test reads it): no
@@ -81,24 +89,40 @@ PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& positi
     }
 }
 
-/// The point's poison (poison_of). Finite squares of the normal and the view vector mean finite
-/// inputs and poison 0, so the exact test runs only in the rare other case (SIMD: unless every
-/// lane passes). A given view vector says nothing about Q: its square joins the test.
+/// Whether every lane's squares of the normal and the view vector are finite, which means finite
+/// inputs (poison 0). A given view vector says nothing about Q: its square joins the test. Where
+/// both unit vectors come from unit_of (their ok: the square is a normal number), their masks
+/// are the test: a zero normal or view vector then takes the exact test too (rare), and no
+/// compare is added.
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr bool finite_squares(const glm::vec<3, T, Q>& position, const unit_vector<T, Q>& n, const unit_vector<T, Q>& v)
+{
+    constexpr bool view_of_position = (F.view == view_model::eye_at_origin || F.view == view_model::eye_point) &&
+                                      !(F.specular == specular_model::none && F.two_sided != facing::view); // view_unit: unit_of
+    if constexpr (!F.unit_inputs && view_of_position) {
+        (void)position;
+        if constexpr (requires { math_traits<T>::all_both(n.ok, v.ok); }) return math_traits<T>::all_both(n.ok, v.ok);
+        else return math_traits<T>::all(math_traits<T>::both(n.ok, v.ok));
+    } else {
+        T view_square = v.square;
+        if constexpr (F.view == view_model::given) view_square = view_square + phong::dot(position, position);
+        else (void)position;
+        return math_traits<T>::all(math_traits<T>::both(n.square <= largest<T>(), view_square <= largest<T>()));
+    }
+}
+
+/// The point's poison (poison_of), scalars. Finite squares of the normal and the view vector mean
+/// finite inputs and poison 0, so the exact test runs only in the rare other case (SIMD lanes:
+/// prepare, through finite_squares).
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                   const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env, T normal_square,
                                   T view_square)
 {
     if constexpr (F.view == view_model::given) view_square = view_square + phong::dot(position, position);
-    if constexpr (std::is_floating_point_v<T>) {
-        if (!(normal_square <= largest<T>() && view_square <= largest<T>())) [[unlikely]]
-            return poison_of<F>(position, normal, given_view, env);
-        return T(0);
-    } else {
-        if (math_traits<T>::all(math_traits<T>::both(normal_square <= largest<T>(), view_square <= largest<T>()))) [[likely]]
-            return T(0);
+    if (!(normal_square <= largest<T>() && view_square <= largest<T>())) [[unlikely]]
         return poison_of<F>(position, normal, given_view, env);
-    }
+    return T(0);
 }
 
 /// The per-point frame: unit normal (faced toward the viewer when two-sided), view vector,
@@ -112,12 +136,25 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     unit_vector<T, Q> n{normal, T(1), mask_t<T>(true)}; // unit_inputs: unit by precondition
     if constexpr (!F.unit_inputs) n = unit_of(normal);
     const unit_vector<T, Q> v = view_vector<F>(position, given_view, env);
-    const T poison = point_poison<F>(position, normal, given_view, env, n.square, v.square);
+    // A NaN point has every channel NaN through poison; its terms are off, so no NaN power runs.
+    T poison;
+    mask_t<T> defined;
+    if constexpr (std::is_floating_point_v<T>) {
+        poison = point_poison<F>(position, normal, given_view, env, n.square, v.square);
+        defined = math_traits<T>::both(n.ok, poison == T(0));
+    } else {
+        // SIMD lanes: poison 0 and `defined` the normal's mask unless a lane's squares are not
+        // finite (then the exact test, point_poison's rare case): no compare of a known 0.
+        poison = T(0);
+        defined = n.ok;
+        if (!finite_squares<F>(position, n, v)) [[unlikely]] {
+            poison = poison_of<F>(position, normal, given_view, env);
+            defined = math_traits<T>::both(n.ok, poison == T(0));
+        }
+    }
     vec3 unit_normal = n.unit;
     if constexpr (F.two_sided != facing::none) unit_normal = unit_normal * facing_sign<F>(unit_normal, v.unit, front_facing);
     else (void)front_facing;
-    // A NaN point has every channel NaN through poison; its terms are off, so no NaN power runs.
-    const mask_t<T> defined = math_traits<T>::both(n.ok, poison == T(0));
     T nv = T(0);
     if constexpr (F.specular != specular_model::none) nv = phong::dot(unit_normal, v.unit);
     // Built from components: copied whole, g++ moved the vectors through the stack.
@@ -135,9 +172,9 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
     if constexpr (std::is_floating_point_v<T>) {
         return s.defined && (!gated<F> || nd > T(0)) && dd >= exact_min_square<T>() && dd <= largest<T>();
     } else {
-        mask_t<T> on = math_traits<T>::both(s.defined, math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>()));
+        mask_t<T> on = s.defined;
         if constexpr (gated<F>) on = math_traits<T>::both(on, nd > T(0));
-        return on;
+        return both_normal_square(on, dd);
     }
 }
 
@@ -169,25 +206,28 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, const integer_exponent<T>&
 }
 
 /// The shininess on SIMD lanes with m == 0 tested once (shade_batch: once per call, not per
-/// pair): the power of detail::cosine_power, the same bits.
+/// pair): the power of detail::cosine_power, the same bits. The cosine is clamped above only:
+/// the lanes' pow_unit gives x <= 0 (and NaN) the power of 0 (0, or 1 for m = 0) by itself.
 template <class T> struct lane_shininess {
     T m;
     mask_t<T> zero; ///< m == 0
+    bool any_zero;  ///< any(zero)
 };
 template <evaluation M, class T>
 PHONG_HD constexpr T route_cosine_power(T x, T scale, const lane_shininess<T>& m)
 {
     if constexpr (M == evaluation::fast && !std::is_same_v<scalar_t<T>, float>)
         return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m.m);
-    else return math_traits<T>::pow_unit(phong::clamp(x * scale, T(0), T(1)), m.m, m.zero);
+    else return math_traits<T>::pow_unit(math_traits<T>::min(x * scale, T(1)), m.m, m.zero);
 }
 
-/// Where the shininess is 0, per lane (pow(0, 0) = 1 keeps the specular term on unlit cosines).
-template <class T, class Exponent> PHONG_HD constexpr mask_t<T> zero_exponent(const Exponent& m)
+/// Whether a lane that is on has shininess 0 (pow(0, 0) = 1 keeps the specular term on unlit
+/// cosines); lane_shininess and integer_exponent know per call whether any lane has it.
+template <class T, class Exponent> PHONG_HD constexpr bool any_zero_exponent(const Exponent& m, const mask_t<T>& on)
 {
-    if constexpr (std::is_same_v<Exponent, lane_shininess<T>>) return m.zero;
-    else if constexpr (std::is_same_v<Exponent, integer_exponent<T>>) return mask_t<T>(m.n == 0);
-    else return m == T(0);
+    if constexpr (std::is_same_v<Exponent, lane_shininess<T>>) return m.any_zero && math_traits<T>::any(math_traits<T>::both(on, m.zero));
+    else if constexpr (std::is_same_v<Exponent, integer_exponent<T>>) return m.n == 0 && math_traits<T>::any(on);
+    else return math_traits<T>::any(math_traits<T>::both(on, m == T(0)));
 }
 
 /// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale (route_cosine_power).
@@ -206,7 +246,7 @@ PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x,
         // Where no lane that is on has c > 0 (nor m = 0: pow(0, 0) = 1), every selected power is 0
         // and the sum would only gain +0: the power is skipped for the whole step, as scalars skip
         // it per point (the same bits).
-        if (!math_traits<T>::any(math_traits<T>::both(on, (x > T(0)) || zero_exponent<T>(m)))) return;
+        if (!math_traits<T>::any(math_traits<T>::both(on, x > T(0))) && !any_zero_exponent<T>(m, on)) return;
         sum += in_type<T>(specular_of(L)) * (f * phong::select(on, route_cosine_power<M>(x, scale, m), T(0)));
     }
 }

@@ -109,7 +109,7 @@ template <class V> PHONG_LANES_POWER_INLINE V exp2_nonpositive(const V& y_in)
 
 /// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound),
 /// with m_is_zero = (m == 0) given: a caller whose m is the same for many x (the light loop of
-/// shade_batch) computes it once.
+/// shade_batch) computes it once. Edges: x <= 0 and NaN give 0^m (0, or 1 for m = 0).
 template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m, const typename V::batch_bool_type& m_is_zero)
 {
     V e;
