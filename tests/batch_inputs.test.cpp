@@ -232,6 +232,14 @@ template <class T, features F> void check_long_call_equals_points_alone(std::uin
         std::vector<color<F, T>> soa_out(count), aos_out(count);
         shade_batch<F>(c.soa(given, masked), c.base.mat, c.base.lights, std::span<color<F, T>>(soa_out), c.base.env);
         shade_batch<F>(c.aos(given, masked), c.base.mat, c.base.lights, std::span<color<F, T>>(aos_out), c.base.env);
+        // SoA in and out: full steps read and written in place (detail::steps_per_call per call).
+        std::vector<T> channel[4];
+        for (std::vector<T>& ch : channel) ch.assign(count, T(-1));
+        shade_batch<F>(c.soa(given, masked), c.base.mat, c.base.lights, soa_rgba<T>{channel[0], channel[1], channel[2], channel[3]},
+                       c.base.env);
+        std::vector<color<F, T>> in_place_out(count);
+        for (std::size_t i = 0; i < count; ++i)
+            for (int k = 0; k < (F.alpha ? 4 : 3); ++k) in_place_out[i][k] = channel[k][i];
         std::size_t same = 0;
         for (std::size_t i = 0; i < count; ++i) {
             std::vector<color<F, T>> alone(1);
@@ -240,7 +248,7 @@ template <class T, features F> void check_long_call_equals_points_alone(std::uin
             if (given) one.views = std::span(&c.v[i], 1);
             if (masked) one.light_masks = std::span(&c.masks[i], 1);
             shade_batch<F>(one, c.base.mat, c.base.lights, std::span<color<F, T>>(alone), c.base.env);
-            same += soa_out[i] == alone[0] && aos_out[i] == alone[0];
+            same += soa_out[i] == alone[0] && aos_out[i] == alone[0] && in_place_out[i] == alone[0];
         }
         CAPTURE(masked);
         CHECK(same == count);
