@@ -960,6 +960,7 @@ template <class V, class T> struct step_stream {
         if (front) s.front = front + k;
         return s;
     }
+    /// Step k's lanes (the view only with view_model::given).
     template <features F, glm::qualifier Q> step_lanes<V, Q> lanes(std::size_t k) const
     {
         const std::size_t o = k * in_stride;
@@ -970,6 +971,7 @@ template <class V, class T> struct step_stream {
         s.front = front ? front[k] : mask_t<V>(true);
         return s;
     }
+    /// Stores step k's colour.
     template <features F, glm::qualifier Q> void put(std::size_t k, const color<F, V, Q>& c) const
     {
         constexpr int channels = F.alpha ? 4 : 3;
@@ -1050,8 +1052,8 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
     // The steps with masks or without: two loops, so that a call without masks tests nothing per step.
     const auto run_steps = [&]<bool Masks>(const auto& m) {
         // Step k's colour is stored after step k + 1's lanes are loaded: stored before, it held up
-        // those loads (batch exact at K = 1: 1.07x the hand-written kernel's time against 0.78x,
-        // Blinn; the output spans and the input spans of this benchmark lie 4 KiB apart).
+        // those loads where the spans share their offset in a 4 KiB page (batch exact, Blinn, K = 1,
+        // the benchmark's std::vectors: 1.07x the hand-written kernel's time against 0.78x).
         color<F, V, Q> pending;
         for (std::size_t k = 0; k < steps; ++k) {
             const std::uint64_t* step_bits = Masks ? bits + k * W : nullptr;
@@ -1173,8 +1175,9 @@ void store_step(const color<F, V, Q>& c, std::size_t i, std::size_t count, const
 #endif
 /// Up to call_steps batch steps from point i (steps full steps of W points, or one step of
 /// count < W points: a tail), through one call of shade_lanes. Full SoA steps and light masks of
-/// full steps are read in place, full steps' SoA colours written in place. `materials` gives each step's material lanes (shared_lanes, per_point_lanes or
-/// table_lanes); materials that differ per step go one step per call.
+/// full steps are read in place, full steps' SoA colours written in place. `materials` gives each
+/// step's material lanes (shared_lanes, per_point_lanes or table_lanes); materials that differ per
+/// step go one step per call.
 template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
 void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, const Points& points,
                         const MaterialLanes& materials, std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
