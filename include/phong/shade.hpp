@@ -99,10 +99,10 @@ PHONG_HD constexpr color<F, T, Q> finish(const folded_sums<T, Q>& sums, const Fr
     else return c;
 }
 
-/// validate(material): a compile error in constant evaluation, an assertion in debug builds,
-/// nothing at all under NDEBUG (not even evaluated).
+/// validate(material) and validate(environment): a compile error in constant evaluation, an
+/// assertion in debug builds, nothing at all under NDEBUG (not even evaluated).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr void check_material([[maybe_unused]] const material<T, Q>& mat)
+PHONG_HD constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const environment<T, Q>& env)
 {
     if constexpr (std::is_floating_point_v<T>) {
 #if defined(NDEBUG)
@@ -110,6 +110,8 @@ PHONG_HD constexpr void check_material([[maybe_unused]] const material<T, Q>& ma
 #endif
         const validation vm = phong::validate(mat);
         require(static_cast<bool>(vm), vm.message());
+        const validation ve = phong::validate(env);
+        require(static_cast<bool>(ve), ve.message());
     }
 }
 
@@ -166,12 +168,12 @@ PHONG_HD constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& positio
 template <features F, class T>
 using arithmetic_t = std::conditional_t<widened<F, T>, double, T>;
 
-/// shade<F>'s checks of its parameters: the material, and unit_inputs' unit vectors.
+/// shade<F>'s checks of its parameters: the material, the environment, and unit_inputs' unit vectors.
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q>& normal, [[maybe_unused]] const glm::vec<3, T, Q>& view,
-                                     const material<T, Q>& mat)
+                                     const material<T, Q>& mat, const environment<T, Q>& env)
 {
-    check_material(mat);
+    check_parameters(mat, env);
     if constexpr (F.unit_inputs) {
         check_unit(normal, "shade: normal must be unit length (features::unit_inputs)");
         if constexpr (F.view == view_model::given) check_unit(view, "shade: view vector must be unit length (features::unit_inputs)");
@@ -190,12 +192,12 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
     if constexpr (!light_list<Lights>) {
         return {}; // not instantiated further: the static_assert above is the one error reported
     } else if constexpr (widened<F, T>) {
-        check_inputs<F>(normal, view, mat);
+        check_inputs<F>(normal, view, mat, env);
         using W = double;
         return evaluate<exact_of<F>>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view),
                                      widen<W>(mat), static_cast<Lights&&>(lights), widen<W>(env), front_facing);
     } else {
-        check_inputs<F>(normal, view, mat);
+        check_inputs<F>(normal, view, mat, env);
         return evaluate<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing);
     }
 }
@@ -221,8 +223,9 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
 /// from env.eye). For view_model::given, use the overload below that takes v.
 /// front_facing: read only for facing::flag.
 ///
-/// Pre: validate(mat) and validate(L) for every light (checked: a compile error in constant
-/// evaluation, an assertion in debug builds). Edges (finite input never gives NaN or inf):
+/// Pre: validate(mat), validate(env) and validate(L) for every light, weights of weighted() finite
+/// and >= 0 (checked: a compile error in constant evaluation, the precondition handler with a
+/// message naming the field in debug builds, detail/config.hpp; nothing under NDEBUG). Edges (finite input never gives NaN or inf):
 ///  * a light at Q (or a directional light with xyz = 0): no direction; that light adds only its
 ///    ambient term;
 ///  * normal = 0: no diffuse or specular from any light;
