@@ -103,7 +103,8 @@ concept light_source = requires(const std::remove_cvref_t<L>& l) {
     typename detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::scalar;
 };
 
-/// The scalar type U and qualifier of a light_source's fields (from light_traits<L>::position).
+/// The scalar type U (light_scalar_t) and qualifier (light_qualifier_v) of a light_source's
+/// fields, read from light_traits<L>::position's return type glm::vec<4, U, Q>.
 template <light_source L>
 using light_scalar_t = typename detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::scalar;
 template <light_source L>

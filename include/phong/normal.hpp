@@ -31,6 +31,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> face_viewer(const glm::vec<3, T, Q>& n, con
 }
 
 /// Two-sided lighting decided by the caller (e.g. gl_FrontFacing): n' = front_facing ? n : -n.
+/// Edge: any n (zero, NaN) is passed through, negated or not.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> face_flag(const glm::vec<3, T, Q>& n, bool front_facing)
 {
@@ -74,7 +75,9 @@ PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix_inverse_transpose(const gl
     return glm::mat<3, 3, T, Q>(cof[0] * inv, cof[1] * inv, cof[2] * inv);
 }
 
-/// GLSL's NormalMatrix for a model-view matrix: the inverse transpose of its upper 3x3.
+/// GLSL's NormalMatrix for a model-view matrix: the inverse transpose of its upper 3x3
+/// (translation ignored). Pre and edges: those of normal_matrix_inverse_transpose (a singular
+/// upper 3x3 gives its cofactor matrix; never NaN for finite entries whose pairwise products are finite).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T, Q>& model_view)
 {

@@ -316,7 +316,9 @@ PHONG_HD constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(cons
 ///   eyeCoords = ModelView * (p, 1),  tnorm = normalize(NormalMatrix * n),
 /// then shade<F>(eyeCoords.xyz, tnorm, ...) with lights in eye coordinates.
 /// Pre: model_view affine (last row 0, 0, 0, 1), as in the seed, which drops eyeCoords.w.
-/// normal_matrix(model_view) gives NormalMatrix.
+/// normal_matrix(model_view) gives NormalMatrix. Everything else as shade<F> (F.view must not be
+/// view_model::given: no per-vertex v here), with transform_normal's edges for the normal; a
+/// vertex whose eye coordinates overflow T is shaded as an inf position (NaN in every channel).
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_HD constexpr color<F, T, Q> shade_vertex(const glm::vec<3, T, Q>& vertex_position, const glm::vec<3, T, Q>& vertex_normal,
                                                const glm::mat<4, 4, T, Q>& model_view, const glm::mat<3, 3, T, Q>& normal_mat,

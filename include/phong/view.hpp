@@ -18,8 +18,9 @@ PHONG_HD constexpr glm::vec<3, T, Q> view_perspective(const glm::vec<3, T, Q>& p
 
 /// Seed 000, orthographic: v = normalize(-M02/M00, -M12/M11, 1), M = ec_lds the projection
 /// matrix; M02 is row 0, column 2 (GLM's m[2][0]).
-/// Pre: M00 != 0 and M11 != 0 (any invertible orthographic matrix). Edge: M00 or M11 = 0 gives a
-/// non-finite ratio; use eye_from_projection, which never divides.
+/// Pre: M00 != 0 and M11 != 0 (any invertible orthographic matrix), the ratios M02/M00 and
+/// M12/M11 finite. Edge: M00 or M11 = 0, or a ratio beyond T's range, gives NaN components; use
+/// eye_from_projection, which never divides by them.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> view_orthographic(const glm::mat<4, 4, T, Q>& ec_lds)
 {
