@@ -53,7 +53,8 @@ PHONG_HD constexpr direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& 
     const T scale = phong::select(phong::max_abs(full) > largest<T>(), T(0.5), T(1));
     const glm::vec<3, T, Q> d = detail::homogeneous_difference(xyz * scale, P.w * scale, point);
     const T inf = std::numeric_limits<T>::infinity();
-    return {phong::normalize(d), phong::select(P.w > T(0), phong::length(d) / (scale * phong::select(P.w > T(0), P.w, T(1))), inf)};
+    const T w = phong::select(P.w > T(0), P.w, T(1));
+    return {phong::normalize(d), phong::select(P.w > T(0), phong::length(d) / (scale * w), inf)};
 }
 
 /// Seed 000's light direction \hat l_i from a homogeneous light position L (w = 1 or 0), eye coords.

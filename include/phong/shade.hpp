@@ -225,7 +225,8 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
 ///
 /// Pre: validate(mat), validate(env) and validate(L) for every light, weights of weighted() finite
 /// and >= 0 (checked: a compile error in constant evaluation, the precondition handler with a
-/// message naming the field in debug builds, detail/config.hpp; nothing under NDEBUG). Edges (finite input never gives NaN or inf):
+/// message naming the field in debug builds, detail/config.hpp; nothing under NDEBUG).
+/// Edges (finite input never gives NaN or inf):
 ///  * a light at Q (or a directional light with xyz = 0): no direction; that light adds only its
 ///    ambient term;
 ///  * normal = 0: no diffuse or specular from any light;
