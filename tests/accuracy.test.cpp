@@ -313,8 +313,8 @@ template <class T, specular_model S, stable_precision P> void check_cosine_near_
     for (int i = 0; i < 2000; ++i) scenes.push_back(detail::grazing_cosine_near_zero<T>(g, S));
     const error_stats e = measure<F>(scenes);
     const phong::accuracy::bound b = phong::accuracy::of<evaluation::stable, T, P>(input_class::grazing_specular);
-    MESSAGE(std::string("cosine near 0, ") + (S == specular_model::phong ? "phong " : "blinn ") + (sizeof(T) == 4 ? "float" : "double") +
-            (P == stable_precision::twofold ? " twofold" : "") << ": p99 " << e.p99_ulp << " max " << e.max_ulp << " ulp, rel " << e.max_rel);
+    MESSAGE((std::string("cosine near 0, ") + (S == specular_model::phong ? "phong " : "blinn ") + (sizeof(T) == 4 ? "float" : "double") +
+             (P == stable_precision::twofold ? " twofold" : "")) << ": p99 " << e.p99_ulp << " max " << e.max_ulp << " ulp, rel " << e.max_rel);
     CHECK(e.non_finite == 0);
     CHECK(e.p99_ulp <= b.p99_ulp);
     CHECK(e.max_ulp <= b.max_ulp);

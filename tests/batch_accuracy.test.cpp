@@ -154,7 +154,7 @@ TEST_CASE_TEMPLATE("shade_batch stable: a grazing light's specular cosine near 0
                                   ? measure_batch<phong::accuracy::measured_features(evaluation::stable, specular_model::phong), T>(scenes, disagree)
                                   : measure_batch<phong::accuracy::measured_features(evaluation::stable, specular_model::blinn), T>(scenes, disagree);
         CAPTURE(S == specular_model::phong ? "phong" : "blinn");
-        MESSAGE(std::string("stable cosine near 0 ") + (sizeof(T) == 4 ? "float " : "double ") + (S == specular_model::phong ? "phong" : "blinn")
+        MESSAGE((std::string("stable cosine near 0 ") + (sizeof(T) == 4 ? "float " : "double ") + (S == specular_model::phong ? "phong" : "blinn"))
                 << ": p99 " << e.p99_ulp << " max " << e.max_ulp << " ulp, max rel " << e.max_rel);
         CHECK(disagree == 0);
         CHECK(e.non_finite == 0);
