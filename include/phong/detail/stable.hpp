@@ -5,7 +5,8 @@
 // finite input is in range, and the unit vectors n, l, v (h), n.l and the specular chords are
 // carried twofold (detail/twofold.hpp) from the exact L.xyz - w Q; the specular power is
 // (1 - x)^m = exp(m log1p(-x)) of the half chord x = |r - v|^2 / 2 (|n - h|^2 / 2), so a high m
-// does not amplify the rounding of a cosine. With features::stable_twofold_above = M > 0, pairs
+// does not amplify the rounding of a cosine; where x > 1/2 it is c^m of the cosine c = 1 - x itself,
+// rounded once from the same twofold value, so a small c keeps its relative accuracy too. With features::stable_twofold_above = M > 0, pairs
 // whose shininess is at most M round each component once instead (about a third of the cost, an
 // error that grows like sqrt(m) eps). Bounds in phong/accuracy.hpp.
 // SPDX-License-Identifier: MIT

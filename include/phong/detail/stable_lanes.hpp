@@ -284,7 +284,7 @@ template <class V, class D> inline V power(const half_terms<D>& lo, const half_t
 }
 
 /// One light's terms added to the float sums of a step: the geometry of both halves in double,
-/// then the weights and x rounded to float once, the power (1 - x)^m and the sums in float.
+/// then the weights, x and c rounded to float once, the power c^m and the sums in float.
 /// L: the light's float lanes (its colours, with the material when folded); wide: the same light
 /// in double (position, attenuation, spot).
 template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>

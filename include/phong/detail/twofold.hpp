@@ -172,9 +172,9 @@ PHONG_HD constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>& c, 
 /// of about 1 eps however close r is to v, and the cosine r.v too however close it is to 0
 /// (down to a few eps^2). Pre: n, l, v unit (or 0).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, T nl_hi, T nl_lo,
-                                  const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo, const glm::vec<3, T, Q>& vh,
-                                  const glm::vec<3, T, Q>& vlo)
+PHONG_HD constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, T nl_hi,
+                                                    T nl_lo, const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
+                                                    const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
 {
     glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
     for (int k = 0; k < 3; ++k) {
@@ -194,8 +194,8 @@ PHONG_HD constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh
 /// 1 - n.h = |n - h|^2 / 2 and n.h for twofold unit n and h (chord and square to O(eps^2), each
 /// rounded once).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, const glm::vec<3, T, Q>& hh,
-                                  const glm::vec<3, T, Q>& hlo)
+PHONG_HD constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
+                                                    const glm::vec<3, T, Q>& hh, const glm::vec<3, T, Q>& hlo)
 {
     glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
     for (int k = 0; k < 3; ++k) {
@@ -211,8 +211,9 @@ PHONG_HD constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>& nh
 /// formed twofold and renormalized, h = unit_of(sum) twofold, then one_minus_nh.
 /// Pre: n, l, v unit (or 0). Edge: l = -v (no halfway vector) gives 1 and n.h = 0.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, const glm::vec<3, T, Q>& lh,
-                                       const glm::vec<3, T, Q>& llo, const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
+PHONG_HD constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
+                                                         const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
+                                                         const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
 {
     glm::vec<3, T, Q> sum(T(0)), sum_lo(T(0));
     for (int k = 0; k < 3; ++k) {
