@@ -4,7 +4,7 @@
 # "<!-- tests/consumer/<file>: ... -->"; then install phong to a temporary prefix with the README's
 # install command, and build the separate project tests/consumer against it
 # (find_package(phong CONFIG REQUIRED) + phong::phong) with CMAKE_PREFIX_PATH, with g++ and
-# clang++, and run it; the same for the README's two recipes (tests/consumer_recipes). Then tests/consumer_batch: a renderer's translation unit calling shade_batch
+# clang++, and run it. Then tests/consumer_batch: a renderer's translation unit calling shade_batch
 # with -march=native and -Wall -Wextra -Wpedantic -Werror, phong's headers not treated as system
 # headers (issue 13: warning-free in users' builds), at -O1 and -O3, with g++ and clang++; built once
 # more with -DPHONG_USE_XSIMD=OFF (g++), which must reach the code as PHONG_NO_XSIMD.
@@ -22,13 +22,7 @@ for f in CMakeLists.txt main.cpp; do
   diff -u "$tmp/readme_$f" "$root/tests/consumer/$f" ||
     { echo "15-install-consumer: tests/consumer/$f differs from README.md's block (above)"; exit 1; }
 done
-for f in raytracer.cpp rasterizer.cpp; do
-  readme_block "tests/consumer_recipes/$f" >"$tmp/readme_$f"
-  [[ -s "$tmp/readme_$f" ]] || { echo "15-install-consumer: README.md has no block marked tests/consumer_recipes/$f"; exit 1; }
-  diff -u "$tmp/readme_$f" "$root/tests/consumer_recipes/$f" ||
-    { echo "15-install-consumer: tests/consumer_recipes/$f differs from README.md's block (above)"; exit 1; }
-done
-echo "15-install-consumer: tests/consumer/{CMakeLists.txt,main.cpp} and tests/consumer_recipes/{raytracer,rasterizer}.cpp are the README's blocks"
+echo "15-install-consumer: tests/consumer/{CMakeLists.txt,main.cpp} are the README's blocks"
 # The README's install command, into the temporary prefix.
 (cd "$tmp" && cmake -S "$root" -B build -G Ninja -DPHONG_BUILD_TESTS=OFF -DPHONG_BUILD_BENCHMARKS=OFF >/dev/null &&
   cmake --install build --prefix "$tmp/prefix")
@@ -38,15 +32,6 @@ for cxx in g++ clang++; do
   grep -q "phong_DIR:PATH=$tmp/prefix/" "$tmp/consumer-$cxx/CMakeCache.txt" # found the installed copy
   cmake --build "$tmp/consumer-$cxx"
   "$tmp/consumer-$cxx/app"
-done
-# The README's recipes, built and run as a user would (raytracer: g++ only, its std::views need
-# clang++ >= 16; tests/consumer_recipes/CMakeLists.txt).
-for cxx in g++ clang++; do
-  cmake -S "$root/tests/consumer_recipes" -B "$tmp/recipes-$cxx" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" \
-    -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Werror"
-  cmake --build "$tmp/recipes-$cxx" -j2
-  "$tmp/recipes-$cxx/rasterizer"
-  if [[ "$cxx" == g++ ]]; then "$tmp/recipes-$cxx/raytracer"; fi
 done
 batch_user() { # batch_user <name> <compiler> [extra cmake args]
   local name="$1" cxx="$2"
