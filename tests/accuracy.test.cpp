@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <string_view>
 
 using namespace phong_test;
 using phong::evaluation;
@@ -169,6 +170,16 @@ TEST_CASE("accuracy: published stable float bounds meet the targets")
         CHECK(of<evaluation::stable, double>(c).max_rel < 1e-13);
     }
 }
+
+// input_class::count is no class: no promise (+inf) and a name, never a read past the tables.
+static_assert(phong::accuracy::of<evaluation::exact, float>(input_class::count).max_rel == std::numeric_limits<double>::infinity());
+static_assert(phong::accuracy::of<evaluation::stable, double, stable_precision::twofold>(input_class::count).max_ulp ==
+              std::numeric_limits<double>::infinity());
+static_assert(phong::accuracy::exact_class_bound<float>(input_class::count) == std::numeric_limits<double>::infinity());
+static_assert(phong::accuracy::fast_class_bound<double>(input_class::count) == std::numeric_limits<double>::infinity());
+static_assert(std::string_view(phong::accuracy::name(input_class::count)) == "count");
+static_assert(std::string_view(phong::accuracy::name(static_cast<input_class>(200))) == "?");
+static_assert(std::string_view(phong::accuracy::name(input_class::grazing_specular)) == "grazing_specular");
 
 // --- The generators make what their class promises (checked in the wide type on the rounded values).
 

@@ -73,7 +73,7 @@ enum class input_class : unsigned char {
 
 inline constexpr std::size_t input_class_count = static_cast<std::size_t>(input_class::count);
 
-/// The class's name as the tables print it.
+/// The class's name as the tables print it ("count" for input_class::count, "?" past it).
 PHONG_HD constexpr const char* name(input_class c)
 {
     constexpr const char* names[] = {"well_conditioned", "shininess_1e3",   "shininess_1e4",      "shininess_1e5",
@@ -81,6 +81,7 @@ PHONG_HD constexpr const char* name(input_class c)
                                      "huge_1e30",        "tiny_directional", "attenuation_c0_zero", "blinn_opposite",
                                      "denormal",         "shininess_zero",  "grazing_specular",   "non_finite"};
     static_assert(sizeof(names) / sizeof(names[0]) == input_class_count);
+    if (static_cast<std::size_t>(c) >= input_class_count) return c == input_class::count ? "count" : "?";
     return names[static_cast<std::size_t>(c)];
 }
 
@@ -441,7 +442,11 @@ template <class T> constexpr table exact_table(const std::array<double, input_cl
 } // namespace detail
 
 /// The exact mode's bound for class c at its limits (exact_limits): the published max_rel.
-template <class T> constexpr double exact_class_bound(input_class c) { return detail::class_bound<T>(detail::limits_of<T>(c)); }
+/// c = input_class::count (or past it) is no class: +inf.
+template <class T> constexpr double exact_class_bound(input_class c)
+{
+    return static_cast<std::size_t>(c) >= input_class_count ? detail::inf : detail::class_bound<T>(detail::limits_of<T>(c));
+}
 /// The limits a class's exact bound is stated for.
 template <class T> constexpr exact_limits exact_class_limits(input_class c) { return detail::limits_of<T>(c); }
 
@@ -604,7 +609,12 @@ template <class T> constexpr table fast_table(const std::array<double, input_cla
 }
 } // namespace detail
 
-template <class T> constexpr double fast_class_bound(input_class c) { return detail::fast_class_bound<T>(detail::limits_of<T>(c)); }
+/// The fast mode's bound for class c at its limits (exact_limits, the exact mode's): the published
+/// max_rel of bounds<evaluation::fast, T>; c = input_class::count (or past it): +inf.
+template <class T> constexpr double fast_class_bound(input_class c)
+{
+    return static_cast<std::size_t>(c) >= input_class_count ? detail::inf : detail::fast_class_bound<T>(detail::limits_of<T>(c));
+}
 
 // p99_ulp: measured (phong_accuracy_table 200000 7 --bounds --fast --code), twice the worst rounded up
 // (classes where a light may be dropped: 2^24 / 2^53, as in the exact table). Double's p99 is ~1e9
@@ -615,9 +625,12 @@ template <stable_precision P> inline constexpr detail::table bounds<evaluation::
     detail::fast_table<double>({2e+09, 3e+09, 3e+09, 3e+09, 2e+06, 2e+09, 2e+09, 2e+09, 2e+09, 2e+09, 0x1p53, 2e+09, 0x1p53, 4, 2e+10, detail::inf});
 
 /// The bound of class c for mode M, scalar type T (float or double) and stable precision P.
+/// c = input_class::count (or past it) is no class: every field +inf (no promise), never a read
+/// past the table.
 template <evaluation M, class T, stable_precision P = stable_precision::wider>
 PHONG_HD constexpr bound of(input_class c)
 {
+    if (static_cast<std::size_t>(c) >= input_class_count) return {detail::inf, detail::inf, detail::inf};
     return bounds<M, T, P>[static_cast<std::size_t>(c)];
 }
 
