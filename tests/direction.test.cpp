@@ -3,6 +3,7 @@
 #include "support/wide.hpp"
 
 #include <phong/direction.hpp>
+#include <phong/view.hpp>
 
 #include <doctest/doctest.h>
 
@@ -86,4 +87,27 @@ TEST_CASE_TEMPLATE("direction: documented edges", T, float, double)
     CHECK(small.distance == tiny);
     // A huge directional vector stays finite.
     CHECK(phong::toward(vec4<T>(big, big, big, T(0)), vec3<T>(1)).direction.x > T(0.57));
+}
+
+// Finite P and Q whose difference P.xyz - w Q overflows (|P.xyz - Q| > max): toward() promises a
+// unit direction for finite input, and a distance that is inf only when the true one exceeds the
+// largest T. Expected values by hand: (max, 0, 0) - (-max, 0, 0) points along +x, 2 max away;
+// (max, max/2, 0) - (-max, -max/2, 0) = max (2, 1, 0): the direction (2, 1, 0)/sqrt(5).
+TEST_CASE_TEMPLATE("direction: a difference that overflows still has its direction", T, float, double)
+{
+    const T top = std::numeric_limits<T>::max();
+    const auto far = phong::toward(vec4<T>(top, T(0), T(0), T(1)), vec3<T>(-top, T(0), T(0)));
+    CHECK(far.direction == vec3<T>(1, 0, 0));
+    CHECK(far.distance == pinf<T>); // 2 max: beyond T's range
+    const auto oblique = phong::toward(vec4<T>(top, top / 2, T(0), T(1)), vec3<T>(-top, -top / 2, T(0)));
+    CHECK(error_ulp(oblique.direction.x, wide(2) / wsqrt(wide(5))) < 3.0);
+    CHECK(error_ulp(oblique.direction.y, wide(1) / wsqrt(wide(5))) < 3.0);
+    CHECK(oblique.direction.z == T(0));
+    // A difference within range keeps its bits: -max/2 - max/4 = -0.75 max, along -x.
+    const auto fits = phong::toward(vec4<T>(-top / 2, T(0), T(0), T(1)), vec3<T>(top / 4, T(0), T(0)));
+    CHECK(fits.direction == vec3<T>(-1, 0, 0));
+    CHECK(error_ulp(fits.distance, wide(top) / 2 + wide(top) / 4) < 1.0);
+    // The same rule for the view vector and the light direction.
+    CHECK(phong::light_direction(vec4<T>(top, T(0), T(0), T(1)), vec3<T>(-top, T(0), T(0))) == vec3<T>(1, 0, 0));
+    CHECK(phong::view_vector(vec4<T>(T(0), -top, T(0), T(1)), vec3<T>(T(0), top, T(0))) == vec3<T>(0, -1, 0));
 }

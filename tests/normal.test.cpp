@@ -263,6 +263,21 @@ TEST_CASE_TEMPLATE("normal: a determinant whose inverse overflows gives a finite
     }
 }
 
+// transform_normal promises a unit (or zero) normal for finite input, also where N n itself
+// overflows: N = (max / 2) I and n = (3, 4, 0) give N n = (1.5 max, 2 max, 0), beyond T, whose
+// direction is (0.6, 0.8, 0) (a 3-4-5 triangle, by hand).
+TEST_CASE_TEMPLATE("normal: transform_normal where N n overflows keeps the direction", T, float, double)
+{
+    const T half_max = std::numeric_limits<T>::max() / T(2);
+    const mat3<T> N(vec3<T>(half_max, 0, 0), vec3<T>(0, half_max, 0), vec3<T>(0, 0, half_max));
+    const vec3<T> n = phong::transform_normal(N, vec3<T>(3, 4, 0));
+    CHECK(std::abs(double(n.x) - 0.6) <= 2 * double(std::numeric_limits<T>::epsilon()));
+    CHECK(std::abs(double(n.y) - 0.8) <= 2 * double(std::numeric_limits<T>::epsilon()));
+    CHECK(n.z == T(0));
+    // In range: the same bits as before (no rescaling there): (2, 0, 0) -> (1, 0, 0).
+    CHECK(phong::transform_normal(mat3<T>(T(2)), vec3<T>(1, 0, 0)) == vec3<T>(1, 0, 0));
+}
+
 TEST_CASE_TEMPLATE("normal: normal_matrix(model_view) is GLSL's NormalMatrix", T, float, double)
 {
     // Oracle: glm::transpose(glm::inverse(glm::mat3(MV))), what an OpenGL program uploads.

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,51 @@ TEST_CASE("a renderer's own light type: a failed precondition names the light<T>
     CHECK(calls[0].message.find("light.diffuse") == 0);
     CHECK(calls[1].message.find("light.position") == 0);
     CHECK(calls[2].message.find("light.position") == 0);
+#endif
+}
+
+// weighted(lights, weights): a negative, NaN or inf weight is a bad parameter (visibility.hpp: each
+// weight finite and >= 0), reported with the field's name, not shaded into a negative or NaN colour.
+TEST_CASE("a bad visibility weight reaches the handler with the field it names")
+{
+    calls.clear();
+    const precondition_handler previous = set_precondition_handler(&record);
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    for (const float w : {-0.5f, nan, inf}) {
+        const std::array<float, 1> weights{w};
+        (void)shade<features{}>(glm::vec3(0, 0, -2), glm::vec3(0, 0, 1), material<float>{},
+                                weighted(one_light, std::span<const float>(weights)));
+    }
+    const std::array<float, 1> fine{0.5f}; // in [0, 1]: no call
+    (void)shade<features{}>(glm::vec3(0, 0, -2), glm::vec3(0, 0, 1), material<float>{}, weighted(one_light, std::span<const float>(fine)));
+    set_precondition_handler(previous);
+#if defined(NDEBUG)
+    CHECK(calls.empty());
+#else
+    REQUIRE(calls.size() == 3);
+    for (const call& k : calls) CHECK(k.message.find("weighted: weights") != std::string::npos);
+#endif
+}
+
+// The environment is a parameter as the material is: a negative or NaN scene ambient La is
+// reported (environment.hpp's validate), not shaded.
+TEST_CASE("a bad environment reaches the handler with the field it names")
+{
+    calls.clear();
+    const precondition_handler previous = set_precondition_handler(&record);
+    environment<float> env{};
+    env.ambient.g = -0.25f;
+    (void)shade<features{}>(glm::vec3(0, 0, -2), glm::vec3(0, 0, 1), material<float>{}, one_light, env);
+    env = {};
+    env.eye = {0.0f, 0.0f, 1.0f, -1.0f};
+    (void)shade<presets::classic_phong>(glm::vec3(0, 0, -2), glm::vec3(0, 0, 1), material<float>{}, one_light, env);
+    set_precondition_handler(previous);
+#if defined(NDEBUG)
+    CHECK(calls.empty());
+#else
+    REQUIRE(calls.size() == 2);
+    CHECK(calls[0].message.find("environment.ambient") == 0);
+    CHECK(calls[1].message.find("environment.eye.w") == 0);
 #endif
 }
 

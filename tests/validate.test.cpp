@@ -1,6 +1,8 @@
-// validate(light) and validate(material) (light.hpp, material.hpp, validate.hpp): every rejection
-// listed in their doc comments, the acceptance of valid and documented-degenerate parameters,
+// validate(light), validate(material) and validate(environment) (light.hpp, material.hpp,
+// environment.hpp, validate.hpp): every rejection listed in their doc comments, each message
+// naming the field the user set (light.attenuation.linear, not "coefficients"), the acceptance of valid and documented-degenerate parameters,
 // and the same at compile time.
+#include <phong/environment.hpp>
 #include <phong/light.hpp>
 #include <phong/material.hpp>
 
@@ -119,12 +121,14 @@ TEST_CASE_TEMPLATE("validate(light): each documented rejection", T, float, doubl
         {"light.specular", [](light& L) { L.specular.g = T(-1e-30); }},
         {"light.specular", [](light& L) { L.specular.r = qnan<T>; }},
         {"light.specular", [](light& L) { L.specular.b = pinf<T>; }},
-        {"light.attenuation", [](light& L) { L.attenuation.constant = T(-1); }},
-        {"light.attenuation", [](light& L) { L.attenuation.linear = T(-0.5); }},
-        {"light.attenuation", [](light& L) { L.attenuation.quadratic = T(-0.5); }},
-        {"light.attenuation", [](light& L) { L.attenuation.constant = qnan<T>; }},
-        {"light.attenuation", [](light& L) { L.attenuation.linear = pinf<T>; }},
+        {"light.attenuation.constant", [](light& L) { L.attenuation.constant = T(-1); }},
+        {"light.attenuation.linear", [](light& L) { L.attenuation.linear = T(-0.5); }},
+        {"light.attenuation.quadratic", [](light& L) { L.attenuation.quadratic = T(-0.5); }},
+        {"light.attenuation.constant", [](light& L) { L.attenuation.constant = qnan<T>; }},
+        {"light.attenuation.linear", [](light& L) { L.attenuation.linear = pinf<T>; }},
+        {"light.attenuation.quadratic", [](light& L) { L.attenuation.quadratic = pinf<T>; }},
         {"light.attenuation", [](light& L) { L.attenuation = {T(0), T(0), T(0), pinf<T>}; }}, // all zero
+        {"constant + linear + quadratic", [](light& L) { L.attenuation = {T(0), T(0), T(0), pinf<T>}; }}, // the user's names, not c0, c1, c2
         {"light.attenuation.range", [](light& L) { L.attenuation.range = T(0); }},
         {"light.attenuation.range", [](light& L) { L.attenuation.range = T(-3); }},
         {"light.attenuation.range", [](light& L) { L.attenuation.range = qnan<T>; }},
@@ -134,10 +138,11 @@ TEST_CASE_TEMPLATE("validate(light): each documented rejection", T, float, doubl
         {"light.spot.cos_cutoff", [](light& L) { L.spot.cos_cutoff = T(-0.5); }}, // 120 degrees
         {"light.spot.cos_cutoff", [](light& L) { L.spot.cos_cutoff = T(1.5); }},
         {"light.spot.cos_cutoff", [](light& L) { L.spot.cos_cutoff = qnan<T>; }},
-        {"light.spot", [](light& L) { L.spot.cos_inner = T(1.5); }},
-        {"light.spot", [](light& L) { L.spot.cos_outer = T(-1.5); }},
-        {"light.spot", [](light& L) { L.spot.cos_inner = qnan<T>; }},
-        {"light.spot", [](light& L) { L.spot.cos_inner = T(0.5), L.spot.cos_outer = T(0.9); }}, // outer narrower
+        {"light.spot.cos_inner", [](light& L) { L.spot.cos_inner = T(1.5); }},
+        {"light.spot.cos_outer", [](light& L) { L.spot.cos_outer = T(-1.5); }},
+        {"light.spot.cos_inner", [](light& L) { L.spot.cos_inner = qnan<T>; }},
+        {"light.spot.cos_outer", [](light& L) { L.spot.cos_outer = qnan<T>; }},
+        {"light.spot.cos_outer", [](light& L) { L.spot.cos_inner = T(0.5), L.spot.cos_outer = T(0.9); }}, // outer narrower
         {"light.spot.direction", [](light& L) { L.spot.direction = vec3<T>(0, 0, -2); }},
         {"light.spot.direction", [](light& L) { L.spot.direction = vec3<T>(0); }},
         {"light.spot.direction", [](light& L) { L.spot.direction = vec3<T>(0, 0, T(-1.01)); }},
@@ -208,6 +213,42 @@ TEST_CASE_TEMPLATE("validate(material): each documented rejection", T, float, do
         CHECK(rejected(m, b.field));
     }
 }
+
+TEST_CASE_TEMPLATE("validate(environment): ambient and the eye's w", T, float, double)
+{
+    using environment = phong::environment<T>;
+    environment e{};
+    CHECK(static_cast<bool>(phong::validate(e)));
+    e.ambient = vec3<T>(0, 2, 1e30); // no upper bound, as for a light's strengths
+    e.eye = vec4<T>(1, 2, 3, 0);     // w = 0: a direction toward the viewer
+    CHECK(static_cast<bool>(phong::validate(e)));
+    e.eye.w = T(2); // any w > 0 is a point (xyz / w), as toward() reads it
+    CHECK(static_cast<bool>(phong::validate(e)));
+    // The eye is an input of the NaN policy (NaN in, NaN out; shade.hpp), not a parameter error.
+    e.eye = vec4<T>(qnan<T>, 0, 0, 1);
+    CHECK(static_cast<bool>(phong::validate(e)));
+    e.eye.w = -pinf<T>;
+    CHECK(static_cast<bool>(phong::validate(e)));
+    struct bad {
+        const char* field;
+        std::function<void(environment&)> spoil;
+    };
+    const bad cases[] = {
+        {"environment.ambient", [](environment& x) { x.ambient.r = T(-0.25); }},
+        {"environment.ambient", [](environment& x) { x.ambient.g = qnan<T>; }},
+        {"environment.ambient", [](environment& x) { x.ambient.b = pinf<T>; }},
+        {"environment.eye.w", [](environment& x) { x.eye.w = T(-1); }}, // would turn v away from the viewer
+    };
+    for (const bad& b : cases) {
+        environment x{};
+        b.spoil(x);
+        CAPTURE(b.field);
+        CAPTURE(phong::validate(x).message());
+        CHECK(rejected(x, b.field));
+    }
+}
+static_assert(!phong::validate(phong::environment<float>{.ambient = glm::vec3(-1.0f)}));
+static_assert(static_cast<bool>(phong::validate(phong::environment<double>{})));
 
 // validate is constexpr: the same answers at compile time.
 namespace {

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 using namespace phong_test;
 
@@ -79,6 +80,36 @@ TEST_CASE_TEMPLATE("view: eye_from_projection for orthographic matrices is the d
     const vec3<T> e(T(1), T(2), T(2)); // |e| = 3
     const mat4<T> OV = O * glm::lookAt(e, vec3<T>(0), vec3<T>(0, 1, 0));
     CHECK(close(phong::eye_from_projection(OV), vec4<T>(e / T(3), T(0)), 16));
+}
+
+// A projection matrix is defined up to a factor: P * 2^100 (float: 1.3e30) projects every point
+// where P does, so the eye is the same. Its 3x3 minors (products of three entries, ~1e90) overflow
+// float; eye_from_projection promises E (never NaN) for every invertible matrix. Expected values:
+// glm::perspective's centre of projection is the origin, glm::ortho's viewer is along +z.
+TEST_CASE_TEMPLATE("view: eye_from_projection of a scaled matrix, minors beyond T's range", T, float, double)
+{
+    const T scale = std::is_same_v<T, float> ? T(0x1p100) : T(0x1p900);
+    const mat4<T> P = glm::perspective(T(0.9), T(16.0 / 9.0), T(0.1), T(100));
+    CHECK(close(phong::eye_from_projection(P * scale), vec4<T>(0, 0, 0, 1), 4));
+    const mat4<T> O = glm::ortho(T(-2), T(2), T(-1), T(1), T(0.1), T(10));
+    CHECK(close(phong::eye_from_projection(O * scale), vec4<T>(0, 0, 1, 0), 4));
+    const T tiny = std::is_same_v<T, float> ? T(0x1p-100) : T(0x1p-900);
+    CHECK(close(phong::eye_from_projection(P * tiny), vec4<T>(0, 0, 0, 1), 4));
+}
+
+// A perspective matrix whose centre of projection lies beyond T's range: clip w = 1 - e z with
+// e = the smallest subnormal puts the eye at z = 1/e (1/1.4e-45 > float's max). By hand: the rows
+// x, y and w vanish at (0, 0, 1/e, 1), i.e. the eye is a point at infinity along +z, the limit
+// of an orthographic camera looking down -z: E = (0, 0, 1, 0), finite.
+TEST_CASE_TEMPLATE("view: eye_from_projection with the eye beyond T's range gives its direction", T, float, double)
+{
+    const T e = std::numeric_limits<T>::denorm_min();
+    mat4<T> M(T(1)); // rows: x, y, depth = -z, w = 1 - e z
+    M[2][2] = T(-1);
+    M[2][3] = -e; // column 2 (z), row 3 (w)
+    const vec4<T> E = phong::eye_from_projection(M);
+    CHECK(E == vec4<T>(0, 0, 1, 0));
+    CHECK(phong::view_vector(E, vec3<T>(1, 2, 3)) == vec3<T>(0, 0, 1));
 }
 
 TEST_CASE_TEMPLATE("view: view_vector from the eye equals seed 000's two formulas", T, float, double)

@@ -30,8 +30,11 @@
 // Summary, stable mode: float (evaluated in double) correctly rounded but for near-ties, within
 // 1 ulp in every class; with twofold precision (double, SIMD batches, or float on request) every
 // class within a few ulp (p99 <= 5, max <= 12 measured), m up to 1e5 near the peak and n.l ~ 1e-6
-// included. Float SIMD batches on x86 run the geometry in double lanes (detail/stable_lanes.hpp)
-// and are held to the same twofold bounds (tests/batch_accuracy.test.cpp).
+// included, but for grazing_specular: a specular term far from its peak that outweighs a diffuse
+// term at n.l ~ 1e-6 carries the power's own error, about |m log2 c| u (c: its cosine), measured
+// p99 <= 9.3 and max <= 40 ulp (bound 20 / 90 ulp, 6e-6 in float). Float SIMD batches on x86
+// run the geometry in double lanes (detail/stable_lanes.hpp) and are held to the same twofold
+// bounds (tests/batch_accuracy.test.cpp).
 #pragma once
 
 #include "detail/constexpr_math.hpp"
@@ -61,20 +64,24 @@ enum class input_class : unsigned char {
     blinn_opposite,      ///< l = -v exactly (light behind the surface, on the line from the eye through Q)
     denormal,            ///< subnormal normal vector, subnormal directional light xyz, subnormal c1 and c2
     shininess_zero,      ///< a well-conditioned scene with m = 0 (pow(0, 0) = 1)
+    grazing_specular,    ///< 1-4 lights, each at n.l in [2.5e-7, 3e-5], diffuse and specular terms (m in [1, 200], kd, ks
+                         ///< in [0.2, 1], light strengths in [0.1, 1]), no ambient: a specular term far from its peak may
+                         ///< outweigh the diffuse one. Exact-mode limits: specular cosines >= 0.05 or <= -5e-4
     non_finite,          ///< NaN or +-inf in one component of Q or the normal: every channel must be NaN
     count
 };
 
 inline constexpr std::size_t input_class_count = static_cast<std::size_t>(input_class::count);
 
-/// The class's name as the tables print it.
+/// The class's name as the tables print it ("count" for input_class::count, "?" past it).
 PHONG_HD constexpr const char* name(input_class c)
 {
     constexpr const char* names[] = {"well_conditioned", "shininess_1e3",   "shininess_1e4",      "shininess_1e5",
                                      "grazing",          "near_light_1e20", "near_light_1e40",    "huge_1e20",
                                      "huge_1e30",        "tiny_directional", "attenuation_c0_zero", "blinn_opposite",
-                                     "denormal",         "shininess_zero",  "non_finite"};
+                                     "denormal",         "shininess_zero",  "grazing_specular",   "non_finite"};
     static_assert(sizeof(names) / sizeof(names[0]) == input_class_count);
+    if (static_cast<std::size_t>(c) >= input_class_count) return c == input_class::count ? "count" : "?";
     return names[static_cast<std::size_t>(c)];
 }
 
@@ -374,6 +381,9 @@ template <class T> constexpr exact_limits limits_of(input_class c)
     case input_class::blinn_opposite: k.nl = 0.1; k.nv = 0.1; k.blinn_cancels = true; break;
     case input_class::denormal: k.drops = true; k.lights = 2; break;
     case input_class::shininess_zero: k.lights = 3; k.m = 0; break;
+    // Specular cosines c >= 0.05 or c <= -5e-4 (the generator keeps those scenes): a scene of the
+    // class with a cosine in between has the bound exact_bound gives for it (+inf at c = 0).
+    case input_class::grazing_specular: k.lights = 4; k.nl = 2.5e-7; k.c = 0.05; break;
     default: k.drops = true; break;
     }
     return k;
@@ -432,7 +442,11 @@ template <class T> constexpr table exact_table(const std::array<double, input_cl
 } // namespace detail
 
 /// The exact mode's bound for class c at its limits (exact_limits): the published max_rel.
-template <class T> constexpr double exact_class_bound(input_class c) { return detail::class_bound<T>(detail::limits_of<T>(c)); }
+/// c = input_class::count (or past it) is no class: +inf.
+template <class T> constexpr double exact_class_bound(input_class c)
+{
+    return static_cast<std::size_t>(c) >= input_class_count ? detail::inf : detail::class_bound<T>(detail::limits_of<T>(c));
+}
 /// The limits a class's exact bound is stated for.
 template <class T> constexpr exact_limits exact_class_limits(input_class c) { return detail::limits_of<T>(c); }
 
@@ -451,9 +465,9 @@ template <evaluation M, class T, stable_precision P = stable_precision::wider> i
 // d -> 0, subnormal normals; double: the last two) state relative error 1 (the channel keeps only
 // the terms it still has).
 template <stable_precision P> inline constexpr detail::table bounds<evaluation::exact, float, P> =
-    detail::exact_table<float>({40, 10000, 100000, 1e+06, 2e+06, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 30, 0x1p24, 4, detail::inf});
+    detail::exact_table<float>({40, 10000, 100000, 1e+06, 2e+06, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 30, 0x1p24, 4, 2e+06, detail::inf});
 template <stable_precision P> inline constexpr detail::table bounds<evaluation::exact, double, P> =
-    detail::exact_table<double>({40, 10000, 100000, 1e+06, 2e+06, 60, 60, 40, 40, 60, 0x1p53, 30, 0x1p53, 4, detail::inf});
+    detail::exact_table<double>({40, 10000, 100000, 1e+06, 2e+06, 60, 60, 40, 40, 60, 0x1p53, 30, 0x1p53, 4, 2e+06, detail::inf});
 // Stable float, wider precision: evaluated in double and rounded once, so every finite class is
 // float's correct rounding of the model but for near-ties (measured: max 0.5 ulp, 5.9e-8 in every
 // class); published as 1 ulp.
@@ -472,9 +486,13 @@ template <> inline constexpr detail::table bounds<evaluation::stable, float, sta
     /* blinn_opposite      */ {1, 1, 1.2e-07},
     /* denormal            */ {1, 1, 1.2e-07},
     /* shininess_zero      */ {1, 1, 1.2e-07},
+    /* grazing_specular    */ {1, 1, 1.2e-07},
     /* non_finite          */ {detail::inf, detail::inf, detail::inf},
 }};
 // Stable, twofold precision (float with features::precision = twofold, SIMD batches, and double).
+// grazing_specular: the power's own error, ~|y| u with y = m log2 c down to ~-28 where the specular
+// term still outweighs a diffuse term at n.l ~ 1e-6 (docs/accuracy.md); twice the worst of the
+// scalar run and of float SIMD batches (p99 9.3, max 40 ulp, 2.5e-6; SSE2, AVX2, AVX-512), rounded up.
 template <> inline constexpr detail::table bounds<evaluation::stable, float, stable_precision::twofold>{{
     /* well_conditioned    */ {3, 20, 2e-06},
     /* shininess_1e3       */ {10, 30, 2e-06},
@@ -490,6 +508,7 @@ template <> inline constexpr detail::table bounds<evaluation::stable, float, sta
     /* blinn_opposite      */ {4, 10, 7e-07},
     /* denormal            */ {4, 10, 1e-06},
     /* shininess_zero      */ {4, 10, 9e-07},
+    /* grazing_specular    */ {20, 90, 6e-06},
     /* non_finite          */ {detail::inf, detail::inf, detail::inf},
 }};
 template <stable_precision P> inline constexpr detail::table bounds<evaluation::stable, double, P>{{
@@ -507,6 +526,7 @@ template <stable_precision P> inline constexpr detail::table bounds<evaluation::
     /* blinn_opposite      */ {4, 10, 2e-15},
     /* denormal            */ {4, 10, 3e-15},
     /* shininess_zero      */ {4, 9, 2e-15},
+    /* grazing_specular    */ {20, 70, 9e-15},
     /* non_finite          */ {detail::inf, detail::inf, detail::inf},
 }};
 // clang-format on
@@ -589,20 +609,28 @@ template <class T> constexpr table fast_table(const std::array<double, input_cla
 }
 } // namespace detail
 
-template <class T> constexpr double fast_class_bound(input_class c) { return detail::fast_class_bound<T>(detail::limits_of<T>(c)); }
+/// The fast mode's bound for class c at its limits (exact_limits, the exact mode's): the published
+/// max_rel of bounds<evaluation::fast, T>; c = input_class::count (or past it): +inf.
+template <class T> constexpr double fast_class_bound(input_class c)
+{
+    return static_cast<std::size_t>(c) >= input_class_count ? detail::inf : detail::fast_class_bound<T>(detail::limits_of<T>(c));
+}
 
 // p99_ulp: measured (phong_accuracy_table 200000 7 --bounds --fast --code), twice the worst rounded up
 // (classes where a light may be dropped: 2^24 / 2^53, as in the exact table). Double's p99 is ~1e9
 // ulp: the fast power is float-accurate in double too (relative ~2e-7 typical, pow_unit_max_rel at most).
 template <stable_precision P> inline constexpr detail::table bounds<evaluation::fast, float, P> =
-    detail::fast_table<float>({50, 20000, 200000, 2e+06, 2e+06, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 30, 0x1p24, 4, detail::inf});
+    detail::fast_table<float>({50, 20000, 200000, 2e+06, 2e+06, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 0x1p24, 30, 0x1p24, 4, 2e+06, detail::inf});
 template <stable_precision P> inline constexpr detail::table bounds<evaluation::fast, double, P> =
-    detail::fast_table<double>({2e+09, 3e+09, 3e+09, 3e+09, 2e+06, 2e+09, 2e+09, 2e+09, 2e+09, 2e+09, 0x1p53, 2e+09, 0x1p53, 4, detail::inf});
+    detail::fast_table<double>({2e+09, 3e+09, 3e+09, 3e+09, 2e+06, 2e+09, 2e+09, 2e+09, 2e+09, 2e+09, 0x1p53, 2e+09, 0x1p53, 4, 2e+10, detail::inf});
 
 /// The bound of class c for mode M, scalar type T (float or double) and stable precision P.
+/// c = input_class::count (or past it) is no class: every field +inf (no promise), never a read
+/// past the table.
 template <evaluation M, class T, stable_precision P = stable_precision::wider>
 PHONG_HD constexpr bound of(input_class c)
 {
+    if (static_cast<std::size_t>(c) >= input_class_count) return {detail::inf, detail::inf, detail::inf};
     return bounds<M, T, P>[static_cast<std::size_t>(c)];
 }
 

@@ -66,6 +66,8 @@ struct spot_cone {
     T cos_outer = T(-1);   ///< smooth model: zero where cos(angle) <= cos_outer; cos_outer <= cos_inner
 
     /// OpenGL spot: axis (normalized here), exponent, cutoff in degrees (0..90, or 180 = no spot).
+    /// Edge: a zero axis or a cutoff outside that range makes a cone validate(light) rejects,
+    /// naming light.spot.direction or light.spot.cos_cutoff.
     PHONG_HD static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
     {
         spot_cone s;
@@ -74,7 +76,9 @@ struct spot_cone {
         s.cos_cutoff = phong::cos_degrees(cutoff_degrees);
         return s;
     }
-    /// Smooth spot: full strength inside inner_degrees, none outside outer_degrees (inner <= outer).
+    /// Smooth spot: full strength inside inner_degrees, none outside outer_degrees
+    /// (0 <= inner <= outer <= 180). Edge: a zero axis or inner > outer makes a cone validate(light)
+    /// rejects (light.spot.direction, light.spot.cos_outer); inner = outer: a hard edge.
     PHONG_HD static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
     {
         spot_cone s;

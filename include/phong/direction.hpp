@@ -39,14 +39,22 @@ struct direction_and_distance {
 /// view vector. One rule, no branch on w for the direction.
 /// Pre: P.w >= 0 (a negative w flips the direction), finite. Edge: P at Q (w > 0) gives
 /// direction 0 and distance 0; P.xyz = 0 with w = 0 gives direction 0 and distance +inf (still a
-/// point at infinity); huge and tiny differences are rescaled (see normalize).
+/// point at infinity); huge and tiny differences are rescaled (see normalize); a difference that
+/// overflows although P and Q are finite (|P.xyz - Q| > max) is taken from the halves, exactly:
+/// the direction stays a unit vector, the distance is inf only when the true one exceeds the
+/// largest T. NaN or inf in P or Q: NaN components.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& P, const glm::vec<3, T, Q>& point)
 {
-    const glm::vec<3, T, Q> d = detail::homogeneous_difference(glm::vec<3, T, Q>(P.x, P.y, P.z), P.w, point);
-    const T len = phong::length(d);
+    const glm::vec<3, T, Q> xyz(P.x, P.y, P.z);
+    const glm::vec<3, T, Q> full = detail::homogeneous_difference(xyz, P.w, point);
+    // Halving is exact (for normal numbers), so the halves' difference has the same direction and
+    // half the length; it is taken only where the full one overflowed (elsewhere scale = 1: the same bits).
+    const T scale = phong::select(phong::max_abs(full) > largest<T>(), T(0.5), T(1));
+    const glm::vec<3, T, Q> d = detail::homogeneous_difference(xyz * scale, P.w * scale, point);
     const T inf = std::numeric_limits<T>::infinity();
-    return {phong::normalize(d), phong::select(P.w > T(0), len / phong::select(P.w > T(0), P.w, T(1)), inf)};
+    const T w = phong::select(P.w > T(0), P.w, T(1));
+    return {phong::normalize(d), phong::select(P.w > T(0), phong::length(d) / (scale * w), inf)};
 }
 
 /// Seed 000's light direction \hat l_i from a homogeneous light position L (w = 1 or 0), eye coords.

@@ -1,8 +1,8 @@
-// phong: what surrounds the shaded point: the scene's ambient light and the eye.
+// phong: what surrounds the shaded point: the scene's ambient light and the eye; validate(environment).
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "detail/config.hpp"
+#include "validate.hpp"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -12,11 +12,22 @@ namespace phong {
 /// What surrounds the shaded point: the scene's ambient light and the eye.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct environment {
-    glm::vec<3, T, Q> ambient{T(0)}; ///< La (seed 000) = GlobalAmbient (seed 001); read when features::scene_ambient
+    glm::vec<3, T, Q> ambient{T(0)}; ///< La (seed 000) = GlobalAmbient (seed 001), >= 0; read when features::scene_ambient
     /// The eye as a homogeneous point: read for view_model::eye_point (w = 1: a point such as seed
     /// 001's ray start; w = 0: a direction) and view_model::fixed_direction (xyz: toward the viewer).
-    /// eye_from_projection(ec_lds) gives it from a projection matrix.
+    /// eye_from_projection(ec_lds) gives it from a projection matrix. w >= 0 (w < 0 would turn v
+    /// away from the viewer); NaN or inf is an input, not a parameter error: every channel is NaN.
     glm::vec<4, T, Q> eye{T(0), T(0), T(0), T(1)};
 };
+
+/// Checks an environment against the model's domain. Rejected: a negative, NaN or inf ambient;
+/// a finite eye.w < 0. Not rejected: a NaN or inf eye (shade's NaN policy: NaN in every channel).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr validation validate(const environment<T, Q>& e)
+{
+    if (!detail::finite_non_negative(e.ambient)) return {"environment.ambient: negative, NaN or inf"};
+    if (detail::finite(e.eye.w) && e.eye.w < T(0)) return {"environment.eye.w: must be >= 0 (1: a point, 0: a direction)"};
+    return {};
+}
 
 } // namespace phong

@@ -197,7 +197,9 @@ template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7
 /// relative error rsqrt_max_rel<T>. Float scalars on x86 (SSE): rsqrtss. Double scalars and other
 /// targets: the exact 1/sqrt(x) (no faster estimate is worth it there). SIMD batches: see
 /// detail/fast_lanes.hpp. Edge: x = 0 gives inf, x = inf gives 0 (the estimate, unrefined);
-/// x < 0 or NaN: NaN. Exact twin: phong::rsqrt (math.hpp).
+/// x < 0 or NaN: NaN; a subnormal x gives inf with rsqrtss (it reads the input as 0), the exact
+/// 1/sqrt(x) elsewhere (shade's fast mode never passes one: it drops such vectors first).
+/// Exact twin: phong::rsqrt (math.hpp).
 template <class V>
 PHONG_HD constexpr V rsqrt(V x)
 {

@@ -103,7 +103,8 @@ concept light_source = requires(const std::remove_cvref_t<L>& l) {
     typename detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::scalar;
 };
 
-/// The scalar type U and qualifier of a light_source's fields (from light_traits<L>::position).
+/// The scalar type U (light_scalar_t) and qualifier (light_qualifier_v) of a light_source's
+/// fields, read from light_traits<L>::position's return type glm::vec<4, U, Q>.
 template <light_source L>
 using light_scalar_t = typename detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::scalar;
 template <light_source L>
@@ -168,17 +169,19 @@ PHONG_HD constexpr validation validate(const light<T, Q>& L)
     if (!finite_non_negative(L.diffuse)) return {"light.diffuse: negative, NaN or inf"};
     if (!finite_non_negative(L.specular)) return {"light.specular: negative, NaN or inf"};
     const falloff<T>& a = L.attenuation;
-    if (!finite_non_negative(a.constant) || !finite_non_negative(a.linear) || !finite_non_negative(a.quadratic))
-        return {"light.attenuation: coefficients must be finite and >= 0"};
-    if (a.constant + a.linear + a.quadratic <= T(0)) return {"light.attenuation: c0 + c1 + c2 must be > 0"};
+    if (!finite_non_negative(a.constant)) return {"light.attenuation.constant: must be finite and >= 0"};
+    if (!finite_non_negative(a.linear)) return {"light.attenuation.linear: must be finite and >= 0"};
+    if (!finite_non_negative(a.quadratic)) return {"light.attenuation.quadratic: must be finite and >= 0"};
+    if (a.constant + a.linear + a.quadratic <= T(0))
+        return {"light.attenuation: constant + linear + quadratic must be > 0 (all zero: f = 1 / 0)"};
     if (!(a.range > T(0))) return {"light.attenuation.range: must be > 0 (inf for no window)"};
     const spot_cone<T, Q>& s = L.spot;
     if (!finite_non_negative(s.exponent)) return {"light.spot.exponent: must be finite and >= 0"};
     if (!(s.cos_cutoff == T(-1) || (s.cos_cutoff >= T(0) && s.cos_cutoff <= T(1))))
         return {"light.spot.cos_cutoff: cutoff must be in [0, 90] degrees or 180"};
-    if (!(s.cos_inner >= T(-1) && s.cos_inner <= T(1) && s.cos_outer >= T(-1) && s.cos_outer <= T(1)))
-        return {"light.spot: cos_inner and cos_outer must be in [-1, 1]"};
-    if (s.cos_outer > s.cos_inner) return {"light.spot: outer cone narrower than inner cone"};
+    if (!(s.cos_inner >= T(-1) && s.cos_inner <= T(1))) return {"light.spot.cos_inner: must be in [-1, 1]"};
+    if (!(s.cos_outer >= T(-1) && s.cos_outer <= T(1))) return {"light.spot.cos_outer: must be in [-1, 1]"};
+    if (s.cos_outer > s.cos_inner) return {"light.spot.cos_outer: must be <= cos_inner (outer cone narrower than inner)"};
     const T axis2 = s.direction.x * s.direction.x + s.direction.y * s.direction.y + s.direction.z * s.direction.z;
     if (!(axis2 > T(0.998) && axis2 < T(1.002))) return {"light.spot.direction: must be unit length"};
     return {};

@@ -192,8 +192,9 @@ template <class V> PHONG_HD constexpr V largest() { return V(std::numeric_limits
 /// run time on x86-64 (g++, clang++): the sqrtss/sqrtsd instruction, the same correctly rounded
 /// value as std::sqrt without its errno side effect (PHONG_NO_X86_SQRT turns that off).
 template <class V> PHONG_HD constexpr V sqrt(V x) { return math_traits<V>::sqrt(x); }
-/// 1/sqrt(x): rsqrt(0) = inf, rsqrt(inf) = 0. Scalars: 1 / sqrt(x) (< 1 ulp); SIMD float
-/// lanes: a hardware estimate refined by one Newton step (< 2 ulp), see batch.hpp.
+/// 1/sqrt(x) for x >= 0: rsqrt(0) = inf, rsqrt(inf) = 0; x < 0 or NaN gives NaN. Scalars:
+/// 1 / sqrt(x) (< 1 ulp); SIMD float lanes: a hardware estimate refined by one Newton step
+/// (< 2 ulp), see batch.hpp.
 template <class V> PHONG_HD constexpr V rsqrt(V x) { return math_traits<V>::rsqrt(x); }
 namespace detail {
 /// 1/sqrt(x) for x a positive normal number (the caller has checked, or selects the lanes
@@ -237,7 +238,8 @@ template <class V> PHONG_HD constexpr V pow_unit_in_domain(V x, V m)
         return phong::pow_unit(x, m);
 }
 } // namespace detail
-/// a * b + c rounded once.
+/// a * b + c rounded once (std::fma). Constant evaluation: exact when c = -fl(a b) (the
+/// error-free products phong uses), else within 1 ulp (float: formed in long double, rounded twice).
 template <class V> PHONG_HD constexpr V fma(V a, V b, V c) { return math_traits<V>::fma(a, b, c); }
 /// |x|.
 template <class V> PHONG_HD constexpr V abs(V x) { return math_traits<V>::abs(x); }
@@ -267,7 +269,9 @@ template <unsigned N, class V> PHONG_HD constexpr V pow(V x)
 }
 
 /// cos(deg * pi / 180) for deg in [0, 180], exact at 0, 90 and 180 (used to convert OpenGL spot
-/// cutoffs, which are given in degrees, once when a light is made).
+/// cutoffs, which are given in degrees, once when a light is made). A 40-term Taylor series in
+/// long double: accurate for |deg| <= 720, then it loses digits, and from about 2000 degrees it
+/// returns garbage (-inf in float from about 1e4): reduce the angle first. NaN gives NaN.
 template <class V> PHONG_HD constexpr V cos_degrees(V degrees)
 {
     using W = detail::ce::wide;

@@ -7,6 +7,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <type_traits>
+
 namespace phong {
 
 namespace detail {
@@ -29,6 +31,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> face_viewer(const glm::vec<3, T, Q>& n, con
 }
 
 /// Two-sided lighting decided by the caller (e.g. gl_FrontFacing): n' = front_facing ? n : -n.
+/// Edge: any n (zero, NaN) is passed through, negated or not.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> face_flag(const glm::vec<3, T, Q>& n, bool front_facing)
 {
@@ -72,7 +75,9 @@ PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix_inverse_transpose(const gl
     return glm::mat<3, 3, T, Q>(cof[0] * inv, cof[1] * inv, cof[2] * inv);
 }
 
-/// GLSL's NormalMatrix for a model-view matrix: the inverse transpose of its upper 3x3.
+/// GLSL's NormalMatrix for a model-view matrix: the inverse transpose of its upper 3x3
+/// (translation ignored). Pre and edges: those of normal_matrix_inverse_transpose (a singular
+/// upper 3x3 gives its cofactor matrix; never NaN for finite entries whose pairwise products are finite).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T, Q>& model_view)
 {
@@ -84,11 +89,22 @@ PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T, Q>
 /// n' = normalize(N n): a normal carried by a normal matrix N (seed 001's m = M m' with M the
 /// transpose of the inverse transform, seed 003's tnorm = normalize(NormalMatrix * VertexNormal)).
 /// N should come from normal_matrix / normal_matrix_inverse_transpose (or the cofactor, see
-/// there), not be the model matrix itself. Edge: a zero result stays 0 (never NaN for finite input).
+/// there), not be the model matrix itself. Edge: a zero result stays 0 (never NaN for finite
+/// input); where N n overflows, N and n are first scaled by powers of two (exact: the same
+/// direction). NaN or inf in N or n: NaN components.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> transform_normal(const glm::mat<3, 3, T, Q>& N, const glm::vec<3, T, Q>& n)
 {
-    return phong::normalize(N[0] * n.x + N[1] * n.y + N[2] * n.z);
+    glm::vec<3, T, Q> r = N[0] * n.x + N[1] * n.y + N[2] * n.z;
+    if constexpr (std::is_floating_point_v<T>) {
+        if (!(phong::max_abs(r) <= largest<T>())) [[unlikely]] { // overflow (or NaN input, which stays NaN)
+            const T s = math_traits<T>::inverse_pow2_scale(
+                phong::max(phong::max(phong::max_abs(N[0]), phong::max_abs(N[1])), phong::max_abs(N[2])));
+            const glm::vec<3, T, Q> m = phong::rescaled(n);
+            r = (N[0] * s) * m.x + (N[1] * s) * m.y + (N[2] * s) * m.z;
+        }
+    }
+    return phong::normalize(r);
 }
 
 } // namespace phong

@@ -101,10 +101,10 @@ PHONG_HD constexpr color<F, T, Q> finish(const folded_sums<T, Q>& sums, [[maybe_
     else return c;
 }
 
-/// validate(material): a compile error in constant evaluation, an assertion in debug builds,
-/// nothing at all under NDEBUG (not even evaluated).
+/// validate(material) and validate(environment): a compile error in constant evaluation, an
+/// assertion in debug builds, nothing at all under NDEBUG (not even evaluated).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr void check_material([[maybe_unused]] const material<T, Q>& mat)
+PHONG_HD constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const environment<T, Q>& env)
 {
     if constexpr (std::is_floating_point_v<T>) {
 #if defined(NDEBUG)
@@ -112,6 +112,8 @@ PHONG_HD constexpr void check_material([[maybe_unused]] const material<T, Q>& ma
 #endif
         const validation vm = phong::validate(mat);
         require(static_cast<bool>(vm), vm.message());
+        const validation ve = phong::validate(env);
+        require(static_cast<bool>(ve), ve.message());
     }
 }
 
@@ -168,12 +170,12 @@ PHONG_HD constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& positio
 template <features F, class T>
 using arithmetic_t = std::conditional_t<widened<F, T>, double, T>;
 
-/// shade<F>'s checks of its parameters: the material, and unit_inputs' unit vectors.
+/// shade<F>'s checks of its parameters: the material, the environment, and unit_inputs' unit vectors.
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q>& normal, [[maybe_unused]] const glm::vec<3, T, Q>& view,
-                                     const material<T, Q>& mat)
+                                     const material<T, Q>& mat, const environment<T, Q>& env)
 {
-    check_material(mat);
+    check_parameters(mat, env);
     if constexpr (F.unit_inputs) {
         check_unit(normal, "shade: normal must be unit length (features::unit_inputs)");
         if constexpr (F.view == view_model::given) check_unit(view, "shade: view vector must be unit length (features::unit_inputs)");
@@ -192,12 +194,12 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
     if constexpr (!light_list<Lights>) {
         return {}; // not instantiated further: the static_assert above is the one error reported
     } else if constexpr (widened<F, T>) {
-        check_inputs<F>(normal, view, mat);
+        check_inputs<F>(normal, view, mat, env);
         using W = double;
         return evaluate<exact_of<F>>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view),
                                      widen<W>(mat), static_cast<Lights&&>(lights), widen<W>(env), front_facing);
     } else {
-        check_inputs<F>(normal, view, mat);
+        check_inputs<F>(normal, view, mat, env);
         return evaluate<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing);
     }
 }
@@ -223,8 +225,10 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
 /// from env.eye). For view_model::given, use the overload below that takes v.
 /// front_facing: read only for facing::flag.
 ///
-/// Pre: validate(mat) and validate(L) for every light (checked: a compile error in constant
-/// evaluation, an assertion in debug builds). Edges (finite input never gives NaN or inf):
+/// Pre: validate(mat), validate(env) and validate(L) for every light, weights of weighted() finite
+/// and >= 0 (checked: a compile error in constant evaluation, the precondition handler with a
+/// message naming the field in debug builds, detail/config.hpp; nothing under NDEBUG).
+/// Edges (finite input never gives NaN or inf):
 ///  * a light at Q (or a directional light with xyz = 0): no direction; that light adds only its
 ///    ambient term;
 ///  * normal = 0: no diffuse or specular from any light;
@@ -315,7 +319,9 @@ PHONG_HD constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(cons
 ///   eyeCoords = ModelView * (p, 1),  tnorm = normalize(NormalMatrix * n),
 /// then shade<F>(eyeCoords.xyz, tnorm, ...) with lights in eye coordinates.
 /// Pre: model_view affine (last row 0, 0, 0, 1), as in the seed, which drops eyeCoords.w.
-/// normal_matrix(model_view) gives NormalMatrix.
+/// normal_matrix(model_view) gives NormalMatrix. Everything else as shade<F> (F.view must not be
+/// view_model::given: no per-vertex v here), with transform_normal's edges for the normal; a
+/// vertex whose eye coordinates overflow T is shaded as an inf position (NaN in every channel).
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_HD constexpr color<F, T, Q> shade_vertex(const glm::vec<3, T, Q>& vertex_position, const glm::vec<3, T, Q>& vertex_normal,
                                                const glm::mat<4, 4, T, Q>& model_view, const glm::mat<3, 3, T, Q>& normal_mat,

@@ -34,6 +34,7 @@ PHONG_HD constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 /// Compensated dot product (Ogita, Rump and Oishi's Dot2): the result is as accurate as if
 /// computed in twice the working precision, then rounded: |error| <= eps |dot| + L^2 eps^2
 /// sum |a_k b_k|. Used where cancellation matters (n.l near grazing incidence).
+/// Pre: every product a_k b_k finite (an overflowing one gives NaN, where dot gives inf).
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
@@ -64,7 +65,7 @@ PHONG_HD constexpr T max_abs(const glm::vec<L, T, Q>& v)
 
 /// v * 2^-e, an exact power-of-two rescaling that brings the largest component into [1, 2):
 /// the direction is kept bit for bit and squares of the result neither overflow nor underflow.
-/// Edge: the zero vector stays zero.
+/// Edge: the zero vector stays zero; NaN or inf components stay NaN or inf (the rest is scaled).
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<L, T, Q> rescaled(const glm::vec<L, T, Q>& v)
 {
@@ -74,7 +75,7 @@ PHONG_HD constexpr glm::vec<L, T, Q> rescaled(const glm::vec<L, T, Q>& v)
 /// Euclidean length |v| = sqrt(dot(v, v)), computed on the rescaled vector so that it is
 /// accurate (< 2 ulp) over the whole finite range: huge components do not overflow, tiny and
 /// subnormal ones do not underflow. Edge: length(0) = 0; the result is inf only when the true
-/// length exceeds the largest finite T.
+/// length exceeds the largest finite T (or a component is inf); a NaN component gives NaN.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr T length(const glm::vec<L, T, Q>& v)
 {
@@ -146,7 +147,7 @@ PHONG_HD constexpr T exact_inverse_length(T dd)
 
 /// GLSL reflect: reflect(i, n) = i - 2 dot(n, i) n, the mirror image of the incident direction
 /// i about the plane with unit normal n. Pre: n unit length (else the result is not a mirror
-/// image). It keeps |i| and is an involution (up to rounding) for unit n.
+/// image). It keeps |i| and is an involution (up to rounding) for unit n. Edge: n = 0 returns i.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<L, T, Q> reflect(const glm::vec<L, T, Q>& i, const glm::vec<L, T, Q>& n)
 {
@@ -154,6 +155,7 @@ PHONG_HD constexpr glm::vec<L, T, Q> reflect(const glm::vec<L, T, Q>& i, const g
 }
 
 /// GLSL faceforward: faceforward(n, i, nref) = dot(nref, i) < 0 ? n : -n.
+/// Edge: dot(nref, i) = 0 or NaN gives -n (as GLSL).
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<L, T, Q> faceforward(const glm::vec<L, T, Q>& n, const glm::vec<L, T, Q>& i,
                                                  const glm::vec<L, T, Q>& nref)
@@ -162,7 +164,9 @@ PHONG_HD constexpr glm::vec<L, T, Q> faceforward(const glm::vec<L, T, Q>& n, con
     return n * sign;
 }
 
-/// Cross product a x b (GLM's is constexpr-unfriendly in some configurations).
+/// Cross product a x b = (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x) (GLM's is
+/// constexpr-unfriendly in some configurations). Edge: a zero vector gives 0, parallel ones 0 up
+/// to rounding; products beyond T's range give inf (or NaN from inf - inf).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> cross(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b)
 {

@@ -18,8 +18,9 @@ PHONG_HD constexpr glm::vec<3, T, Q> view_perspective(const glm::vec<3, T, Q>& p
 
 /// Seed 000, orthographic: v = normalize(-M02/M00, -M12/M11, 1), M = ec_lds the projection
 /// matrix; M02 is row 0, column 2 (GLM's m[2][0]).
-/// Pre: M00 != 0 and M11 != 0 (any invertible orthographic matrix). Edge: M00 or M11 = 0 gives a
-/// non-finite ratio; use eye_from_projection, which never divides.
+/// Pre: M00 != 0 and M11 != 0 (any invertible orthographic matrix), the ratios M02/M00 and
+/// M12/M11 finite. Edge: M00 or M11 = 0, or a ratio beyond T's range, gives NaN components; use
+/// eye_from_projection, which never divides by them.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> view_orthographic(const glm::mat<4, 4, T, Q>& ec_lds)
 {
@@ -35,21 +36,30 @@ PHONG_HD constexpr glm::vec<3, T, Q> view_orthographic(const glm::mat<4, 4, T, Q
 /// Orientation: w > 0 for a finite eye; for w = 0 the direction in which clip depth (row 2)
 /// decreases, i.e. toward the near plane (OpenGL's convention; reversed-Z matrices need negating).
 /// Then v = toward(E, Q).direction (the same rule as for lights).
-/// Pre: rows 0, 1, 3 of M linearly independent (any invertible projection). Edge: a singular M
-/// gives E = 0, and then every view vector is 0 (never NaN).
+/// Pre: rows 0, 1, 3 of M linearly independent (any invertible projection), finite. Edge: a
+/// singular M gives E = 0, and then every view vector is 0 (never NaN). Each row is scaled by a
+/// power of two first (exact; the null vector does not change), so huge or tiny entries (M times
+/// 1e30) give the same E. An eye point beyond T's range (E.xyz / E.w overflows) is returned as
+/// its direction from the origin (w = 0), the limit it tends to.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<4, T, Q> eye_from_projection(const glm::mat<4, 4, T, Q>& M)
 {
-    // Rows of M (GLM is column-major: M[c][r]).
-    const auto row = [&](int r) { return glm::vec<4, T, Q>(M[0][r], M[1][r], M[2][r], M[3][r]); };
+    // Rows of M (GLM is column-major: M[c][r]), each rescaled so that its 3x3 minors neither
+    // overflow nor underflow.
+    const auto row = [&](int r) { return phong::rescaled(glm::vec<4, T, Q>(M[0][r], M[1][r], M[2][r], M[3][r])); };
     const glm::vec<4, T, Q> a = row(0), b = row(1), c = row(3), depth = row(2);
     // 3x3 determinant of the columns i, j, k of the rows a, b, c.
     const auto det3 = [&](int i, int j, int k) {
         return a[i] * (b[j] * c[k] - b[k] * c[j]) - a[j] * (b[i] * c[k] - b[k] * c[i]) + a[k] * (b[i] * c[j] - b[j] * c[i]);
     };
     glm::vec<4, T, Q> E(det3(1, 2, 3), -det3(0, 2, 3), det3(0, 1, 3), -det3(0, 1, 2));
-    if (E.w != T(0)) return E / E.w; // the centre of projection, w = 1
-    const glm::vec<3, T, Q> dir = phong::normalize(glm::vec<3, T, Q>(E.x, E.y, E.z));
+    const glm::vec<3, T, Q> E_xyz(E.x, E.y, E.z);
+    if (E.w != T(0)) {
+        const glm::vec<4, T, Q> centre = E / E.w; // the centre of projection, w = 1
+        if (phong::max_abs(glm::vec<3, T, Q>(centre.x, centre.y, centre.z)) <= largest<T>()) return centre;
+        return glm::vec<4, T, Q>(phong::normalize(E.w > T(0) ? E_xyz : -E_xyz), T(0)); // beyond T's range
+    }
+    const glm::vec<3, T, Q> dir = phong::normalize(E_xyz);
     const T depth_rate = depth.x * dir.x + depth.y * dir.y + depth.z * dir.z;
     return glm::vec<4, T, Q>(depth_rate > T(0) ? -dir : dir, T(0));
 }

@@ -40,8 +40,10 @@ PHONG_HD constexpr masked_lights<Lights> masked(Lights&& lights, std::uint64_t v
 /// f_i (attenuation times spot) is multiplied by weights[i] (soft shadows, partial occluders), so
 /// every term of that light, its ambient term included, scales by it; a weight 0 skips the light
 /// (the same as removing it), 1 leaves it as it is.
-/// Pre: weights.size() >= the number of lights (checked in debug builds); each weight finite and
-/// in [0, 1] (a weight above 1 brightens the light, as a stronger light would). Held as masked() holds it.
+/// Pre (checked in debug builds, through the precondition handler with a message naming
+/// weights): weights.size() >= the number of lights; each weight finite and >= 0. Weights in
+/// [0, 1] are visibilities; one above 1 brightens the light, as a stronger light would.
+/// Held as masked() holds it.
 template <class Lights, class T>
 PHONG_HD constexpr weighted_lights<Lights, T> weighted(Lights&& lights, std::span<const T> weights)
 {

@@ -3,7 +3,7 @@
 # debug assertion at run time. Included from tests/CMakeLists.txt.
 
 # 1. Constant evaluation: the compiler itself is the test. Case 0 is a valid control that must
-#    compile; cases 1-8 must fail, naming phong::detail::precondition_failed_see_phong_validate and
+#    compile; cases 1-9 must fail, naming phong::detail::precondition_failed_see_phong_validate and
 #    printing validate()'s message with the field (expect_compile_error.cmake).
 set(phong_reject_includes -I${PROJECT_SOURCE_DIR}/include)
 get_target_property(phong_glm_includes glm::glm INTERFACE_INCLUDE_DIRECTORIES)
@@ -16,8 +16,8 @@ set(phong_reject_source ${CMAKE_CURRENT_LIST_DIR}/constexpr_reject.cpp)
 set(phong_reject_command ${CMAKE_CXX_COMPILER} -std=c++20 -fsyntax-only -Wall -Wextra -Wpedantic -Werror ${phong_reject_includes})
 add_test(NAME nan_policy_constexpr_reject_0 COMMAND ${phong_reject_command} -DPHONG_REJECT_CASE=0 ${phong_reject_source})
 # The field each case spoils, as validate()'s message names it: the error must print it.
-set(phong_reject_fields material.kd material.shininess material.alpha light.attenuation light.spot.direction
-                        light.position.w light.diffuse light.position.w)
+set(phong_reject_fields material.kd material.shininess material.alpha light.attenuation.constant light.spot.direction
+                        light.position.w light.diffuse light.position.w environment.ambient)
 set(case 0)
 foreach(field IN LISTS phong_reject_fields)
   math(EXPR case "${case} + 1")

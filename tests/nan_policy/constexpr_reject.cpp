@@ -2,7 +2,7 @@
 // that validate() rejects must not compile, and the compiler must name
 // phong::detail::precondition_failed_see_phong_validate (detail/config.hpp) and print validate()'s
 // message, which names the field (checked per case by tests/nan_policy/expect_compile_error.cmake). Compiled once per case
-// by ctest (tests/nan_policy/checks.cmake) with -DPHONG_REJECT_CASE=N; case 0 is the valid control,
+// by ctest (tests/nan_policy/checks.cmake) with -DPHONG_REJECT_CASE=N (1-9); case 0 is the valid control,
 // which must compile cleanly (so a failure of the others is not a broken command line).
 #include <phong/phong.hpp>
 
@@ -45,7 +45,16 @@ constexpr light<double> make_light()
     return L;
 }
 
+constexpr environment<double> make_environment()
+{
+    environment<double> e{};
+#if PHONG_REJECT_CASE == 9
+    e.ambient.z = -0.25; // negative scene ambient La
+#endif
+    return e;
+}
+
 constexpr std::array<light<double>, 1> lights{make_light()};
 constexpr features F{.attenuation = attenuation_model::polynomial, .spot = spot_model::opengl};
-constexpr glm::dvec3 rgb = shade<F>(glm::dvec3(0, 0, -5), glm::dvec3(0, 0, 1), make_material(), lights, environment<double>{});
+constexpr glm::dvec3 rgb = shade<F>(glm::dvec3(0, 0, -5), glm::dvec3(0, 0, 1), make_material(), lights, make_environment());
 static_assert(rgb.x >= 0);

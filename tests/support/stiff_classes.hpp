@@ -1,5 +1,5 @@
 // Test support: seeded generators of scenes for every input class of phong/accuracy.hpp (well
-// conditioned, high exponents near the peak, grazing light, near and far lights, huge and tiny
+// conditioned, high exponents near the peak, grazing light (with and without specular), near and far lights, huge and tiny
 // coordinates, subnormals, m = 0, l = -v, NaN/inf), and error statistics of shade<F> against the
 // __float128 reference model. Shared by tests/accuracy.test.cpp, tests/accuracy_table.cpp and the
 // benchmarks (which report the same errors beside their timings).
@@ -212,6 +212,93 @@ template <class T> stiff_scene<T> grazing(splitmix& g)
     }
 }
 
+/// The exact specular cosines of light i of a scene: Phong's r.v and Blinn's n.h (h = 0 for l = -v),
+/// from the values in T, eye at the origin (the view of accuracy::measured_features).
+template <class T> void exact_cosines(const stiff_scene<T>& s, std::size_t i, wide& rv, wide& nh)
+{
+    const phong::light<T>& L = s.lights[i];
+    const wvec3 Q = widen(s.position);
+    const wvec3 l = wnormalize(wvec3{wide(L.position.x), wide(L.position.y), wide(L.position.z)} - Q * wide(L.position.w));
+    const wvec3 n = wnormalize(widen(s.normal)), v = wnormalize(-Q);
+    rv = wdot(n * (2 * wdot(n, l)) - l, v);
+    nh = wdot(n, wnormalize(l + v));
+}
+
+/// Grazing light with a specular term: 1-4 lights, each at an angle ~ 2.5e-7 .. 3e-5 (log-uniform)
+/// above the tangent plane, in a random direction of it, positional or directional; kd and ks in
+/// [0.2, 1), m log-uniform in [1, 200]; no ambient (ka = 0, scene ambient 0), so a specular term
+/// far from its peak ((r.v)^m down to ~1e-8) can outweigh the diffuse one, whose n.l is tiny.
+/// Kept when every light's exact n.l lies in [2.5e-7, 3e-5] and both of its specular cosines
+/// (r.v, n.h) lie outside (-5e-4, 0.05): the exact mode's class limits (exact_limits::c; the
+/// stable mode near c = 0 is tested apart, tests/accuracy.test.cpp).
+template <class T> stiff_scene<T> grazing_specular(splitmix& g)
+{
+    for (;;) {
+        stiff_scene<T> s;
+        const glm::dvec3 Q = random_point(g);
+        const glm::dvec3 n = facing_normal(g, Q);
+        s.position = to<T>(Q);
+        s.normal = to<T>(n * g.uniform(0.5, 2));
+        s.material.ka = glm::vec<3, T>(T(0));
+        s.material.kd = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
+        s.material.ks = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
+        s.material.shininess = T(g.log_uniform(1, 200));
+        const int count = 1 + int(g.next() % 4);
+        for (int i = 0; i < count; ++i) {
+            const double c = g.log_uniform(2.5e-7, 3e-5);
+            const glm::dvec3 l = g.perpendicular(n) * std::sqrt(1 - c * c) + n * c;
+            const bool positional = g.next() % 2 == 0;
+            const glm::dvec3 p = positional ? Q + l * g.uniform(1, 10) : l * g.uniform(0.5, 2);
+            s.lights.push_back(random_light<T>(g, to<T>(p, positional ? 1 : 0)));
+        }
+        bool inside = true;
+        for (std::size_t i = 0; i < s.lights.size(); ++i) {
+            stiff_scene<T> one = s;
+            one.lights = {s.lights[i]};
+            const wide nl = exact_nl(one);
+            wide rv, nh;
+            exact_cosines(s, i, rv, nh);
+            const auto near_zero = [](wide x) { return x > wide(-5e-4) && x < wide(0.05); };
+            if (!(nl >= wide(2.5e-7) && nl <= wide(3e-5)) || near_zero(rv) || near_zero(nh)) inside = false;
+        }
+        if (inside) return s;
+    }
+}
+
+/// Outside grazing_specular's exact-mode limits, on purpose: one grazing light (n.l log-uniform in
+/// [1e-6, 3e-5], inside the class) whose specular cosine is near 0, where its term still outweighs the diffuse one
+/// for small m (in [1, 4]). Phong: r.v = t (n.v) - s |v_t| cos(phi) set to c, log-uniform in
+/// [1e-7, 0.05] (n.v in [0.2, 1]); Blinn: n.v log-uniform in [1e-6, 1e-2], so that
+/// n.h = (n.l + n.v) / |l + v| is small. No ambient; kd, ks in [0.2, 1). Built in double from
+/// the closed form (not by rejection, unlike the class generators), then rounded to T.
+template <class T> stiff_scene<T> grazing_cosine_near_zero(splitmix& g, phong::specular_model S)
+{
+    stiff_scene<T> s;
+    const glm::dvec3 Q = random_point(g);
+    const glm::dvec3 v = dnormalize(-Q);
+    const bool phong_model = S == phong::specular_model::phong;
+    const double nv = phong_model ? g.uniform(0.2, 1) : g.log_uniform(1e-6, 1e-2);
+    const glm::dvec3 a = g.perpendicular(v); // n = nv v + sqrt(1 - nv^2) a
+    const glm::dvec3 n = v * nv + a * std::sqrt(1 - nv * nv);
+    // The tangent frame (e1, e2) of n with v = nv n + sv e1.
+    const double sv = std::sqrt(1 - nv * nv);
+    const glm::dvec3 e1 = dnormalize(v - n * nv);
+    const glm::dvec3 e2 = glm::dvec3(n.y * e1.z - n.z * e1.y, n.z * e1.x - n.x * e1.z, n.x * e1.y - n.y * e1.x);
+    const double t = g.log_uniform(1e-6, 3e-5), st = std::sqrt(1 - t * t);
+    double cos_phi = g.uniform(-1, 1);
+    if (phong_model) cos_phi = (t * nv - g.log_uniform(1e-7, 0.05)) / (st * sv); // r.v = t nv - st sv cos(phi)
+    const double sin_phi = std::sqrt(std::max(0.0, 1 - cos_phi * cos_phi)) * (g.next() % 2 == 0 ? 1 : -1);
+    const glm::dvec3 l = n * t + (e1 * cos_phi + e2 * sin_phi) * st;
+    s.position = to<T>(Q);
+    s.normal = to<T>(n * g.uniform(0.5, 2));
+    s.material.ka = glm::vec<3, T>(T(0));
+    s.material.kd = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
+    s.material.ks = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
+    s.material.shininess = T(g.uniform(1, 4));
+    s.lights.push_back(random_light<T>(g, to<T>(Q + l * g.uniform(1, 10), 1)));
+    return s;
+}
+
 /// A positional light at distance ~ distance (x [0.5, 2)) from Q, Q at ~ 1000 * distance from
 /// the eye (so L - Q is representable), the light above the surface.
 template <class T> stiff_scene<T> near_light(splitmix& g, double distance, double c0_lo = 0.5)
@@ -305,6 +392,7 @@ std::vector<stiff_scene<T>> make_class(input_class c, std::size_t n, std::uint64
         case input_class::shininess_1e4: out.push_back(detail::near_peak<T>(g, 1e4)); break;
         case input_class::shininess_1e5: out.push_back(detail::near_peak<T>(g, 1e5)); break;
         case input_class::grazing: out.push_back(detail::grazing<T>(g)); break;
+        case input_class::grazing_specular: out.push_back(detail::grazing_specular<T>(g)); break;
         case input_class::near_light_1e20: out.push_back(detail::near_light<T>(g, 1e-20)); break;
         case input_class::near_light_1e40: out.push_back(detail::near_light<T>(g, 1e-40)); break;
         case input_class::huge_1e20: out.push_back(detail::well_conditioned<T>(g, 1e20)); break;

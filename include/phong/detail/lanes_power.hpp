@@ -130,21 +130,32 @@ constexpr double pow_one_minus_lanes_error(double y)
     return (6.5 * (y < 0 ? -y : y) + 2.5) * 0x1p-24;
 }
 
-/// (1 - x)^m lane-wise for x in [0, 1], m >= 0 finite: the stable mode's power of 1 - r.v or
-/// 1 - n.h (specular.hpp's pow_one_minus), as 2^(m log2(1 - x)). Where 1 - x >= sqrt(1/2) the
+/// c^m = (1 - x)^m lane-wise from both forms of a cosine c in [0, 1]: its complement x = 1 - c and
+/// c itself, each a float of its own (the stable mode's r.v or n.h, computed in double and rounded
+/// twice: detail/stable_lanes.hpp), m >= 0 finite. As 2^(m log2 c): where c >= sqrt(1/2) the
 /// polynomial takes t = -x itself (log2(1 + t) = t P(t): no rounding of 1 - x, so a highlight's
-/// tiny x keeps its relative accuracy, as log1p does); below, 1 - x (exact for x >= 1/2, one
-/// rounding above) is split like pow_unit's base. Error: pow_one_minus_lanes_error. Edges: x = 0
-/// gives 1; x >= 1 gives 0 for m > 0 and 1 for m = 0.
-template <class V> PHONG_LANES_POWER_INLINE V pow_one_minus(const V& x, const V& m)
+/// tiny x keeps its relative accuracy, as log1p does); below, c is split like pow_unit's base, so
+/// a small c keeps its relative accuracy too (1 - x rounded would leave it an absolute error of
+/// u). Error: pow_one_minus_lanes_error(m log2 c), relative to the power of the floats given (for
+/// the lanes where c >= sqrt(1/2), of 1 - x). Edges: x = 0 gives 1; c <= 0 gives 0 for m > 0 and
+/// 1 for m = 0.
+template <class V> PHONG_LANES_POWER_INLINE V pow_cosine(const V& x, const V& c, const V& m)
 {
-    const V base = V(1.0f) - x;
     V e;
-    const V t_split = split_exponent(xsimd::max(base, V(std::numeric_limits<float>::min())), e);
-    const auto near_one = base >= V(0.70710677f); // then e = 0 and t_split = base - 1
+    const V t_split = split_exponent(xsimd::max(c, V(std::numeric_limits<float>::min())), e);
+    const auto near_one = c >= V(0.70710677f); // then e = 0 and t_split = c - 1
     const V log2_base = log2_of_split(xsimd::select(near_one, -x, t_split), xsimd::select(near_one, V(0.0f), e));
     const V power = exp2_nonpositive(m * log2_base);
-    return xsimd::select(x < V(1.0f) || m == V(0.0f), power, V(0.0f));
+    return xsimd::select(c > V(0.0f) || m == V(0.0f), power, V(0.0f));
+}
+
+/// (1 - x)^m lane-wise for x in [0, 1], m >= 0 finite: the stable mode's power of 1 - r.v or
+/// 1 - n.h (specular.hpp's pow_one_minus), pow_cosine with c = 1 - x (exact for x >= 1/2, one
+/// rounding above). Error: pow_one_minus_lanes_error. Edges: x = 0 gives 1; x >= 1 gives 0 for
+/// m > 0 and 1 for m = 0.
+template <class V> PHONG_LANES_POWER_INLINE V pow_one_minus(const V& x, const V& m)
+{
+    return pow_cosine(x, V(1.0f) - x, m);
 }
 
 #undef PHONG_LANES_POWER_INLINE

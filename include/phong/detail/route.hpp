@@ -62,6 +62,20 @@ PHONG_HD constexpr void check_light([[maybe_unused]] const Light& L)
     }
 }
 
+/// Checks one weight of weighted(): finite and >= 0 (a negative or NaN weight would give a
+/// negative or NaN colour). As check_light: a compile error in constant evaluation, the handler
+/// in debug builds, nothing under NDEBUG.
+template <class W>
+PHONG_HD constexpr void check_weight([[maybe_unused]] W weight)
+{
+    if constexpr (std::is_floating_point_v<W>) {
+#if defined(NDEBUG)
+        if (!std::is_constant_evaluated()) return;
+#endif
+        require(finite_non_negative(weight), "phong::weighted: weights[i] must be finite and >= 0");
+    }
+}
+
 template <class R> struct is_masked : std::false_type {};
 template <class R> struct is_masked<masked_lights<R>> : std::true_type {};
 template <class R> struct is_weighted : std::false_type {};
@@ -111,6 +125,7 @@ PHONG_HD constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&& li
             PHONG_ASSERT(i < lights.weights.size(), "phong::weighted: fewer weights than lights");
             check_light(L);
             const auto weight = lights.weights[i++];
+            check_weight(weight);
             if (weight != 0) detail::add_light<F>(sums, s, L, m, weight); // 0: the light is not seen
         }
     } else if constexpr (std::is_floating_point_v<T>) {

@@ -5,7 +5,8 @@
 // finite input is in range, and the unit vectors n, l, v (h), n.l and the specular chords are
 // carried twofold (detail/twofold.hpp) from the exact L.xyz - w Q; the specular power is
 // (1 - x)^m = exp(m log1p(-x)) of the half chord x = |r - v|^2 / 2 (|n - h|^2 / 2), so a high m
-// does not amplify the rounding of a cosine. With features::stable_twofold_above = M > 0, pairs
+// does not amplify the rounding of a cosine; where x > 1/2 it is c^m of the cosine c = 1 - x itself,
+// rounded once from the same twofold value, so a small c keeps its relative accuracy too. With features::stable_twofold_above = M > 0, pairs
 // whose shininess is at most M round each component once instead (about a third of the cost, an
 // error that grows like sqrt(m) eps). Bounds in phong/accuracy.hpp.
 // SPDX-License-Identifier: MIT
@@ -143,16 +144,33 @@ PHONG_HD constexpr light_unit<T, Q> light_rounded_once(const surface_frame<T, Q>
     return {hs * inv, vec3(T(0)), (nh + nlo) * (s.inv_normal_length * inv), T(0), inv, length};
 }
 
+/// c^m = (1 - x)^m from both roundings of the cosine (detail/twofold.hpp's cosine_complement):
+/// exp(m log1p(-x)) where x <= 1/2, c^m (pow_unit) elsewhere. Each takes the rounding with the
+/// smaller effect: x's moves c^m by m x / (1 - x) eps / 2 relative (below m eps / 2 for x <= 1/2),
+/// c's by m eps / 2, which for x > 1/2 (|m log2 c| > m) stays below the power's own |y| eps term.
+/// A SIMD batch computes the second power only when one of its lanes needs it.
+/// Edges: x >= 1 (c <= 0) gives 0, and 1 for m = 0 (pow(0, 0) = 1).
+template <class T>
+PHONG_HD constexpr T power_of_cosine(const cosine_complement<T>& p, T m)
+{
+    const mask_t<T> near_peak = p.complement <= T(0.5);
+    if (math_traits<T>::all(near_peak)) return phong::pow_one_minus(p.complement, m);
+    const T far = phong::pow_unit(phong::clamp(p.cosine, T(0), T(1)), m);
+    if (!math_traits<T>::any(near_peak)) return far;
+    return phong::select(near_peak, phong::pow_one_minus(p.complement, m), far);
+}
+
 /// The specular factor (1 - x)^m, x = 1 - r.v or 1 - n.h from chords (specular.hpp's
-/// rounded-once steps, or detail/twofold.hpp's twofold ones).
+/// rounded-once steps, or detail/twofold.hpp's twofold ones with the cosine itself where it is
+/// small: power_of_cosine).
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr T specular_factor(const surface_frame<T, Q>& s, const light_unit<T, Q>& u, bool twofold, T m)
 {
     if constexpr (F.specular == specular_model::phong) {
-        if (twofold) return phong::pow_one_minus(one_minus_rv(s.normal, s.normal_lo, u.nl, u.nl_lo, u.l, u.l_lo, s.view, s.view_lo), m);
+        if (twofold) return power_of_cosine(one_minus_rv(s.normal, s.normal_lo, u.nl, u.nl_lo, u.l, u.l_lo, s.view, s.view_lo), m);
         return phong::pow_one_minus(detail::one_minus_reflection_cosine(s.normal, u.nl, u.l, s.view), m);
     } else {
-        if (twofold) return phong::pow_one_minus(one_minus_halfway(s.normal, s.normal_lo, u.l, u.l_lo, s.view, s.view_lo), m);
+        if (twofold) return power_of_cosine(one_minus_halfway(s.normal, s.normal_lo, u.l, u.l_lo, s.view, s.view_lo), m);
         return phong::pow_one_minus(detail::one_minus_halfway_cosine(s.normal, u.l, s.view), m);
     }
 }

@@ -6,13 +6,16 @@
 // Why double, and why only the geometry: float inputs fit double with room to spare. |d|^2 of a
 // float difference d lies in [2e-90, 1.4e78] (subnormal to largest float), far inside double's
 // normal range, so no vector needs rescaling; w Q (w = 0 or 1) and L.xyz - w Q are exact or
-// rounded once to 2^-53; and unit vectors, n.l and the specular complement x = 1 - c (c = r.v or
-// n.h) carry absolute errors of a few 2^-53 (about 10 at most for x, with |l + v| of order 1),
-// below float's u^2 = 2^-48 (what the twofold route of detail/stable.hpp reaches with error-free
-// transformations, at about three times the instructions). Rounded to float once, n.l and the
-// weights f n.l are within u / 2 (u = 2^-24) of their exact values; x is within u / 2 relative
-// plus that absolute part, which the power (1 - x)^m (float lanes' pow_one_minus, the twofold
-// route's own kernel) amplifies by m: m 10 2^-53 <= 0.02 u for m <= max_shininess = 2^20. A step
+// rounded once to 2^-53; and unit vectors, n.l, the specular cosine c (r.v or n.h) and its
+// complement x = 1 - c carry absolute errors of a few 2^-53 (about 10 at most for x, with |l + v|
+// of order 1), below float's u^2 = 2^-48 (what the twofold route of detail/stable.hpp reaches with
+// error-free transformations, at about three times the instructions). Rounded to float once, n.l
+// and the weights f n.l are within u / 2 (u = 2^-24) of their exact values; x and c are each
+// rounded to float, within u / 2 relative plus that absolute part, which the power c^m
+// (lanes_power.hpp's pow_cosine: from x where c >= sqrt(1/2), from c below) amplifies by m:
+// m 10 2^-53 <= 0.02 u for m <= max_shininess = 2^20 near a highlight. Far from it both forms are
+// needed: 1 - x rounded to float would leave c an absolute error of u / 2 (at c = 1e-6 and m = 1,
+// 6e-3 relative, seen where a grazing light's diffuse term is too small to hide it). A step
 // with a larger m in any lane takes the twofold route (detail/stable.hpp): m is a material's, so
 // one branch per step. The terms are summed in float as in the twofold route. Bounds: the twofold
 // route's (accuracy::bounds<stable, float, twofold>), tests/batch_accuracy.test.cpp.
@@ -28,6 +31,7 @@
 
 #if PHONG_HAS_XSIMD && defined(__SSE2__)
 #  include <immintrin.h>
+#  include "lanes_power.hpp"
 #  define PHONG_STABLE_LANES 1
 #else
 #  define PHONG_STABLE_LANES 0
@@ -223,9 +227,9 @@ inline surface_frame<V, Q> prepare(const glm::vec<3, V, Q>& position, const glm:
 }
 
 /// One half of a pair's geometry: the diffuse weight f max(n.l, 0) (0 where off), the specular
-/// weight f (0 where off), the specular complement x in [0, 1] (1 - r.v or 1 - n.h), and f.
+/// weight f (0 where off), the specular cosine c (r.v or n.h) and its complement x = 1 - c, and f.
 template <class D> struct half_terms {
-    D diffuse, specular, x, f;
+    D diffuse, specular, x, c, f;
     xsimd::batch_bool<double, typename D::arch_type> specular_on; ///< where specular is (f = 1: the weight)
 };
 
@@ -254,26 +258,33 @@ inline half_terms<D> half_light(const half_frame<D, Q>& s, const light<double, Q
     auto on = s.defined && (inv > D(0.0));
     if constexpr (gated<F>) on = on && (nd > D(0.0));
     const D nl = nd * inv;
-    half_terms<D> t{D(0.0), D(0.0), D(1.0), f, on};
+    half_terms<D> t{D(0.0), D(0.0), D(1.0), D(0.0), f, on};
     if constexpr (F.diffuse) t.diffuse = xsimd::select(on, f * (gated<F> ? nl : xsimd::max(nl, D(0.0))), D(0.0));
     if constexpr (F.specular != specular_model::none) {
-        D x;
         if constexpr (F.specular == specular_model::phong) {
-            x = D(1.0) - phong::dot(d, s.reflected_view) * inv; // 1 - r.v, r.v = l.(2 (n.v) n - v)
+            t.c = phong::dot(d, s.reflected_view) * inv; // r.v = l.(2 (n.v) n - v)
         } else {
             const vec3 sum = l + s.view;
             const D inv_h = inverse_length(phong::dot(sum, sum)); // 0: l = -v, n.h taken as 0
-            x = xsimd::select(inv_h > D(0.0), D(1.0) - (nl + s.nv) * inv_h, D(1.0));
+            t.c = (nl + s.nv) * inv_h;
         }
-        t.x = x; // pow_one_minus takes x < 0 (rounding) as 0, x >= 1 as 1 (and NaN as 0)
+        t.x = D(1.0) - t.c; // pow_cosine takes x < 0 (rounding) as 0, c <= 0 as 0 (and NaN as 0)
         t.specular_on = on && s.sees_viewer;
         if constexpr (!unit_factor<F>) t.specular = xsimd::select(t.specular_on, f, D(0.0));
     }
     return t;
 }
 
+/// The specular power c^m of a step in float lanes: x and c rounded to float apiece (each keeps its
+/// relative accuracy where the kernel reads it: x near a highlight, c far from it), then
+/// detail/lanes_power.hpp's pow_cosine.
+template <class V, class D> inline V power(const half_terms<D>& lo, const half_terms<D>& hi, const V& m)
+{
+    return detail::lanes::pow_cosine(xsimd::max(join<V>(lo.x, hi.x), V(0.0f)), join<V>(lo.c, hi.c), m);
+}
+
 /// One light's terms added to the float sums of a step: the geometry of both halves in double,
-/// then the weights and x rounded to float once, the power (1 - x)^m and the sums in float.
+/// then the weights, x and c rounded to float once, the power c^m and the sums in float.
 /// L: the light's float lanes (its colours, with the material when folded); wide: the same light
 /// in double (position, attenuation, spot).
 template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>
@@ -288,11 +299,11 @@ inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const ligh
         if constexpr (unit_factor<F>) { // the weight is 1 where on
             const mask_t<V> on = join_mask<V>(lo.specular_on, hi.specular_on);
             if (!xsimd::any(on)) return;
-            sum_of<term_kind::specular>(sums) += L.specular * xsimd::select(on, phong::pow_one_minus(join<V>(lo.x, hi.x), m), V(0.0f));
+            sum_of<term_kind::specular>(sums) += L.specular * xsimd::select(on, power(lo, hi, m), V(0.0f));
         } else {
             const V weight = join<V>(lo.specular, hi.specular);
             if (!xsimd::any(weight != V(0.0f))) return;
-            sum_of<term_kind::specular>(sums) += L.specular * (weight * phong::pow_one_minus(join<V>(lo.x, hi.x), m));
+            sum_of<term_kind::specular>(sums) += L.specular * (weight * power(lo, hi, m));
         }
     }
 }

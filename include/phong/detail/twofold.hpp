@@ -137,9 +137,21 @@ PHONG_HD constexpr void dot_twofold(const glm::vec<3, T, Q>& ah, const glm::vec<
     lo = err - (hi - p);
 }
 
-/// |c + c_lo|^2 / 2 rounded once (products exact by fma; the c_lo^2 terms are below eps^2).
+/// A specular cosine c (r.v or n.h) as its complement x = 1 - c and as c itself, both rounded once
+/// from the same twofold value: x keeps its relative accuracy where c is near 1 (a highlight), c
+/// where c is small (far from it: 1 - x rounded would leave c an absolute error of eps / 2, i.e.
+/// eps / (2 c) relative, and c^m m times that; 6e-3 at c = 1e-6, m = 1 in float).
+template <class T>
+struct cosine_complement {
+    T complement; ///< x = 1 - c = |chord|^2 / 2, rounded once
+    T cosine;     ///< c, rounded once where x >= 1/2 (there 1 - x is exact); elsewhere within eps of it
+};
+
+/// |c + c_lo|^2 / 2 and 1 minus it, each rounded once (products exact by fma; the c_lo^2 terms are
+/// below eps^2): the sum hi + lo is renormalized (Fast2Sum, |lo| <= |hi|), halved exactly, and the
+/// cosine is (1 - x) - x_lo, whose first difference is exact for x in [1/2, 2] (Sterbenz).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T half_square(const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& c_lo)
+PHONG_HD constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& c_lo)
 {
     T hi = rounded_product(c[0], c[0]);
     T lo = phong::fma(c[0], c[0], -hi) + T(2) * c[0] * c_lo[0];
@@ -149,16 +161,20 @@ PHONG_HD constexpr T half_square(const glm::vec<3, T, Q>& c, const glm::vec<3, T
         lo = lo + (two_sum_error(hi, p, s) + phong::fma(c[k], c[k], -p) + T(2) * c[k] * c_lo[k]);
         hi = s;
     }
-    return (hi + lo) * T(0.5);
+    const T sum = hi + lo;
+    const T sum_lo = lo - (sum - hi);
+    const T x = sum * T(0.5), x_lo = sum_lo * T(0.5);
+    return {x, (T(1) - x) - x_lo};
 }
 
 /// 1 - r.v = |r - v|^2 / 2 for Phong's r = 2 (n.l) n - l, from twofold n, l, v and n.l: the chord
-/// and its square are formed to O(eps^2) and rounded once, so the result has a relative error
-/// of about 1 eps however close r is to v. Pre: n, l, v unit (or 0).
+/// and its square are formed to O(eps^2) and rounded once, so the complement has a relative error
+/// of about 1 eps however close r is to v, and the cosine r.v too however close it is to 0
+/// (down to a few eps^2). Pre: n, l, v unit (or 0).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, T nl_hi, T nl_lo,
-                                  const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo, const glm::vec<3, T, Q>& vh,
-                                  const glm::vec<3, T, Q>& vlo)
+PHONG_HD constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, T nl_hi,
+                                                    T nl_lo, const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
+                                                    const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
 {
     glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
     for (int k = 0; k < 3; ++k) {
@@ -175,10 +191,11 @@ PHONG_HD constexpr T one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3,
     return half_square(c, c_lo);
 }
 
-/// 1 - n.h = |n - h|^2 / 2 for twofold unit n and h (chord and square to O(eps^2), rounded once).
+/// 1 - n.h = |n - h|^2 / 2 and n.h for twofold unit n and h (chord and square to O(eps^2), each
+/// rounded once).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, const glm::vec<3, T, Q>& hh,
-                                  const glm::vec<3, T, Q>& hlo)
+PHONG_HD constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
+                                                    const glm::vec<3, T, Q>& hh, const glm::vec<3, T, Q>& hlo)
 {
     glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
     for (int k = 0; k < 3; ++k) {
@@ -192,10 +209,11 @@ PHONG_HD constexpr T one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3,
 
 /// 1 - n.h = |n - h|^2 / 2 for h = normalize(l + v), from twofold n, l and v: the sum l + v is
 /// formed twofold and renormalized, h = unit_of(sum) twofold, then one_minus_nh.
-/// Pre: n, l, v unit (or 0). Edge: l = -v (no halfway vector) gives 1, i.e. n.h taken as 0.
+/// Pre: n, l, v unit (or 0). Edge: l = -v (no halfway vector) gives 1 and n.h = 0.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, const glm::vec<3, T, Q>& lh,
-                                       const glm::vec<3, T, Q>& llo, const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
+PHONG_HD constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
+                                                         const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
+                                                         const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
 {
     glm::vec<3, T, Q> sum(T(0)), sum_lo(T(0));
     for (int k = 0; k < 3; ++k) {
@@ -208,7 +226,9 @@ PHONG_HD constexpr T one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::v
         sum[k] = t;
     }
     const unit_twofold<T, Q> h = unit_of(sum, sum_lo);
-    return phong::select(h.inv_scaled > T(0), one_minus_nh(nh, nlo, h.hi, h.lo), T(1));
+    const cosine_complement<T> x = one_minus_nh(nh, nlo, h.hi, h.lo);
+    const mask_t<T> exists = h.inv_scaled > T(0);
+    return {phong::select(exists, x.complement, T(1)), phong::select(exists, x.cosine, T(0))};
 }
 
 } // namespace phong::detail
