@@ -288,7 +288,7 @@ TEST_CASE_TEMPLATE("shade_batch: disjoint spans and exact in-place shading are n
     }
 }
 
-TEST_CASE("shade_batch: spans of different lengths are reported, and nothing is written if the handler returns")
+TEST_CASE("shade_batch: spans of different lengths are reported, naming the span, and nothing is written if the handler returns")
 {
     recording_handler h;
     grid<float> in;
@@ -297,8 +297,35 @@ TEST_CASE("shade_batch: spans of different lengths are reported, and nothing is 
     shade_batch<plain>(short_y, in.normals(), material<float>{}, std::span<const light<float>>(one_light<float>),
                        soa_rgba<float>{r, g, b, {}});
     REQUIRE(reported.size() == 1);
-    CHECK(reported[0] == std::string("shade_batch: spans of different lengths"));
+    CHECK(reported[0] == std::string("shade_batch: .positions: x, y and z of different lengths"));
     for (std::size_t i = 0; i < points; ++i) CHECK(r[i] == -1.0f);
+
+    // Each message names the span that is off.
+    reported.clear();
+    const soa3<float> short_normals{in.column(3).first(points - 1), in.column(4).first(points - 1), in.column(5).first(points - 1)};
+    shade_batch<plain>(in.positions(), short_normals, material<float>{}, std::span<const light<float>>(one_light<float>),
+                       soa_rgba<float>{r, g, b, {}});
+    REQUIRE(reported.size() == 1);
+    CHECK(reported[0] == std::string("shade_batch: .normals: not one normal per point"));
+    reported.clear();
+    shade_batch<plain>(in.positions(), in.normals(), material<float>{}, std::span<const light<float>>(one_light<float>),
+                       soa_rgba<float>{r, std::span<float>(g).first(points - 1), b, {}});
+    REQUIRE(reported.size() == 1);
+    CHECK(reported[0] == std::string("shade_batch: the output is shorter than the points (N entries per channel)"));
+    for (std::size_t i = 0; i < points; ++i) CHECK(r[i] == -1.0f);
+}
+
+TEST_CASE("shade_batch: an invalid environment is reported with the field it names")
+{
+    recording_handler h;
+    grid<float> in;
+    std::vector<float> r(points), g(points), b(points);
+    environment<float> env;
+    env.ambient = glm::vec3(0.1f, -0.5f, 0.1f);
+    shade_batch<plain>(in.positions(), in.normals(), material<float>{}, std::span<const light<float>>(one_light<float>),
+                       soa_rgba<float>{r, g, b, {}}, env);
+    REQUIRE(reported.size() == 1);
+    CHECK(std::string(reported[0]).find("environment.ambient") != std::string::npos);
 }
 
 TEST_CASE("shade_batch: a material id past the table is reported; if the handler returns, it takes the last entry")

@@ -1344,12 +1344,12 @@ template <class T> std::size_t vec3_count(const soa3<T>& v)
 template <class T, glm::qualifier Q> std::size_t vec3_count(std::span<const glm::vec<3, T, Q>> v) { return v.size(); }
 
 /// shade_batch's preconditions, checked in debug builds through the precondition handler (span
-/// lengths, no aliasing, valid materials and lights). Returns whether to shade: not when a length
+/// lengths, each message naming the span; no aliasing; valid materials, lights and environment). Returns whether to shade: not when a length
 /// is off (a handler that returns must not lead to reads or writes past a span), nor, in every
 /// build, with an empty material table (nothing to read).
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
 bool check_batch_inputs(const Points& points, const Materials& materials, [[maybe_unused]] std::span<const light<T, Q>> lights,
-                        const Output& out, std::size_t n)
+                        const Output& out, [[maybe_unused]] const environment<T, Q>& env, std::size_t n)
 {
     constexpr bool shared_material = std::is_same_v<Materials, material<T, Q>>;
     constexpr bool table = std::is_same_v<Materials, material_table<T, Q>>;
@@ -1358,8 +1358,11 @@ bool check_batch_inputs(const Points& points, const Materials& materials, [[mayb
         out_size = std::min({out.r.size(), out.g.size(), out.b.size(), F.alpha ? out.a.size() : out.r.size()});
     else
         out_size = out.size();
-    [[maybe_unused]] bool lengths_ok = vec3_count(points.positions) != std::size_t(-1) && vec3_count(points.normals) == n && out_size >= n;
-    PHONG_ASSERT(lengths_ok, "shade_batch: spans of different lengths");
+    const bool positions_ok = vec3_count(points.positions) != std::size_t(-1); // else n is no count: one report
+    PHONG_ASSERT(positions_ok, "shade_batch: .positions: x, y and z of different lengths");
+    PHONG_ASSERT(!positions_ok || vec3_count(points.normals) == n, "shade_batch: .normals: not one normal per point");
+    PHONG_ASSERT(!positions_ok || out_size >= n, "shade_batch: the output is shorter than the points (N entries per channel)");
+    [[maybe_unused]] bool lengths_ok = positions_ok && vec3_count(points.normals) == n && out_size >= n;
     if constexpr (F.view == view_model::given) {
         PHONG_ASSERT(vec3_count(points.views) == n, "shade_batch: view_model::given needs one view vector per point (.views)");
         lengths_ok = lengths_ok && vec3_count(points.views) == n;
@@ -1406,6 +1409,7 @@ bool check_batch_inputs(const Points& points, const Materials& materials, [[mayb
         PHONG_ASSERT(static_cast<bool>(validate(materials)), validate(materials).message());
     }
     for (const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
+    PHONG_ASSERT(static_cast<bool>(validate(env)), validate(env).message());
 #endif
     return true;
 }
@@ -1480,7 +1484,7 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     using V = simd_batch<T>;
     constexpr std::size_t W = batch_width<T>;
     const std::size_t n = vec3_count(points.positions);
-    if (!check_batch_inputs<F>(points, materials, lights, out, n)) return;
+    if (!check_batch_inputs<F>(points, materials, lights, out, env, n)) return;
 
     bool fold = false; // one material: folded into the lights where no product is lost
     if constexpr (std::is_same_v<Materials, material<T, Q>>) fold = foldable(materials, lights);
