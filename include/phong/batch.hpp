@@ -951,15 +951,6 @@ template <class V, class T> struct step_stream {
     const mask_t<V>* front;  ///< front-facing lanes, one mask per step; null: every lane
     T* out[4];               ///< a: written only with F.alpha
     std::size_t out_stride;
-    /// The stream from step k on.
-    step_stream from(std::size_t k) const
-    {
-        step_stream s = *this;
-        for (const T*& p : s.in) p = p ? p + k * in_stride : p;
-        for (T*& p : s.out) p = p ? p + k * out_stride : p;
-        if (front) s.front = front + k;
-        return s;
-    }
     /// Step k's lanes (the view only with view_model::given).
     template <features F, glm::qualifier Q> step_lanes<V, Q> lanes(std::size_t k) const
     {
@@ -996,7 +987,9 @@ template <class Points, class Output, class T>
 inline constexpr std::size_t call_steps = in_place_steps<Points, Output, T> ? steps_per_call : block_steps_per_call;
 
 /// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
-/// steps (io's step k in, its colour k out). Not inlined, on purpose: every layout (soa3, soa_points,
+/// steps from step `first` of the stream (its step first + k in, its colour first + k out; the
+/// caller passes the stream it built, unchanged: a stream copied per step, one call per step with
+/// a material table, cost the AoS table path 0.5 to 1 ns per point). Not inlined, on purpose: every layout (soa3, soa_points,
 /// aos_points; either output) calls this one compiled function, so the compiler's choices (FMA
 /// contraction above all) are the same for all of them and the layouts agree bit for bit
 /// (inlined, AoS and SoA differed by an ulp at -march=native). Flattened: every call inside
@@ -1004,14 +997,14 @@ inline constexpr std::size_t call_steps = in_place_steps<Points, Output, T> ? st
 /// frame and sums stay in registers across the light loop (before, add_light was a call per
 /// light per step with its operands in memory: batch exact took 1.5x to 2.6x the hand-written
 /// kernel's time; benchmarks/hand_simd.bench.cpp).
-/// bits: W light masks per step (step k's at bits + k W; 0 past the tail), or null; count: the
+/// bits: W light masks per step (the k-th step from `first`: bits + k W; 0 past the tail), or null; count: the
 /// live lanes of each step (W, or a tail's count with steps = 1). Folded: the lights carry the
 /// material's ka, kd and ks (one material for all points, shade_points_impl): folded_sums, else
 /// light_sums. Folded, env.ambient is not the scene's ambient but the colour's point-independent
 /// part, emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the
 /// loop runs without the lights' ambient terms); the sums start from it.
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
-PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size_t steps, const material<V, Q>& mat,
+PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size_t first, std::size_t steps, const material<V, Q>& mat,
                                       std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
                                       const environment<V, Q>& env, const std::uint64_t* bits, std::size_t count)
 {
@@ -1025,7 +1018,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
         if (!xsimd::any(mat.shininess > V(stable_lanes::max_shininess))) {
             for (std::size_t k = 0; k < steps; ++k) {
                 const std::uint64_t* step_bits = bits ? bits + k * W : nullptr;
-                const step_lanes<V, Q> in = io.template lanes<F, Q>(k);
+                const step_lanes<V, Q> in = io.template lanes<F, Q>(first + k);
                 const stable_lanes::surface_frame<V, Q> s = stable_lanes::prepare<F>(in.position, in.normal, in.view, env, in.front);
                 Sums sums{};
                 if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
@@ -1033,7 +1026,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
                     each_visible_light<V, T>(sums, lights.size(), step_bits, count, [&](Sums& step_sums, std::size_t j) {
                         stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
                     });
-                    io.template put<G, Q>(k, finish<G>(sums, s, mat, env));
+                    io.template put<G, Q>(first + k, finish<G>(sums, s, mat, env));
                 };
                 if constexpr (Folded && ambient_hoistable<F>) {
                     if (!step_bits) {
@@ -1057,8 +1050,8 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
         color<F, V, Q> pending;
         for (std::size_t k = 0; k < steps; ++k) {
             const std::uint64_t* step_bits = Masks ? bits + k * W : nullptr;
-            const step_lanes<V, Q> in = io.template lanes<F, Q>(k);
-            if (k > 0) io.template put<F, Q>(k - 1, pending);
+            const step_lanes<V, Q> in = io.template lanes<F, Q>(first + k);
+            if (k > 0) io.template put<F, Q>(first + k - 1, pending);
             const frame_t<F, V, Q> s = prepare<F>(in.position, in.normal, in.view, env, in.front);
             Sums sums{};
             if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
@@ -1071,7 +1064,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
                 pending = finish<F>(sums, s, mat, env);
             }
         }
-        if (steps > 0) io.template put<F, Q>(steps - 1, pending);
+        if (steps > 0) io.template put<F, Q>(first + steps - 1, pending);
     };
     const auto run = [&](const auto& m) { // m: the shininess (V, exact::lane_shininess<V> or exact::integer_exponent<V>)
         if (bits) run_steps.template operator()<true>(m);
@@ -1247,11 +1240,11 @@ void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, con
         }
     }
     if constexpr (shared) {
-        shade_lanes<F, V, T, Q, folded>(io, steps, materials.lanes, lights, wide_lights, env, bits, count);
+        shade_lanes<F, V, T, Q, folded>(io, 0, steps, materials.lanes, lights, wide_lights, env, bits, count);
     } else {
         for (std::size_t k = 0; k < steps; ++k) {
             materials.with_step(i + k * W, count, [&](const material<V, Q>& mat) {
-                shade_lanes<F, V, T, Q, folded>(io.from(k), 1, mat, lights, wide_lights, env, bits ? bits + k * W : nullptr, count);
+                shade_lanes<F, V, T, Q, folded>(io, k, 1, mat, lights, wide_lights, env, bits ? bits + k * W : nullptr, count);
             });
         }
     }
