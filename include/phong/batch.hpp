@@ -987,18 +987,19 @@ template <class Points, class Output, class T>
 inline constexpr std::size_t call_steps = in_place_steps<Points, Output, T> ? steps_per_call : block_steps_per_call;
 
 /// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
-/// steps from step `first` of the stream (its step first + k in, its colour first + k out; the
-/// caller passes the stream it built, unchanged: a stream copied per step, one call per step with
-/// a material table, cost the AoS table path 0.5 to 1 ns per point). Not inlined, on purpose: every layout (soa3, soa_points,
-/// aos_points; either output) calls this one compiled function, so the compiler's choices (FMA
+/// steps from step `first` of the stream (its step first + k in, its colour first + k out). The
+/// caller passes the stream it built, unchanged: a copy per call, offset to the step (one call per
+/// step with a material table), cost the ray tracer's AoS table path about 1 ns per hit (benchmarks/
+/// demo/whitted.cpp). Not inlined, on purpose: every layout (soa3, soa_points, aos_points; either
+/// output) calls this one compiled function, so the compiler's choices (FMA
 /// contraction above all) are the same for all of them and the layouts agree bit for bit
 /// (inlined, AoS and SoA differed by an ulp at -march=native). Flattened: every call inside
 /// (the light loop's add_light, the power, xsimd's kernels) is inlined into it, so the point's
 /// frame and sums stay in registers across the light loop (before, add_light was a call per
 /// light per step with its operands in memory: batch exact took 1.5x to 2.6x the hand-written
 /// kernel's time; benchmarks/hand_simd.bench.cpp).
-/// bits: W light masks per step (the k-th step from `first`: bits + k W; 0 past the tail), or null; count: the
-/// live lanes of each step (W, or a tail's count with steps = 1). Folded: the lights carry the
+/// bits: W light masks per step (the k-th step from `first`: bits + k W; 0 past the tail), or
+/// null; count: the live lanes of each step (W, or a tail's count with steps = 1). Folded: the lights carry the
 /// material's ka, kd and ks (one material for all points, shade_points_impl): folded_sums, else
 /// light_sums. Folded, env.ambient is not the scene's ambient but the colour's point-independent
 /// part, emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the
