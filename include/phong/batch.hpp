@@ -989,8 +989,8 @@ inline constexpr std::size_t call_steps = in_place_steps<Points, Output, T> ? st
 /// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
 /// steps from step `first` of the stream (its step first + k in, its colour first + k out). The
 /// caller passes the stream it built, unchanged: a copy per call, offset to the step (one call per
-/// step with a material table), cost the ray tracer's AoS table path about 1 ns per hit (benchmarks/
-/// demo/whitted.cpp). Not inlined, on purpose: every layout (soa3, soa_points, aos_points; either
+/// step with a material table), cost the ray tracer's AoS table path about 0.5 ns per hit
+/// (benchmarks/demo/whitted.cpp, batch column). Not inlined, on purpose: every layout (soa3, soa_points, aos_points; either
 /// output) calls this one compiled function, so the compiler's choices (FMA
 /// contraction above all) are the same for all of them and the layouts agree bit for bit
 /// (inlined, AoS and SoA differed by an ulp at -march=native). Flattened: every call inside
