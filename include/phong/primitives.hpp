@@ -160,7 +160,10 @@ PHONG_HD constexpr ray_hit<T> ray_disk(const glm::vec<3, T, Q>& S, const glm::ve
 /// (the distance of the ray's line from the centre, Ray Tracing Gems ch. 7) rather than
 /// (S.c)^2 - (c.c)(S.S - 1), so rays far from the sphere or near tangency keep their digits, and
 /// the roots as in detail::quadratic_roots. Part: surface. Pre: S, c finite; c need not be unit
-/// (t is in units of c, so the same t serves the world ray and the inverse-transformed ray).
+/// (t is in units of c, so the same t serves the world ray and the inverse-transformed ray), but
+/// c.c must not overflow (|c| below about 1.8e19 in float, 1.3e154 in double): beyond that the
+/// ray gives no hit even where it crosses the sphere (measured: S = 0, c = (2e19, 0, 0) in float).
+/// A huge S is fine (S = (1e30, 0, 0), c = (-1, 0, 0): t = 1e30).
 /// Edge: c = 0, a miss, or a tangent ray that rounds to a miss gives no hit; NaN gives no hit.
 /// Accuracy: near tangency the hit is ill-conditioned (the roots merge); t is then as accurate
 /// as the rounding of S and c allows, about eps (t0 + t1) / |t0 - t1|.
