@@ -231,6 +231,31 @@ TEST_CASE_TEMPLATE("primitives: a ray aimed at a surface point hits no later tha
     });
 }
 
+TEST_CASE_TEMPLATE("primitives: ray_sphere with vectors whose squares overflow", T, float, double)
+{
+    // x: |x|^2 overflows T, x itself is finite (float 1e20, double 1e160).
+    const T x = sizeof(T) == 4 ? T(1e20) : T(1e160);
+    const T eps = std::numeric_limits<T>::epsilon();
+    // From the centre along a huge c: |S + t c| = 1 at t = 1 / |c| (by hand).
+    const auto h1 = phong::ray_sphere(vec3<T>(0), vec3<T>(x, 0, 0));
+    REQUIRE(static_cast<bool>(h1));
+    CHECK(std::abs(h1.t * x - T(1)) <= 2 * eps);
+    // S = (x, 1/2, 0) toward -x: the line y = 1/2 meets the sphere at x' = +-sqrt(3)/2, so
+    // t = (x - sqrt(3)/2) / x, which is 1 in T to within eps.
+    const auto h2 = phong::ray_sphere(vec3<T>(x, T(0.5), 0), vec3<T>(-x, 0, 0));
+    REQUIRE(static_cast<bool>(h2));
+    CHECK(std::abs(h2.t - T(1)) <= 2 * eps);
+    // A huge S with a unit c: roots x -+ 1, both x in T; after t_min = 2x there is no hit (the
+    // overflowing S.S once gave a hit at t = inf).
+    const auto h3 = phong::ray_sphere(vec3<T>(x, 0, 0), vec3<T>(-1, 0, 0));
+    REQUIRE(static_cast<bool>(h3));
+    CHECK(std::abs(h3.t / x - T(1)) <= 2 * eps);
+    CHECK_FALSE(static_cast<bool>(phong::ray_sphere(vec3<T>(x, 0, 0), vec3<T>(-1, 0, 0), 2 * x)));
+    // Away from the sphere: no hit; an inf component: no hit.
+    CHECK_FALSE(static_cast<bool>(phong::ray_sphere(vec3<T>(x, 0, 0), vec3<T>(x, 0, 0))));
+    CHECK_FALSE(static_cast<bool>(phong::ray_sphere(vec3<T>(0), vec3<T>(std::numeric_limits<T>::infinity(), 0, 0))));
+}
+
 TEST_CASE("primitives: constant evaluation")
 {
     static_assert(phong::ray_sphere(glm::dvec3(0, 0, 5), glm::dvec3(0, 0, -1)).t == 4.0);

@@ -134,7 +134,7 @@ template <class T>
 PHONG_HD constexpr ray_hit<T> first_after(int count, T t0, T t1, T t_min, primitive_part part)
 {
     ray_hit<T> h;
-    if (count >= 1 && t0 > t_min) h = {t0, part};
+    if (count >= 1 && t0 > t_min && t0 < std::numeric_limits<T>::infinity()) h = {t0, part}; // inf: beyond T's range, no hit
     if (count >= 2 && t1 > t_min && t1 < h.t) h = {t1, part};
     return h;
 }
@@ -160,11 +160,12 @@ PHONG_HD constexpr ray_hit<T> ray_disk(const glm::vec<3, T, Q>& S, const glm::ve
 /// (the distance of the ray's line from the centre, Ray Tracing Gems ch. 7) rather than
 /// (S.c)^2 - (c.c)(S.S - 1), so rays far from the sphere or near tangency keep their digits, and
 /// the roots as in detail::quadratic_roots. Part: surface. Pre: S, c finite; c need not be unit
-/// (t is in units of c, so the same t serves the world ray and the inverse-transformed ray), but
-/// c.c must not overflow (|c| below about 1.8e19 in float, 1.3e154 in double): beyond that the
-/// ray gives no hit even where it crosses the sphere (measured: S = 0, c = (2e19, 0, 0) in float).
-/// A huge S is fine (S = (1e30, 0, 0), c = (-1, 0, 0): t = 1e30).
-/// Edge: c = 0, a miss, or a tangent ray that rounds to a miss gives no hit; NaN gives no hit.
+/// (t is in units of c, so the same t serves the world ray and the inverse-transformed ray).
+/// Huge vectors: a c whose c.c overflows is scaled by a power of two first (t scaled back,
+/// exactly but for underflow), and where S.S overflows the root C / q is taken from |S|, so
+/// finite S and c never give an infinite t nor miss a hit for overflow.
+/// Edge: c = 0, a miss, or a tangent ray that rounds to a miss gives no hit; NaN or inf gives no
+/// hit; a root beyond T's range (t = inf) is no hit.
 /// Accuracy: near tangency the hit is ill-conditioned (the roots merge); t is then as accurate
 /// as the rounding of S and c allows, about eps (t0 + t1) / |t0 - t1|.
 template <class T, glm::qualifier Q>
@@ -172,6 +173,15 @@ PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::
 {
     const T a = phong::dot(c, c);
     if (!(a > T(0))) return {}; // c = 0 or NaN
+    if (a == std::numeric_limits<T>::infinity()) [[unlikely]] {
+        // c.c overflowed: the ray S + t' (c 2^-e), t = t' 2^-e, with c 2^-e's largest component in [1, 2).
+        constexpr T max = std::numeric_limits<T>::max();
+        if (!(phong::abs(c.x) <= max && phong::abs(c.y) <= max && phong::abs(c.z) <= max)) return {}; // inf
+        const T s = math_traits<T>::inverse_pow2_scale(phong::max_abs(c));
+        const ray_hit<T> h = phong::ray_sphere(S, c * s, t_min / s);
+        if (!h || !(h.t * s > t_min)) return {};
+        return {h.t * s, h.part};
+    }
     const T b = phong::dot(S, c);
     const glm::vec<3, T, Q> closest = S - c * (b / a); // the foot of the perpendicular from the centre
     const T one_minus = T(1) - phong::dot(closest, closest); // disc / (c.c)
@@ -179,8 +189,15 @@ PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::
     const T root = phong::sqrt(a) * phong::sqrt(one_minus); // sqrt(disc), no overflow of a * ...
     const T q = -(b + (b < T(0) ? -root : root));
     if (q == T(0)) return detail::first_after(1, T(0), T(0), t_min, primitive_part::surface); // tangent at S
-    const T C = phong::dot(S, S) - T(1);
-    return detail::first_after(2, C / q, q / a, t_min, primitive_part::surface);
+    const T SS = phong::dot(S, S);
+    T t0;
+    if (SS <= std::numeric_limits<T>::max()) {
+        t0 = (SS - T(1)) / q;
+    } else { // S.S overflowed: (|S|^2 - 1) / q as (|S| / q) |S| - 1 / q
+        const T L = phong::length(S);
+        t0 = (L / q) * L - T(1) / q;
+    }
+    return detail::first_after(2, t0, q / a, t_min, primitive_part::surface);
 }
 
 /// Ray S + t c against the generic plane z = 0: t = -S.z / c.z when t > t_min. Part: surface.
