@@ -155,6 +155,19 @@ template <class T> stiff_scene<T> well_conditioned(splitmix& g, double scale = 1
     return s;
 }
 
+/// Three strengths in [0.2, 1) rounded to T (a material's kd or ks), drawn in x, y, z order.
+template <class T> glm::vec<3, T> random_strengths(splitmix& g) { return to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)}); }
+
+/// A light's homogeneous position (in double) at height c = n.l above the tangent plane of the
+/// unit normal n at Q, in a random direction of that plane: positional at 1..10 from Q (w = 1)
+/// or directional (w = 0, |xyz| in [0.5, 2)).
+inline glm::dvec4 grazing_light_position(splitmix& g, const glm::dvec3& Q, const glm::dvec3& n, double c)
+{
+    const glm::dvec3 l = g.perpendicular(n) * std::sqrt(1 - c * c) + n * c;
+    const bool positional = g.next() % 2 == 0;
+    return positional ? glm::dvec4(Q + l * g.uniform(1, 10), 1) : glm::dvec4(l * g.uniform(0.5, 2), 0);
+}
+
 /// m = shininess near the peak: r at angle theta = k / sqrt(m), k in [0, 3), from v, so Phong's
 /// exact factor (r.v)^m is at least exp(-4.5); h is then within about theta / 2 of n, so Blinn's
 /// (n.h)^m is near its peak too. Specular only (ka = kd = 0).
@@ -172,7 +185,7 @@ template <class T> stiff_scene<T> near_peak(splitmix& g, double shininess)
         s.position = to<T>(Q);
         s.normal = to<T>(n * g.uniform(0.5, 2));
         s.material.ka = s.material.kd = glm::vec<3, T>(T(0));
-        s.material.ks = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
+        s.material.ks = random_strengths<T>(g);
         s.material.shininess = T(shininess);
         const bool positional = g.next() % 2 == 0;
         const glm::dvec3 p = positional ? Q + l * g.uniform(2, 20) : l * g.uniform(0.5, 2);
@@ -197,16 +210,13 @@ template <class T> stiff_scene<T> grazing(splitmix& g)
         stiff_scene<T> s;
         const glm::dvec3 Q = random_point(g);
         const glm::dvec3 n = facing_normal(g, Q);
-        const double c = g.uniform(0.5e-6, 2e-6);
-        const glm::dvec3 l = g.perpendicular(n) * std::sqrt(1 - c * c) + n * c;
-        const bool positional = g.next() % 2 == 0;
-        const glm::dvec3 p = positional ? Q + l * g.uniform(1, 10) : l * g.uniform(0.5, 2);
+        const glm::dvec4 p = grazing_light_position(g, Q, n, g.uniform(0.5e-6, 2e-6));
         s.position = to<T>(Q);
         s.normal = to<T>(n * g.uniform(0.5, 2));
         s.material.ka = s.material.ks = glm::vec<3, T>(T(0));
-        s.material.kd = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
+        s.material.kd = random_strengths<T>(g);
         s.material.shininess = T(g.uniform(1, 200));
-        s.lights.push_back(random_light<T>(g, to<T>(p, positional ? 1 : 0)));
+        s.lights.push_back(random_light<T>(g, to<T>(glm::dvec3(p), p.w)));
         const wide nl = exact_nl(s);
         if (nl >= wide(2.5e-7) && nl <= wide(4e-6)) return s;
     }
@@ -240,16 +250,13 @@ template <class T> stiff_scene<T> grazing_specular(splitmix& g)
         s.position = to<T>(Q);
         s.normal = to<T>(n * g.uniform(0.5, 2));
         s.material.ka = glm::vec<3, T>(T(0));
-        s.material.kd = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
-        s.material.ks = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
+        s.material.kd = random_strengths<T>(g);
+        s.material.ks = random_strengths<T>(g);
         s.material.shininess = T(g.log_uniform(1, 200));
         const int count = 1 + int(g.next() % 4);
         for (int i = 0; i < count; ++i) {
-            const double c = g.log_uniform(2.5e-7, 3e-5);
-            const glm::dvec3 l = g.perpendicular(n) * std::sqrt(1 - c * c) + n * c;
-            const bool positional = g.next() % 2 == 0;
-            const glm::dvec3 p = positional ? Q + l * g.uniform(1, 10) : l * g.uniform(0.5, 2);
-            s.lights.push_back(random_light<T>(g, to<T>(p, positional ? 1 : 0)));
+            const glm::dvec4 p = grazing_light_position(g, Q, n, g.log_uniform(2.5e-7, 3e-5));
+            s.lights.push_back(random_light<T>(g, to<T>(glm::dvec3(p), p.w)));
         }
         bool inside = true;
         for (std::size_t i = 0; i < s.lights.size(); ++i) {
@@ -292,8 +299,8 @@ template <class T> stiff_scene<T> grazing_cosine_near_zero(splitmix& g, phong::s
     s.position = to<T>(Q);
     s.normal = to<T>(n * g.uniform(0.5, 2));
     s.material.ka = glm::vec<3, T>(T(0));
-    s.material.kd = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
-    s.material.ks = to<T>({g.uniform(0.2, 1), g.uniform(0.2, 1), g.uniform(0.2, 1)});
+    s.material.kd = random_strengths<T>(g);
+    s.material.ks = random_strengths<T>(g);
     s.material.shininess = T(g.uniform(1, 4));
     s.lights.push_back(random_light<T>(g, to<T>(Q + l * g.uniform(1, 10), 1)));
     return s;
