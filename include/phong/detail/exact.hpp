@@ -89,11 +89,20 @@ PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& positi
     }
 }
 
-/// Whether every lane's squares of the normal and the view vector are finite, which means finite
-/// inputs (poison 0). A given view vector says nothing about Q: its square joins the test. Where
-/// both unit vectors come from unit_of (their ok: the square is a normal number), their masks
-/// are the test: a zero normal or view vector then takes the exact test too (rare), and no
-/// compare is added.
+/// Lane-wise: the squares of the normal and the view vector are at most T's largest, which means
+/// finite inputs (poison 0). A given view vector says nothing about Q: its square joins the test.
+template <features F, class T, glm::qualifier Q>
+PHONG_HD constexpr mask_t<T> squares_in_range(const glm::vec<3, T, Q>& position, T normal_square, T view_square)
+{
+    if constexpr (F.view == view_model::given) view_square = view_square + phong::dot(position, position);
+    else (void)position;
+    return math_traits<T>::both(normal_square <= largest<T>(), view_square <= largest<T>());
+}
+
+/// Whether every lane's squares are in range (squares_in_range), which means finite inputs
+/// (poison 0). Where both unit vectors come from unit_of (their ok: the square is a normal
+/// number), their masks are the test: a zero normal or view vector then takes the exact test too
+/// (rare), and no compare is added.
 template <features F, class T, glm::qualifier Q>
 PHONG_HD constexpr bool finite_squares(const glm::vec<3, T, Q>& position, const unit_vector<T, Q>& n, const unit_vector<T, Q>& v)
 {
@@ -104,10 +113,7 @@ PHONG_HD constexpr bool finite_squares(const glm::vec<3, T, Q>& position, const 
         if constexpr (requires { math_traits<T>::all_both(n.ok, v.ok); }) return math_traits<T>::all_both(n.ok, v.ok);
         else return math_traits<T>::all(math_traits<T>::both(n.ok, v.ok));
     } else {
-        T view_square = v.square;
-        if constexpr (F.view == view_model::given) view_square = view_square + phong::dot(position, position);
-        else (void)position;
-        return math_traits<T>::all(math_traits<T>::both(n.square <= largest<T>(), view_square <= largest<T>()));
+        return math_traits<T>::all(squares_in_range<F>(position, n.square, v.square));
     }
 }
 
@@ -119,8 +125,7 @@ PHONG_HD constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::
                                   const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env, T normal_square,
                                   T view_square)
 {
-    if constexpr (F.view == view_model::given) view_square = view_square + phong::dot(position, position);
-    if (!(normal_square <= largest<T>() && view_square <= largest<T>())) [[unlikely]]
+    if (!squares_in_range<F>(position, normal_square, view_square)) [[unlikely]]
         return poison_of<F>(position, normal, given_view, env);
     return T(0);
 }
