@@ -571,8 +571,9 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
         }
     }
 
-    /// Calls use(material<V, Q> const&) with the lanes of points i .. i + count - 1.
-    template <class Use> void with_step(std::size_t i, std::size_t count, Use&& use) const
+    /// The lanes of points i .. i + count - 1: the table's lanes of their id when they share one
+    /// (nothing copied), else `scratch`, filled with each point's entry.
+    const material<V, Q>* step(std::size_t i, std::size_t count, material<V, Q>& scratch) const
     {
         constexpr std::size_t W = sizeof(V) / sizeof(T);
         const std::uint32_t last = std::uint32_t(table.size() - 1);
@@ -582,11 +583,11 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
             if (count == W) { // 16 ids in one register: clamp, compare with lane 0
                 const std::uint32_t first = std::min(id[0], last);
                 const __m512i clamped = _mm512_min_epu32(_mm512_loadu_si512(id), _mm512_set1_epi32(int(last)));
-                if (_mm512_cmpneq_epi32_mask(clamped, _mm512_set1_epi32(int(first))) == 0) return use(splatted[first]);
-                if (!columns.empty()) return use(permuted(clamped));
+                if (_mm512_cmpneq_epi32_mask(clamped, _mm512_set1_epi32(int(first))) == 0) return &splatted[first];
+                if (!columns.empty()) return &(scratch = permuted(clamped));
                 alignas(64) std::uint32_t element[W];
                 _mm512_store_si512(element, clamped);
-                return use(gather<V, true>(table.data(), element));
+                return &(scratch = gather<V, true>(table.data(), element));
             }
         }
 #endif
@@ -595,11 +596,11 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
             if (count == W) { // 8 ids in one register: clamp, compare with lane 0
                 const std::uint32_t first = std::min(id[0], last);
                 const __m256i clamped = _mm256_min_epu32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(id)), _mm256_set1_epi32(int(last)));
-                if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(clamped, _mm256_set1_epi32(int(first)))) == -1) return use(splatted[first]);
-                if (!columns.empty()) return use(permuted(clamped));
+                if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(clamped, _mm256_set1_epi32(int(first)))) == -1) return &splatted[first];
+                if (!columns.empty()) return &(scratch = permuted(clamped));
                 alignas(32) std::uint32_t element[W];
                 _mm256_store_si256(reinterpret_cast<__m256i*>(element), clamped);
-                return use(gather<V, true>(table.data(), element));
+                return &(scratch = gather<V, true>(table.data(), element));
             }
         }
 #endif
@@ -609,8 +610,8 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
             element[k] = std::min(id[k < count ? k : count - 1], last);
             uniform = uniform && element[k] == element[0];
         }
-        if (uniform) return use(splatted[element[0]]);
-        return use(gather<V, true>(table.data(), element));
+        if (uniform) return &splatted[element[0]];
+        return &(scratch = gather<V, true>(table.data(), element));
     }
 };
 
@@ -664,41 +665,54 @@ template <std::size_t W> struct aos_permutes {
 template <std::size_t W> inline constexpr aos_permutes<W> aos_permute_table{};
 #endif
 
-/// The same from an array of glm vectors (AoS): a W x 3 transpose (AVX-512: three loads and six
-/// permutes for a full step; else through a small buffer). The lanes are the same values as from
+/// Whether full steps of W interleaved glm::vec3 (3W scalars in a row) are transposed to and
+/// from x, y, z lanes in registers (aos_lanes, interleave_lanes): AVX-512 (float or double) and
+/// AVX2 (float) with an unpadded vec3. Elsewhere they go through a small buffer.
+template <class V, class T, glm::qualifier Q> inline constexpr bool aos_in_registers =
+    sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T) && (avx512_lanes<V, T> || avx2_float_lanes<V, T>);
+
+/// The x, y, z lanes of W interleaved vec3 at s (3W scalars: x0 y0 z0 x1 ...), transposed in
+/// registers (aos_in_registers only): AVX-512, three loads and six two-source permutes; AVX2,
+/// three loads, six blends and three permutes.
+template <class V, glm::qualifier Q, class T>
+inline glm::vec<3, V, Q> aos_lanes([[maybe_unused]] const T* s)
+{
+    static_assert(aos_in_registers<V, T, Q>);
+    [[maybe_unused]] constexpr std::size_t W = sizeof(V) / sizeof(T);
+    glm::vec<3, V, Q> r;
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+    if constexpr (avx512_lanes<V, T>) {
+        constexpr const aos_permutes<W>& P = aos_permute_table<W>;
+        for (int o = 0; o < 3; ++o) {
+            if constexpr (std::is_same_v<T, float>) {
+                const __m512 t = _mm512_permutex2var_ps(_mm512_loadu_ps(s), _mm512_load_si512(P.ab[o]), _mm512_loadu_ps(s + W));
+                r[o] = V(_mm512_permutex2var_ps(t, _mm512_load_si512(P.with_c[o]), _mm512_loadu_ps(s + 2 * W)));
+            } else {
+                const __m512d t = _mm512_permutex2var_pd(_mm512_loadu_pd(s), _mm512_load_si512(P.ab64[o]), _mm512_loadu_pd(s + W));
+                r[o] = V(_mm512_permutex2var_pd(t, _mm512_load_si512(P.with_c64[o]), _mm512_loadu_pd(s + 2 * W)));
+            }
+        }
+        return r;
+    }
+#endif
+#if PHONG_HAS_XSIMD && defined(__AVX2__)
+    if constexpr (avx2_float_lanes<V, T>) {
+        const __m256 a = _mm256_loadu_ps(s), b = _mm256_loadu_ps(s + 8), c = _mm256_loadu_ps(s + 16);
+        r = {V(aos8_component<0>(a, b, c)), V(aos8_component<1>(a, b, c)), V(aos8_component<2>(a, b, c))};
+    }
+#endif
+    return r;
+}
+
+/// The same from an array of glm vectors (AoS): a W x 3 transpose (aos_lanes for a full step
+/// where aos_in_registers; else through a small buffer). The lanes are the same values as from
 /// SoA spans, so both layouts give the same bits.
 template <class V, glm::qualifier Q, class T>
 glm::vec<3, V, Q> load_vec3(std::span<const glm::vec<3, T, Q>> in, std::size_t i, std::size_t count, const glm::vec<3, T, Q>& pad)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
-#if PHONG_HAS_XSIMD && defined(__AVX512F__)
-    if constexpr (avx512_lanes<V, T> && sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T)) {
-        if (count == W) {
-            const T* s = &in[i].x; // 3W scalars in a row
-            constexpr const aos_permutes<W>& P = aos_permute_table<W>;
-            glm::vec<3, V, Q> r;
-            for (int o = 0; o < 3; ++o) {
-                if constexpr (std::is_same_v<T, float>) {
-                    const __m512 t = _mm512_permutex2var_ps(_mm512_loadu_ps(s), _mm512_load_si512(P.ab[o]), _mm512_loadu_ps(s + W));
-                    r[o] = V(_mm512_permutex2var_ps(t, _mm512_load_si512(P.with_c[o]), _mm512_loadu_ps(s + 2 * W)));
-                } else {
-                    const __m512d t = _mm512_permutex2var_pd(_mm512_loadu_pd(s), _mm512_load_si512(P.ab64[o]), _mm512_loadu_pd(s + W));
-                    r[o] = V(_mm512_permutex2var_pd(t, _mm512_load_si512(P.with_c64[o]), _mm512_loadu_pd(s + 2 * W)));
-                }
-            }
-            return r;
-        }
-    }
-#endif
-#if PHONG_HAS_XSIMD && defined(__AVX2__)
-    if constexpr (avx2_float_lanes<V, T> && sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T)) {
-        if (count == W) {
-            const T* s = &in[i].x; // 24 floats in a row
-            const __m256 a = _mm256_loadu_ps(s), b = _mm256_loadu_ps(s + 8), c = _mm256_loadu_ps(s + 16);
-            return {V(aos8_component<0>(a, b, c)), V(aos8_component<1>(a, b, c)), V(aos8_component<2>(a, b, c))};
-        }
-    }
-#endif
+    if constexpr (aos_in_registers<V, T, Q>)
+        if (count == W) return aos_lanes<V, Q>(&in[i].x);
     alignas(64) T buf[3][W];
     for (std::size_t k = 0; k < W; ++k) {
         const glm::vec<3, T, Q>& p = k < count ? in[i + k] : pad;
@@ -709,41 +723,46 @@ glm::vec<3, V, Q> load_vec3(std::span<const glm::vec<3, T, Q>> in, std::size_t i
     return {load<V>(buf[0]), load<V>(buf[1]), load<V>(buf[2])};
 }
 
-/// Stores the lanes of a colour into count interleaved colours at out (rgb: AVX-512 transposes a
-/// full step with six permutes and three stores; else through a small buffer).
+/// Stores the r, g, b lanes of a colour as W interleaved rgb at d (3W scalars; aos_in_registers
+/// only): AVX-512, six permutes and three stores; AVX2, nine permutes, six blends, three stores.
+template <class V, class T, glm::qualifier Q>
+inline void interleave_lanes(const glm::vec<3, V, Q>& c, [[maybe_unused]] T* d)
+{
+    static_assert(aos_in_registers<V, T, Q>);
+    [[maybe_unused]] constexpr std::size_t W = sizeof(V) / sizeof(T);
+#if PHONG_HAS_XSIMD && defined(__AVX512F__)
+    if constexpr (avx512_lanes<V, T>) {
+        constexpr const aos_permutes<W>& P = aos_permute_table<W>;
+        for (int b = 0; b < 3; ++b) {
+            if constexpr (std::is_same_v<T, float>) {
+                const __m512 t = _mm512_permutex2var_ps(c[0], _mm512_load_si512(P.xy[b]), c[1]);
+                _mm512_storeu_ps(d + b * W, _mm512_permutex2var_ps(t, _mm512_load_si512(P.with_z[b]), c[2]));
+            } else {
+                const __m512d t = _mm512_permutex2var_pd(c[0], _mm512_load_si512(P.xy64[b]), c[1]);
+                _mm512_storeu_pd(d + b * W, _mm512_permutex2var_pd(t, _mm512_load_si512(P.with_z64[b]), c[2]));
+            }
+        }
+        return;
+    }
+#endif
+#if PHONG_HAS_XSIMD && defined(__AVX2__)
+    if constexpr (avx2_float_lanes<V, T>) {
+        _mm256_storeu_ps(d, interleave8_block<0>(c[0], c[1], c[2]));
+        _mm256_storeu_ps(d + 8, interleave8_block<1>(c[0], c[1], c[2]));
+        _mm256_storeu_ps(d + 16, interleave8_block<2>(c[0], c[1], c[2]));
+    }
+#endif
+}
+
+/// Stores the lanes of a colour into count interleaved colours at out (rgb, a full step:
+/// interleave_lanes where aos_in_registers; else through a small buffer).
 template <class V, class T, int N, glm::qualifier Q>
 void store_interleaved(const glm::vec<N, V, Q>& c, glm::vec<N, T, Q>* out, std::size_t count)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
-#if PHONG_HAS_XSIMD && defined(__AVX512F__)
-    if constexpr (avx512_lanes<V, T> && N == 3 && sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T)) {
-        if (count == W) {
-            T* d = &out->x; // 3W scalars in a row
-            constexpr const aos_permutes<W>& P = aos_permute_table<W>;
-            for (int b = 0; b < 3; ++b) {
-                if constexpr (std::is_same_v<T, float>) {
-                    const __m512 t = _mm512_permutex2var_ps(c[0], _mm512_load_si512(P.xy[b]), c[1]);
-                    _mm512_storeu_ps(d + b * W, _mm512_permutex2var_ps(t, _mm512_load_si512(P.with_z[b]), c[2]));
-                } else {
-                    const __m512d t = _mm512_permutex2var_pd(c[0], _mm512_load_si512(P.xy64[b]), c[1]);
-                    _mm512_storeu_pd(d + b * W, _mm512_permutex2var_pd(t, _mm512_load_si512(P.with_z64[b]), c[2]));
-                }
-            }
-            return;
-        }
+    if constexpr (N == 3 && aos_in_registers<V, T, Q>) {
+        if (count == W) return interleave_lanes<V, T, Q>(c, &out->x);
     }
-#endif
-#if PHONG_HAS_XSIMD && defined(__AVX2__)
-    if constexpr (avx2_float_lanes<V, T> && N == 3 && sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T)) {
-        if (count == W) {
-            T* d = &out->x; // 24 floats in a row
-            _mm256_storeu_ps(d, interleave8_block<0>(c[0], c[1], c[2]));
-            _mm256_storeu_ps(d + 8, interleave8_block<1>(c[0], c[1], c[2]));
-            _mm256_storeu_ps(d + 16, interleave8_block<2>(c[0], c[1], c[2]));
-            return;
-        }
-    }
-#endif
     alignas(64) T buf[4][W];
     for (int ch = 0; ch < N; ++ch) store(c[ch], buf[ch]);
     for (std::size_t k = 0; k < count; ++k)
@@ -942,49 +961,80 @@ template <class V, glm::qualifier Q> struct step_lanes {
 
 /// Where shade_lanes reads its steps' lanes and writes their colours: one pointer per component
 /// (in: position x y z, normal x y z, view x y z; out: r g b a) and the elements from one step to
-/// the next. Full SoA steps point into the caller's spans (stride W: nothing copied); AoS input,
-/// interleaved output and tails point into a block of the call (stride: one block step). Every
-/// layout runs the same compiled shade_lanes through it, so their colours agree bit for bit.
+/// the next. Full SoA steps point into the caller's spans (stride W: nothing copied); full AoS
+/// steps (aos_in) and interleaved rgb colours (interleaved_out) point into the caller's arrays
+/// too, transposed in registers (aos_in_registers; stride 3W); tails, and AoS or interleaved
+/// layouts without those transposes, point into a block of the call (stride: one block step).
+/// Every layout runs the same compiled shade_lanes through it (the layout is a run-time flag, not
+/// a template parameter), so their colours agree bit for bit.
 template <class V, class T> struct step_stream {
-    const T* in[9];          ///< view x y z: read only with view_model::given
+    const T* in[9];          ///< view x y z: read only with view_model::given; aos_in: in[0], in[3], in[6] only
     std::size_t in_stride;
     const mask_t<V>* front;  ///< front-facing lanes, one mask per step; null: every lane
-    T* out[4];               ///< a: written only with F.alpha
+    T* out[4];               ///< a: written only with F.alpha; interleaved_out: out[0] only
     std::size_t out_stride;
-    /// Step k's lanes (the view only with view_model::given).
-    template <features F, glm::qualifier Q> step_lanes<V, Q> lanes(std::size_t k) const
+    bool aos_in;             ///< in[0], in[3], in[6]: W interleaved vec3 per step
+    bool interleaved_out;    ///< out[0]: W interleaved rgb per step
+    /// Step k's lanes (the view only with view_model::given). Flags: false where the caller knows
+    /// that neither aos_in nor interleaved_out is set (SoA in and out, blocks): no test per step.
+    template <features F, glm::qualifier Q, bool Flags = true> step_lanes<V, Q> lanes(std::size_t k) const
     {
         const std::size_t o = k * in_stride;
         step_lanes<V, Q> s;
+        s.front = front ? front[k] : mask_t<V>(true);
+        if constexpr (Flags && aos_in_registers<V, T, Q>) {
+            if (aos_in) {
+                s.position = aos_lanes<V, Q>(in[0] + o);
+                s.normal = aos_lanes<V, Q>(in[3] + o);
+                if constexpr (F.view == view_model::given) s.view = aos_lanes<V, Q>(in[6] + o);
+                return s;
+            }
+        }
         s.position = {load<V>(in[0] + o), load<V>(in[1] + o), load<V>(in[2] + o)};
         s.normal = {load<V>(in[3] + o), load<V>(in[4] + o), load<V>(in[5] + o)};
         if constexpr (F.view == view_model::given) s.view = {load<V>(in[6] + o), load<V>(in[7] + o), load<V>(in[8] + o)};
-        s.front = front ? front[k] : mask_t<V>(true);
         return s;
     }
-    /// Stores step k's colour.
-    template <features F, glm::qualifier Q> void put(std::size_t k, const color<F, V, Q>& c) const
+    /// Stores step k's colour (Flags as lanes).
+    template <features F, glm::qualifier Q, bool Flags = true> void put(std::size_t k, const color<F, V, Q>& c) const
     {
+        if constexpr (Flags && !F.alpha && aos_in_registers<V, T, Q>) {
+            if (interleaved_out) return interleave_lanes<V, T, Q>(c, out[0] + k * out_stride);
+        }
         constexpr int channels = F.alpha ? 4 : 3;
         for (int ch = 0; ch < channels; ++ch) store(c[ch], out[ch] + k * out_stride);
     }
 };
 
-/// Steps per call of shade_lanes (one material for all points): the per-call work (entry, the
-/// hoisted constants, the return) is shared by that many steps, and the out-of-order core
-/// overlaps one step's long dependent chain (normalizations, the power's polynomial) with the
-/// next step's, which a call per step kept apart (batch exact at K = 1: 1.4x the hand-written
-/// kernel's time with a call per step; docs/batch.md). Steps read and written in place (SoA
-/// points and colours) take 32 per call (Phong at K = 1: 0.95x the hand-written kernel's time
-/// against 0.99x with 8), steps through the call's blocks 8 (a block of 32 steps would be 26 KiB).
+/// Steps per call of shade_lanes: the per-call work (entry, the hoisted constants, the return) is
+/// shared by that many steps, and the out-of-order core overlaps one step's long dependent chain
+/// (normalizations, the power's polynomial) and its loads from memory with the next step's, which
+/// a call per step kept apart (batch exact at K = 1: 1.4x the hand-written kernel's time with a
+/// call per step; docs/batch.md). Steps read and written in place (SoA points or AoS points with
+/// the transposes in registers; SoA colours or interleaved rgb likewise) take 32 per call (Phong
+/// at K = 1: 0.95x the hand-written kernel's time against 0.99x with 8), steps through the call's
+/// blocks 8 (a block of 32 steps would be 26 KiB).
 inline constexpr std::size_t steps_per_call = 32;
 inline constexpr std::size_t block_steps_per_call = 8;
-/// Whether full steps of these points and this output are read and written in place.
-template <class Points, class Output, class T>
-inline constexpr bool in_place_steps = std::is_same_v<Points, soa_points<T>> && std::is_same_v<Output, soa_rgba<T>>;
+/// Whether full steps of these points are read in place, and full steps' colours written in place.
+template <class Points, class V, class T, glm::qualifier Q>
+inline constexpr bool points_in_place =
+    std::is_same_v<Points, soa_points<T>> || (std::is_same_v<Points, aos_points<T, Q>> && aos_in_registers<V, T, Q>);
+template <features F, class Output, class V, class T, glm::qualifier Q>
+inline constexpr bool colours_in_place = std::is_same_v<Output, soa_rgba<T>> || (!F.alpha && aos_in_registers<V, T, Q>);
+template <features F, class Points, class Output, class V, class T, glm::qualifier Q>
+inline constexpr bool in_place_steps = points_in_place<Points, V, T, Q> && colours_in_place<F, Output, V, T, Q>;
 /// The most steps of one call for these points and this output.
-template <class Points, class Output, class T>
-inline constexpr std::size_t call_steps = in_place_steps<Points, Output, T> ? steps_per_call : block_steps_per_call;
+template <features F, class Points, class Output, class V, class T, glm::qualifier Q>
+inline constexpr std::size_t call_steps = in_place_steps<F, Points, Output, V, T, Q> ? steps_per_call : block_steps_per_call;
+
+/// The shininess lanes with m == 0 tested (exact::lane_shininess): once per call, or once per
+/// step with per-step materials.
+template <class V> exact::lane_shininess<V> shininess_lanes(const V& m)
+{
+    const mask_t<V> zero = m == V(typename math_traits<V>::scalar(0));
+    return {m, zero, math_traits<V>::any(zero)};
+}
 
 /// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
 /// steps from step `first` of the stream (its step first + k in, its colour first + k out). The
@@ -1004,10 +1054,15 @@ inline constexpr std::size_t call_steps = in_place_steps<Points, Output, T> ? st
 /// light_sums. Folded, env.ambient is not the scene's ambient but the colour's point-independent
 /// part, emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the
 /// loop runs without the lights' ambient terms); the sums start from it.
+/// step_materials: null (mat for every step), or, not folded and in the exact mode only, the
+/// material lanes of each step (step k: *step_materials[k]; a table's steps or per-point
+/// materials, several steps per call). The fast mode's integer exponent and the stable mode's
+/// route are decided per call from mat: those modes take one step per call with per-step materials.
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
 PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size_t first, std::size_t steps, const material<V, Q>& mat,
                                       std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
-                                      const environment<V, Q>& env, const std::uint64_t* bits, std::size_t count)
+                                      const environment<V, Q>& env, const std::uint64_t* bits, std::size_t count,
+                                      const material<V, Q>* const* step_materials)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     const step_stream<V, T> io = stream; // a copy the colour stores cannot alias: its pointers stay in registers
@@ -1044,32 +1099,48 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
     (void)wide_lights;
 #endif
     // The steps with masks or without: two loops, so that a call without masks tests nothing per step.
-    const auto run_steps = [&]<bool Masks>(const auto& m) {
+    // Flags: the loop that tests io's layout flags per step (a loop of its own, so that SoA steps
+    // test nothing: the test per step cost Blinn K = 1 3 % against the hand-written kernel).
+    const auto run_steps = [&]<bool Masks, bool Flags>(const auto& call_m) {
         // Step k's colour is stored after step k + 1's lanes are loaded: stored before, it held up
         // those loads where the spans share their offset in a 4 KiB page (batch exact, Blinn, K = 1,
         // the benchmark's std::vectors: 1.07x the hand-written kernel's time against 0.78x).
         color<F, V, Q> pending;
         for (std::size_t k = 0; k < steps; ++k) {
             const std::uint64_t* step_bits = Masks ? bits + k * W : nullptr;
-            const step_lanes<V, Q> in = io.template lanes<F, Q>(first + k);
-            if (k > 0) io.template put<F, Q>(first + k - 1, pending);
+            const step_lanes<V, Q> in = io.template lanes<F, Q, Flags>(first + k);
+            if (k > 0) io.template put<F, Q, Flags>(first + k - 1, pending);
             const frame_t<F, V, Q> s = prepare<F>(in.position, in.normal, in.view, env, in.front);
             Sums sums{};
             if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
             if constexpr (Folded && ambient_hoistable<F> && !Masks) {
                 constexpr features G = ambient_hoisted<F>;
-                add_masked_lights<G, V, T, Q>(sums, s, lights, m, step_bits, count);
+                add_masked_lights<G, V, T, Q>(sums, s, lights, call_m, step_bits, count);
                 pending = finish<G>(sums, s, mat, env);
-            } else {
+            } else if constexpr (!Folded && std::is_same_v<std::decay_t<decltype(call_m)>, exact::lane_shininess<V>>) {
+                // Per-step materials: the step's shininess tested for 0 here, as once per call otherwise.
+                const material<V, Q>& step_mat = step_materials ? *step_materials[k] : mat;
+                exact::lane_shininess<V> m = call_m;
+                if (step_materials) m = shininess_lanes(step_mat.shininess);
                 add_masked_lights<F, V, T, Q>(sums, s, lights, m, step_bits, count);
+                pending = finish<F>(sums, s, step_mat, env);
+            } else {
+                add_masked_lights<F, V, T, Q>(sums, s, lights, call_m, step_bits, count);
                 pending = finish<F>(sums, s, mat, env);
             }
         }
-        if (steps > 0) io.template put<F, Q>(first + steps - 1, pending);
+        if (steps > 0) io.template put<F, Q, Flags>(first + steps - 1, pending);
     };
     const auto run = [&](const auto& m) { // m: the shininess (V, exact::lane_shininess<V> or exact::integer_exponent<V>)
-        if (bits) run_steps.template operator()<true>(m);
-        else run_steps.template operator()<false>(m);
+        if constexpr (aos_in_registers<V, T, Q>) {
+            if (io.aos_in || io.interleaved_out) {
+                if (bits) run_steps.template operator()<true, true>(m);
+                else run_steps.template operator()<false, true>(m);
+                return;
+            }
+        }
+        if (bits) run_steps.template operator()<true, false>(m);
+        else run_steps.template operator()<false, false>(m);
     };
     if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) {
         // One integer shininess in every lane (a shared material, or a step of equal ones):
@@ -1080,8 +1151,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
             return run(exact::integer_exponent<V>{unsigned(m0)});
     }
     if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
-        const mask_t<V> zero = mat.shininess == V(T(0)); // m == 0 tested once
-        run(exact::lane_shininess<V>{mat.shininess, zero, math_traits<V>::any(zero)});
+        run(shininess_lanes(mat.shininess)); // m == 0 tested once
     } else {
         run(mat.shininess);
     }
@@ -1090,28 +1160,28 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
 /// One material for every point: its lanes, splatted once per call (folded into the lights).
 template <class V, glm::qualifier Q> struct shared_lanes {
     material<V, Q> lanes;
-    template <class Use> void with_step(std::size_t, std::size_t, Use&& use) const { use(lanes); }
 };
 /// The same where folding would lose a product to underflow or overflow (foldable below): the
 /// material multiplies the sums at the end, as per point.
 template <class V, glm::qualifier Q> struct unfolded_shared_lanes {
     material<V, Q> lanes;
-    template <class Use> void with_step(std::size_t, std::size_t, Use&& use) const { use(lanes); }
 };
 
 /// One material per point: the step's materials gathered into lanes (the tail's pad lanes take
 /// the last point's material).
 template <class V, class T, glm::qualifier Q> struct per_point_lanes {
     std::span<const material<T, Q>> materials;
-    template <class Use> void with_step(std::size_t i, std::size_t count, Use&& use) const
+    /// The lanes of points i .. i + count - 1, in `scratch`.
+    const material<V, Q>* step(std::size_t i, std::size_t count, material<V, Q>& scratch) const
     {
         constexpr std::size_t W = sizeof(V) / sizeof(T);
         if (count == W) {
-            use(gather<V, false>(materials.data() + i, full_step_elements<W>.index));
+            scratch = gather<V, false>(materials.data() + i, full_step_elements<W>.index);
         } else {
             const consecutive_elements<W> tail(count);
-            use(gather<V, false>(materials.data() + i, tail.index));
+            scratch = gather<V, false>(materials.data() + i, tail.index);
         }
+        return &scratch;
     }
 };
 
@@ -1167,37 +1237,63 @@ void store_step(const color<F, V, Q>& c, std::size_t i, std::size_t count, const
 #  pragma GCC diagnostic push
 #  pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
+/// Material lanes kept per call of shade_lanes for steps of mixed materials (a table's steps of
+/// mixed ids, per-point materials): a call ends at the step that would need one more.
+inline constexpr std::size_t step_material_slots = 8;
+
 /// Up to call_steps batch steps from point i (steps full steps of W points, or one step of
-/// count < W points: a tail), through one call of shade_lanes. Full SoA steps and light masks of
-/// full steps are read in place, full steps' SoA colours written in place. `materials` gives each
-/// step's material lanes (shared_lanes, per_point_lanes or table_lanes); materials that differ per
-/// step go one step per call.
+/// count < W points: a tail), through one call of shade_lanes; returns the steps shaded (fewer
+/// than `steps` when the call ran out of step_material_slots). Full SoA steps, full AoS steps
+/// (aos_in_registers) and light masks of full steps are read in place, full steps' SoA or
+/// interleaved rgb colours written in place. `materials` gives each step's material lanes
+/// (shared_lanes, per_point_lanes or table_lanes); materials that differ per step go in one call
+/// of several steps in the exact mode (a pointer per step: a table's lanes as they are, or a
+/// slot), one step per call in the others.
 template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
-void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, const Points& points,
-                        const MaterialLanes& materials, std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
-                        const environment<V, Q>& env, const Output& out)
+std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, const Points& points,
+                               const MaterialLanes& materials, std::span<const light<V, Q>> lights,
+                               std::span<const light<double, Q>> wide_lights, const environment<V, Q>& env, const Output& out)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     // One material for all points: shade_points_impl folded it into the lights.
     constexpr bool folded = std::is_same_v<MaterialLanes, shared_lanes<V, Q>>;
     constexpr bool shared = folded || std::is_same_v<MaterialLanes, unfolded_shared_lanes<V, Q>>;
     constexpr int channels = F.alpha ? 4 : 3;
-    constexpr std::size_t max_steps = call_steps<Points, Output, T>;
+    constexpr std::size_t max_steps = call_steps<F, Points, Output, V, T, Q>;
     steps = std::min(steps, max_steps); // callers pass at most max_steps; said here for g++'s -Wstringop-overflow
-    // Full SoA steps are read and written in place; the rest goes through these blocks (in place:
-    // only a tail, one step).
-    constexpr std::size_t block_steps = in_place_steps<Points, Output, T> ? 1 : block_steps_per_call;
+    // Per-step materials first: they may end the call early.
+    constexpr bool materials_per_step = !shared && F.mode == evaluation::exact && !std::is_same_v<V, T>;
+    const material<V, Q>* step_material[max_steps];
+    material<V, Q> slot[materials_per_step ? step_material_slots : 1];
+    if constexpr (materials_per_step) {
+        std::size_t used = 0, k = 0;
+        for (; k < steps && used < step_material_slots; ++k) {
+            step_material[k] = materials.step(i + k * W, count, slot[used]);
+            used += step_material[k] == &slot[used];
+        }
+        if (k < steps && used == step_material_slots) steps = k; // the next step may need a slot
+    }
+    // Full steps in place are read and written where they are; the rest goes through these
+    // blocks (in place: only a tail, one step).
+    constexpr bool in_place = in_place_steps<F, Points, Output, V, T, Q>;
+    constexpr std::size_t block_steps = in_place ? 1 : block_steps_per_call;
     alignas(64) T in_block[block_steps][9][W];
     alignas(64) T out_block[block_steps][4][W];
     mask_t<V> front[max_steps];
     step_stream<V, T> io{};
     constexpr bool soa_in = std::is_same_v<Points, soa_points<T>>;
-    if (soa_in && count == W) {
+    if (points_in_place<Points, V, T, Q> && count == W) {
         if constexpr (soa_in) {
             const soa3<T>* from[3] = {&points.positions, &points.normals, &points.views};
             for (int v = 0; v < (F.view == view_model::given ? 3 : 2); ++v)
                 for (int c = 0; c < 3; ++c) io.in[3 * v + c] = (c == 0 ? from[v]->x : c == 1 ? from[v]->y : from[v]->z).data() + i;
             io.in_stride = W;
+        } else if constexpr (points_in_place<Points, V, T, Q>) {
+            io.in[0] = &points.positions[i].x;
+            io.in[3] = &points.normals[i].x;
+            if constexpr (F.view == view_model::given) io.in[6] = &points.views[i].x;
+            io.in_stride = 3 * W;
+            io.aos_in = true;
         }
     } else {
         for (std::size_t k = 0; k < steps && k < block_steps; ++k) { // steps <= block_steps here
@@ -1219,11 +1315,15 @@ void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, con
         }
     }
     constexpr bool soa_out = std::is_same_v<Output, soa_rgba<T>>;
-    if (soa_out && count == W) {
+    if (colours_in_place<F, Output, V, T, Q> && count == W) {
         if constexpr (soa_out) {
             T* dst[4] = {out.r.data(), out.g.data(), out.b.data(), F.alpha ? out.a.data() : nullptr};
             for (int ch = 0; ch < channels; ++ch) io.out[ch] = dst[ch] + i;
             io.out_stride = W;
+        } else if constexpr (colours_in_place<F, Output, V, T, Q>) {
+            io.out[0] = &out[i].x;
+            io.out_stride = 3 * W;
+            io.interleaved_out = true;
         }
     } else {
         for (int ch = 0; ch < channels; ++ch) io.out[ch] = out_block[0][ch];
@@ -1241,13 +1341,13 @@ void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, con
         }
     }
     if constexpr (shared) {
-        shade_lanes<F, V, T, Q, folded>(io, 0, steps, materials.lanes, lights, wide_lights, env, bits, count);
+        shade_lanes<F, V, T, Q, folded>(io, 0, steps, materials.lanes, lights, wide_lights, env, bits, count, nullptr);
+    } else if constexpr (materials_per_step) {
+        shade_lanes<F, V, T, Q, folded>(io, 0, steps, *step_material[0], lights, wide_lights, env, bits, count, step_material);
     } else {
-        for (std::size_t k = 0; k < steps; ++k) {
-            materials.with_step(i + k * W, count, [&](const material<V, Q>& mat) {
-                shade_lanes<F, V, T, Q, folded>(io, k, 1, mat, lights, wide_lights, env, bits ? bits + k * W : nullptr, count);
-            });
-        }
+        for (std::size_t k = 0; k < steps; ++k)
+            shade_lanes<F, V, T, Q, folded>(io, k, 1, *materials.step(i + k * W, count, slot[0]), lights, wide_lights, env,
+                                            bits ? bits + k * W : nullptr, count, nullptr);
     }
     if (io.out[0] == out_block[0][0]) {
         for (std::size_t k = 0; k < steps && k < block_steps; ++k) {
@@ -1256,6 +1356,7 @@ void shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, con
             store_step<F, V, T, Q>(c, i + k * W, count, out);
         }
     }
+    return steps;
 }
 #if defined(__GNUC__) && !defined(__clang__)
 #  pragma GCC diagnostic pop
@@ -1493,10 +1594,9 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     const environment<V, Q> lane_env = lane_environment<F, V>(env, materials, lights, !points.light_masks.empty(), fold);
     const auto run = [&](const auto& material_lanes) {
         std::size_t i = 0;
-        for (; i + W <= n;) {
-            const std::size_t steps = std::min(call_steps<Points, Output, T>, (n - i) / W);
-            shade_points_steps<F, V, Points, T, Q>(i, steps, W, points, material_lanes, lane_span, wide_span, lane_env, out);
-            i += steps * W;
+        while (i + W <= n) {
+            const std::size_t steps = std::min(call_steps<F, Points, Output, V, T, Q>, (n - i) / W);
+            i += W * shade_points_steps<F, V, Points, T, Q>(i, steps, W, points, material_lanes, lane_span, wide_span, lane_env, out);
         }
         if (i < n) shade_points_steps<F, V, Points, T, Q>(i, 1, n - i, points, material_lanes, lane_span, wide_span, lane_env, out);
     };
