@@ -37,5 +37,12 @@ fuzz() {
   echo "40-fuzz: $name, no finding in $count inputs"
 }
 fuzz "$work/fuzz_shade" tests/fuzz/corpus "$runs"
-fuzz "$work/fuzz_batch" tests/fuzz/corpus_batch "$batch_runs"
-fuzz "$work/fuzz_batch_native" tests/fuzz/corpus_batch "$batch_runs"
+# The two batch fuzzers side by side, one core each (each run is deterministic on its own).
+fuzz "$work/fuzz_batch" tests/fuzz/corpus_batch "$batch_runs" &
+batch=$!
+fuzz "$work/fuzz_batch_native" tests/fuzz/corpus_batch "$batch_runs" &
+native=$!
+status=0
+wait "$batch" || status=1
+wait "$native" || status=1
+exit "$status"
