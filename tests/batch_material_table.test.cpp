@@ -89,6 +89,55 @@ template <class T, features F> void check_material_table(std::uint64_t seed, int
     CHECK(mixed_steps > 3);
 }
 
+/// A long call with a material table (several calls of several steps each in the exact mode,
+/// more steps of mixed ids than a call keeps material lanes for: detail::step_material_slots)
+/// gives each point the bits it gets shaded alone (a tail of one point: one step, one call).
+/// Lanes are independent and a step's material is its own, so neither the position of a step in
+/// its call nor its neighbours' materials may matter; AoS and SoA points, interleaved and SoA
+/// colours, masks on and off.
+template <class T, features F> void check_long_table_call_equals_points_alone(std::uint64_t seed)
+{
+    constexpr bool given = F.view == view_model::given;
+    constexpr std::size_t W = batch_width<T>;
+    constexpr int channels = F.alpha ? 4 : 3;
+    scene_gen<T> gen(seed);
+    scene_gen<float> id_gen(seed + 1);
+    const std::size_t count = (2 * detail::steps_per_call + 3) * W + 5; // three calls or more, and a tail
+    const batch_case<T> c(gen, F, count, 3);
+    std::vector<material<T>> table;
+    for (int j = 0; j < 5; ++j) table.push_back(gen.material(1, 100));
+    table[1].shininess = T(0); // a step of shininess 0 (pow(0, 0) = 1) beside steps without
+    const std::vector<std::uint32_t> ids = step_patterned_ids(id_gen, count, W, int(table.size()));
+    std::size_t mixed_steps = 0;
+    for (std::size_t step = 0; step + W <= count; step += W)
+        mixed_steps += !std::all_of(ids.begin() + std::ptrdiff_t(step), ids.begin() + std::ptrdiff_t(step + W),
+                                    [&](std::uint32_t id) { return id == ids[step]; });
+    CHECK(mixed_steps > 2 * detail::step_material_slots); // calls do run out of material lanes
+    const material_table<T> by_id{.materials = table, .ids = ids};
+    for (bool masked : {false, true}) {
+        std::vector<color<F, T>> aos_out(count), soa_out(count);
+        shade_batch<F>(c.aos(given, masked), by_id, c.base.lights, std::span<color<F, T>>(aos_out), c.base.env);
+        std::vector<T> channel[4];
+        for (std::vector<T>& ch : channel) ch.assign(count, T(-1));
+        shade_batch<F>(c.soa(given, masked), by_id, c.base.lights, soa_rgba<T>{channel[0], channel[1], channel[2], channel[3]}, c.base.env);
+        std::size_t same = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            std::vector<color<F, T>> alone(1);
+            const bool front = c.front[i];
+            aos_points<T> one{std::span(&c.p[i], 1), std::span(&c.n[i], 1), {}, std::span(&front, 1), {}};
+            if (given) one.views = std::span(&c.v[i], 1);
+            if (masked) one.light_masks = std::span(&c.masks[i], 1);
+            shade_batch<F>(one, material_table<T>{.materials = table, .ids = std::span(&ids[i], 1)}, c.base.lights,
+                           std::span<color<F, T>>(alone), c.base.env);
+            color<F, T> soa_i;
+            for (int k = 0; k < channels; ++k) soa_i[k] = channel[k][i];
+            same += aos_out[i] == alone[0] && soa_i == alone[0];
+        }
+        CAPTURE(masked);
+        CHECK(same == count);
+    }
+}
+
 } // namespace
 
 TEST_CASE_TEMPLATE("shade_batch: a material table with per-point ids equals per-point materials bit for bit", T, float, double)
@@ -118,4 +167,13 @@ TEST_CASE_TEMPLATE("shade_batch: material_table on hand-made points", T, float, 
         CAPTURE(i);
         CHECK(out[i] == table[ids[i]].kd); // kd * 1 * 1: exact
     }
+}
+
+TEST_CASE_TEMPLATE("shade_batch: a long call with a material table equals each point shaded alone, bit for bit", T, float, double)
+{
+    check_long_table_call_equals_points_alone<T, presets::raytracer_phong>(9101);
+    check_long_table_call_equals_points_alone<T, presets::classic_phong>(9102);
+    check_long_table_call_equals_points_alone<T, presets::glsl_ads>(9103);
+    check_long_table_call_equals_points_alone<T, presets::with_mode(presets::raytracer_phong, evaluation::fast)>(9104);
+    check_long_table_call_equals_points_alone<T, presets::with_mode(presets::raytracer_phong, evaluation::stable)>(9105);
 }
