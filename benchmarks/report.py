@@ -136,8 +136,6 @@ def main():
         hand = f"hand_simd.exact.{spec}.float"
         for variant, limit, Ks, label in ((f"batch.exact.{spec}.float", 1.0, (1, 4, 16), "batch exact <= 1.0x hand-written SIMD"),
                                           (f"batch.stable.{spec}.float", 2.0, (16,), "batch stable <= 2.0x hand-written SIMD"),
-                                          (f"batch.stable_m256.{spec}.float", None, (16,),
-                                           "(batch stable, stable_twofold_above = 256: no target)"),
                                           (f"batch.fast.{spec}.float", 0.6, (16,), "batch fast <= 0.6x hand-written SIMD")):
             for K in Ks:
                 r, h = get(variant, "typical", K), get(hand, "typical", K)

@@ -328,6 +328,33 @@ TEST_CASE("shade_batch: an invalid environment is reported with the field it nam
     CHECK(std::string(reported[0]).find("environment.ambient") != std::string::npos);
 }
 
+TEST_CASE("shade_batch: an invalid material or light is reported with its index in its span and the field")
+{
+    recording_handler h;
+    grid<float> in;
+    std::vector<float> r(points), g(points), b(points);
+    std::vector<material<float>> per_point(points);
+    per_point[5].kd = glm::vec3(0.5f, -1.0f, 0.5f);
+    std::vector<light<float>> lights(3, one_light<float>[0]);
+    lights[1].position.w = 0.5f;
+    shade_batch<plain>(in.positions(), in.normals(), std::span<const material<float>>(per_point), std::span<const light<float>>(lights),
+                       soa_rgba<float>{r, g, b, {}});
+    REQUIRE(reported.size() == 2);
+    CHECK(reported[0].rfind("shade_batch: materials[5]: material.kd: ", 0) == 0);
+    CHECK(reported[1].rfind("shade_batch: lights[1]: light.position.w: ", 0) == 0);
+
+    reported.clear();
+    std::vector<material<float>> table(3);
+    table[2].shininess = -2.0f;
+    const std::vector<std::uint32_t> ids(points, 0);
+    const std::vector<glm::vec3> p(points, glm::vec3(0.0f, 0.0f, -2.0f)), n(points, glm::vec3(0.0f, 0.0f, 1.0f));
+    std::vector<glm::vec3> out(points);
+    shade_batch<plain>(aos_points<float>{.positions = p, .normals = n}, material_table<float>{.materials = table, .ids = ids},
+                       std::span<const light<float>>(one_light<float>), out);
+    REQUIRE(reported.size() == 1);
+    CHECK(reported[0].rfind("shade_batch: material_table.materials[2]: material.shininess: ", 0) == 0);
+}
+
 TEST_CASE("shade_batch: a material id past the table is reported; if the handler returns, it takes the last entry")
 {
     recording_handler h;
@@ -344,7 +371,7 @@ TEST_CASE("shade_batch: a material id past the table is reported; if the handler
     std::vector<glm::vec3> out(count);
     shade_batch<F>(aos_points<float>{.positions = p, .normals = n}, material_table<float>{.materials = table, .ids = ids}, lights, out);
     REQUIRE(reported.size() == 1);
-    CHECK(reported[0] == std::string("shade_batch: a material id past the table"));
+    CHECK(reported[0] == std::string("shade_batch: material_table.ids[1]: a material id past the table"));
     CHECK(out[0] == glm::vec3(0.25f));
     CHECK(out[1] == glm::vec3(0.5f)); // clamped to the last entry
     CHECK(out[count - 1] == glm::vec3(0.25f));

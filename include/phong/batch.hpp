@@ -17,6 +17,7 @@
 #include <limits>
 #include <array>
 #include <cstddef>
+#include <cstdio>
 #include <functional>
 #include <cstdint>
 #include <span>
@@ -1438,8 +1439,19 @@ template <class T> std::size_t vec3_count(const soa3<T>& v)
 }
 template <class T, glm::qualifier Q> std::size_t vec3_count(std::span<const glm::vec<3, T, Q>> v) { return v.size(); }
 
+/// "shade_batch: <span>[<index>]: <message>", formatted into a per-thread buffer: the message of
+/// a failed precondition on one entry of a span names the entry (debug builds, on failure only;
+/// valid until the thread's next call).
+inline const char* entry_message(const char* span, std::size_t index, const char* message) noexcept
+{
+    thread_local char buffer[256];
+    std::snprintf(buffer, sizeof buffer, "shade_batch: %s[%zu]: %s", span, index, message);
+    return buffer;
+}
+
 /// shade_batch's preconditions, checked in debug builds through the precondition handler (span
-/// lengths, each message naming the span; no aliasing; valid materials, lights and environment). Returns whether to shade: not when a length
+/// lengths, each message naming the span; no aliasing; valid materials, lights and environment, a
+/// span's entry named by its index). Returns whether to shade: not when a length
 /// is off (a handler that returns must not lead to reads or writes past a span), nor, in every
 /// build, with an empty material table (nothing to read).
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
@@ -1496,14 +1508,24 @@ bool check_batch_inputs(const Points& points, const Materials& materials, [[mayb
         PHONG_ASSERT(!overlap, "shade_batch: the output overlaps the input points");
     }
     if constexpr (table) {
-        for (const material<T, Q>& m : materials.materials) PHONG_ASSERT(static_cast<bool>(validate(m)), validate(m).message());
-        for (const std::uint32_t id : materials.ids) PHONG_ASSERT(id < materials.materials.size(), "shade_batch: a material id past the table");
+        for (std::size_t j = 0; j < materials.materials.size(); ++j) {
+            const validation valid = validate(materials.materials[j]);
+            PHONG_ASSERT(static_cast<bool>(valid), entry_message("material_table.materials", j, valid.message()));
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            PHONG_ASSERT(materials.ids[i] < materials.materials.size(), entry_message("material_table.ids", i, "a material id past the table"));
     } else if constexpr (!shared_material) {
-        for (const material<T, Q>& m : materials) PHONG_ASSERT(static_cast<bool>(validate(m)), validate(m).message());
+        for (std::size_t i = 0; i < n; ++i) {
+            const validation valid = validate(materials[i]);
+            PHONG_ASSERT(static_cast<bool>(valid), entry_message("materials", i, valid.message()));
+        }
     } else {
         PHONG_ASSERT(static_cast<bool>(validate(materials)), validate(materials).message());
     }
-    for (const light<T, Q>& L : lights) PHONG_ASSERT(static_cast<bool>(validate(L)), validate(L).message());
+    for (std::size_t k = 0; k < lights.size(); ++k) {
+        const validation valid = validate(lights[k]);
+        PHONG_ASSERT(static_cast<bool>(valid), entry_message("lights", k, valid.message()));
+    }
     PHONG_ASSERT(static_cast<bool>(validate(env)), validate(env).message());
 #endif
     return true;
