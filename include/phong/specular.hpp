@@ -36,7 +36,7 @@ namespace detail {
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr T reflection_cosine_scaled(T nd, T nv, const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& v)
 {
-    return T(2) * nd * nv - phong::dot(d, v);
+    return nd * (T(2) * nv) - phong::dot(d, v); // 2 nv: once per point where nv is (the same bits as (2 nd) nv)
 }
 
 /// Blinn's 1/|l + v|, the scale of n.h = (n.l + n.v) / |l + v| (h = normalize(l + v)).

@@ -196,18 +196,20 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
     else return detail::cosine_power(x, scale, m);
 }
 
-/// The fast mode's shininess on SIMD lanes where every lane has the same integer n <=
-/// fast::pow_integer_max_exponent (shade_batch finds it once per call): the power is
-/// fast::pow_integer (binary powering: five multiplications for n = 32, against two polynomials),
-/// within the fast power's bound (fast::pow_integer_max_rel <= fast::pow_unit_max_rel).
+/// The fast mode's shininess on SIMD lanes where every lane has the same integer n in [1,
+/// fast::pow_integer_max_exponent] (shade_batch finds it once per call): the power is
+/// fast::pow_integer with n's schedule made once (five squarings for n = 32, against two
+/// polynomials), within the fast power's bound (fast::pow_integer_max_rel <= fast::pow_unit_max_rel).
+/// n >= 1: the power of a base 0 is 0, so add_specular zeroes the base of the lanes that are off
+/// (or whose cosine is not positive) instead of selecting the power.
 template <class T> struct integer_exponent {
-    unsigned n; ///< the shininess of every lane
+    fast::pow_integer_plan plan; ///< of the shininess n of every lane, n >= 1
 };
 template <evaluation M, class T>
 PHONG_HD constexpr T route_cosine_power(T x, T scale, const integer_exponent<T>& m)
 {
     static_assert(M == evaluation::fast, "integer_exponent: the fast mode's power");
-    return fast::pow_integer(phong::clamp(x * scale, T(0), T(1)), m.n);
+    return fast::pow_integer(phong::clamp(x * scale, T(0), T(1)), m.plan);
 }
 
 /// The shininess on SIMD lanes with m == 0 tested once (shade_batch: once per call, not per
@@ -231,7 +233,7 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, const lane_shininess<T>& m
 template <class T, class Exponent> PHONG_HD constexpr bool any_zero_exponent(const Exponent& m, const mask_t<T>& on)
 {
     if constexpr (std::is_same_v<Exponent, lane_shininess<T>>) return m.any_zero && math_traits<T>::any(math_traits<T>::both(on, m.zero));
-    else if constexpr (std::is_same_v<Exponent, integer_exponent<T>>) return m.n == 0 && math_traits<T>::any(on);
+    else if constexpr (std::is_same_v<Exponent, integer_exponent<T>>) return false; // n >= 1
     else return math_traits<T>::any(math_traits<T>::both(on, m == T(0)));
 }
 
@@ -247,6 +249,15 @@ PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x,
     if constexpr (std::is_floating_point_v<T>) {
         if (x > T(0)) sum += in_type<T>(specular_of(L)) * (f * route_cosine_power<M>(x, scale, m));
         else if (m == T(0)) sum += in_type<T>(specular_of(L)) * f; // cosine_power's pow(0, 0) = 1
+    } else if constexpr (std::is_same_v<Exponent, integer_exponent<T>>) {
+        // The fast power x^n, n >= 1, of the base c zeroed where the lane is off or c <= 0 (then
+        // its power is 0): the mask goes into the product that forms the base, no select of the
+        // power. The base is not clamped to 1: lanes that are on have unit n, d / |d| and v, so
+        // c <= 1 up to its rounding error, which c^n amplifies by n with or without a clamp
+        // (accuracy.hpp's fast bound), and c^n stays finite (|c| <= 3 |d| for unit vectors).
+        const mask_t<T> positive = math_traits<T>::both(on, x > T(0));
+        if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
+        sum += in_type<T>(specular_of(L)) * (f * fast::pow_integer(phong::select(positive, x * scale, T(0)), m.plan));
     } else {
         // Where no lane that is on has c > 0 (nor m = 0: pow(0, 0) = 1), every selected power is 0
         // and the sum would only gain +0: the power is skipped for the whole step, as scalars skip
@@ -339,7 +350,13 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     // first (SIMD lanes measured slower the other way: the ray tracer's batch, 1 light).
     constexpr bool diffuse_last = std::is_floating_point_v<T> && std::is_same_v<Sums<T, Q>, light_sums<T, Q>>;
     if constexpr (F.diffuse && !diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
-    [[maybe_unused]] const mask_t<T> specular_on = math_traits<T>::both(on, s.sees_viewer);
+    // Phong with the fast integer power (n >= 1): a point without a view vector has v = 0, so its
+    // cosine 2 (n.d)(n.v) - d.v is 0 and its power 0 (or v NaN: a poisoned point, cosine not > 0):
+    // no test of sees_viewer per pair.
+    [[maybe_unused]] const mask_t<T> specular_on = [&] {
+        if constexpr (F.specular == specular_model::phong && std::is_same_v<Exponent, integer_exponent<T>>) return on;
+        else return math_traits<T>::both(on, s.sees_viewer);
+    }();
     if constexpr (F.specular == specular_model::phong) {
         add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn) {
