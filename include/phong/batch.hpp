@@ -1078,7 +1078,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
         const T m0 = mat.shininess.get(0);
         if (m0 >= T(1) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
             math_traits<V>::all(mat.shininess == V(m0)))
-            return run(exact::integer_exponent<V>{fast::plan_pow_integer(unsigned(m0))});
+            return run(exact::integer_exponent<V>::of(unsigned(m0)));
     }
     if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
         const mask_t<V> zero = mat.shininess == V(T(0)); // m == 0 tested once

@@ -222,6 +222,26 @@ PHONG_HD constexpr V pow_integer(V x, unsigned n)
     return pow_integer(x, plan_pow_integer(n));
 }
 
+/// Relative error bound of fast::reciprocal_normal for a positive normal x. Float SIMD lanes: a
+/// hardware estimate r0 with relative error e0 refined by one Newton step in correction form,
+/// r1 = r0 + r0 (1 - x r0): the step leaves e0^2 (AVX-512 rcp14: e0 < 2^-14, 2^-28; AVX rcp:
+/// e0 <= 1.5 2^-12, 2.25 2^-24), 1 - x r0 is one fma (its rounding is u e0: negligible) and the
+/// last fma rounds once more (u): 1.06 u (AVX-512), 3.3 u = 2.0e-7 (AVX); published 2.5e-7.
+/// Elsewhere 1/x, correctly rounded (u). tests/fast_math.test.cpp measures it over dense sweeps.
+template <class T> inline constexpr double reciprocal_max_rel = sizeof(T) == 4 ? 2.5e-7 : 1.2e-16;
+
+/// Fast 1/x for a positive normal x (the caller has checked, or selects the other lanes away):
+///   r1 = r0 + r0 (1 - x r0),   r0 the hardware estimate (float SIMD lanes; see detail/fast_lanes.hpp),
+/// relative error reciprocal_max_rel<T>; scalars and other lanes: 1/x. Edge: other x (0, inf,
+/// subnormal, negative, NaN) give an unspecified value, maybe NaN (no guards: that is the point).
+/// Exact twin: 1 / x.
+template <class V>
+PHONG_HD constexpr V reciprocal_normal(V x)
+{
+    if constexpr (requires { lanes<V>::reciprocal_normal(x); }) return lanes<V>::reciprocal_normal(x);
+    else return V(scalar_t<V>(1)) / x;
+}
+
 /// Relative error bound of fast::rsqrt for a positive normal x: an estimate with relative error
 /// e0 <= 1.5 2^-12 (SSE rsqrtss/rsqrtps, the coarsest used) refined by one Newton step has
 /// 1.5 e0^2 = 2.0e-7, plus the step's roundings (<= 2.5 2^-24 = 1.5e-7): 3.5e-7, published 4e-7.
