@@ -328,7 +328,8 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 }
 
 /// Blinn's specular term in the fast mode on SIMD lanes with an integer shininess n >= 1
-/// (integer_exponent), l = d / |d| with inv = 1/|d| and nl = n.l given (0 where the pair is off):
+/// (integer_exponent), l = d / |d| with inv = 1/|d| and nl = n.l given (0 where the pair is off;
+/// on: the lit lanes, the point's sees_viewer is read here):
 ///   h = d inv + v (one fma per component), hh = |h|^2, n.h = (n.l + n.v) / |h|,
 ///   n even: (n.h)^n = ((n.l + n.v)^2 / hh)^(n/2), 1/hh by fast::reciprocal_normal: no square
 ///           root, one squaring fewer; the base's error, as a cosine's, is that of n.l + n.v plus
@@ -344,7 +345,9 @@ PHONG_HD constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light&
                                                   const surface_frame<T, Q>& s, const integer_exponent<T>& m, mask_t<T> on)
 {
     using S = scalar_t<T>;
-    const T numerator = nl + s.nv; // n.(l + v)
+    // n.(l + v); a point without a view vector (sees_viewer off: no specular term) takes -inf,
+    // so that its numerator is not positive (the select is once per step: it does not depend on the light)
+    const T numerator = nl + phong::select(s.sees_viewer, s.nv, T(-std::numeric_limits<S>::infinity()));
     const mask_t<T> positive = math_traits<T>::both(on, numerator > T(0));
     if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
     const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, s.view.x), math_traits<T>::fma(d.y, inv, s.view.y),
@@ -421,7 +424,7 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
         add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none &&
                          std::is_same_v<Exponent, integer_exponent<T>>) {
-        add_halfway_specular_fast(sums, L, f, phong::select(on, nl, T(0)), inv, d, s, m, specular_on);
+        add_halfway_specular_fast(sums, L, f, phong::select(on, nl, T(0)), inv, d, s, m, on);
     } else if constexpr (F.specular == specular_model::blinn) {
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)

@@ -60,7 +60,9 @@ struct lanes<xsimd::batch<T, A>> {
 private:
     static V newton_reciprocal(const V& x, const V& r0)
     {
-        return math_traits<V>::fma(r0, math_traits<V>::fma(-x, r0, V(T(1))), r0); // r0 + r0 (1 - x r0)
+        // r0 + r0 (1 - x r0); -0 - x is -x exactly (xsimd's unary minus is 0 - x, which the
+        // compiler may not fold into a negated fma)
+        return math_traits<V>::fma(r0, math_traits<V>::fma(V(T(-0.0)) - x, r0, V(T(1))), r0);
     }
 };
 
