@@ -34,6 +34,9 @@ struct surface_frame {
     /// where a subtraction takes a load and a subtract (x - y and x + (-y) are the same IEEE
     /// operation: the same bits, signed zeros and NaN included).
     glm::vec<3, T, Q> minus_position = glm::vec<3, T, Q>(T(0));
+    /// SIMD lanes with Blinn: n.v where sees_viewer, else -inf, so that the fast route's
+    /// n.l + n.v is not positive where there is no view vector (add_halfway_specular_fast: no mask per pair)
+    T nv_seen = T(0);
 };
 
 /// x unchanged, hidden from the compiler's algebra (GCC and Clang, SIMD lanes): an x + (-y)
@@ -186,8 +189,11 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     vec3 minus_position(T(0));
     if constexpr (!std::is_floating_point_v<T>)
         minus_position = vec3(opaque_lanes(T(-0.0f) - position.x), opaque_lanes(T(-0.0f) - position.y), opaque_lanes(T(-0.0f) - position.z));
+    T nv_seen = T(0);
+    if constexpr (!std::is_floating_point_v<T> && F.specular == specular_model::blinn)
+        nv_seen = phong::select(v.ok, nv, T(-std::numeric_limits<scalar_t<T>>::infinity()));
     return {vec3(position.x, position.y, position.z), vec3(unit_normal.x, unit_normal.y, unit_normal.z),
-            vec3(v.unit.x, v.unit.y, v.unit.z), defined, v.ok, poison, nv, minus_position};
+            vec3(v.unit.x, v.unit.y, v.unit.z), defined, v.ok, poison, nv, minus_position, nv_seen};
 }
 
 /// Whether a pair is lit, from dd = |d|^2 and nd = n.d (d = L.xyz - w Q): the light has a
@@ -345,9 +351,9 @@ PHONG_HD constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light&
                                                   const surface_frame<T, Q>& s, const integer_exponent<T>& m, mask_t<T> on)
 {
     using S = scalar_t<T>;
-    // n.(l + v); a point without a view vector (sees_viewer off: no specular term) takes -inf,
-    // so that its numerator is not positive (the select is once per step: it does not depend on the light)
-    const T numerator = nl + phong::select(s.sees_viewer, s.nv, T(-std::numeric_limits<S>::infinity()));
+    // n.(l + v); a point without a view vector (sees_viewer off: no specular term) has
+    // nv_seen = -inf, so that its numerator is not positive
+    const T numerator = nl + s.nv_seen;
     const mask_t<T> positive = math_traits<T>::both(on, numerator > T(0));
     if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
     const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, s.view.x), math_traits<T>::fma(d.y, inv, s.view.y),
