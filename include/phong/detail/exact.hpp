@@ -47,7 +47,11 @@ PHONG_HD inline T opaque_lanes(T x)
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
     if constexpr (requires { typename T::register_type; }) {
         typename T::register_type r = x;
-        __asm__("" : "+v"(r));
+#  if defined(__AVX512F__)
+        __asm__("" : "+v"(r)); // any vector register, xmm/ymm/zmm 0-31
+#  else
+        __asm__("" : "+x"(r));
+#  endif
         return T(r);
     }
 #endif
