@@ -18,6 +18,20 @@
 
 namespace phong::detail::exact {
 
+/// The per-point frame's fields for SIMD lanes only (empty for scalars, whose frame stays five
+/// fields):
+///  - minus_position: -Q, exactly (hidden from the compiler, opaque_lanes), so that the light
+///    loop forms d = L.xyz - Q as L.xyz + (-Q), one add with the light's coordinate read from
+///    memory, where a subtraction takes a load and a subtract (x - y and x + (-y) are the same
+///    IEEE operation: the same bits, signed zeros and NaN included);
+///  - nv_seen (Blinn): n.v where sees_viewer, else -inf, so that the fast route's n.l + n.v is not
+///    positive where there is no view vector (add_halfway_specular_fast: no mask per pair).
+template <class T, glm::qualifier Q, bool Lanes = !std::is_floating_point_v<T>> struct lanes_frame {};
+template <class T, glm::qualifier Q> struct lanes_frame<T, Q, true> {
+    glm::vec<3, T, Q> minus_position = glm::vec<3, T, Q>(T(0));
+    T nv_seen = T(0);
+};
+
 /// Per-point quantities, computed once and shared by every light (five fields: a compiler
 /// keeps them in registers across the light loop).
 template <class T, glm::qualifier Q>
@@ -29,14 +43,7 @@ struct surface_frame {
     mask_t<T> sees_viewer;      ///< the view vector exists (not at the eye, not a zero given v): specular can be on
     T poison;                   ///< 0, or NaN when the point's inputs are not finite
     T nv = T(0);                ///< with a specular term: n.v
-    /// SIMD lanes: -Q, exactly (hidden from the compiler, opaque_lanes), so that the light loop
-    /// forms d = L.xyz - Q as L.xyz + (-Q), one add with the light's coordinate read from memory,
-    /// where a subtraction takes a load and a subtract (x - y and x + (-y) are the same IEEE
-    /// operation: the same bits, signed zeros and NaN included).
-    glm::vec<3, T, Q> minus_position = glm::vec<3, T, Q>(T(0));
-    /// SIMD lanes with Blinn: n.v where sees_viewer, else -inf, so that the fast route's
-    /// n.l + n.v is not positive where there is no view vector (add_halfway_specular_fast: no mask per pair)
-    T nv_seen = T(0);
+    [[no_unique_address]] lanes_frame<T, Q> lanes = {}; ///< SIMD lanes: see lanes_frame
 };
 
 /// x unchanged, hidden from the compiler's algebra (GCC and Clang, SIMD lanes): an x + (-y)
@@ -190,14 +197,14 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     T nv = T(0);
     if constexpr (F.specular != specular_model::none) nv = phong::dot(unit_normal, v.unit);
     // Built from components: copied whole, g++ moved the vectors through the stack.
-    vec3 minus_position(T(0));
-    if constexpr (!std::is_floating_point_v<T>)
-        minus_position = vec3(opaque_lanes(T(-0.0f) - position.x), opaque_lanes(T(-0.0f) - position.y), opaque_lanes(T(-0.0f) - position.z));
-    T nv_seen = T(0);
-    if constexpr (!std::is_floating_point_v<T> && F.specular == specular_model::blinn)
-        nv_seen = phong::select(v.ok, nv, T(-std::numeric_limits<scalar_t<T>>::infinity()));
+    lanes_frame<T, Q> lanes{};
+    if constexpr (!std::is_floating_point_v<T>) {
+        lanes.minus_position = vec3(opaque_lanes(T(-0.0f) - position.x), opaque_lanes(T(-0.0f) - position.y), opaque_lanes(T(-0.0f) - position.z));
+        if constexpr (F.specular == specular_model::blinn)
+            lanes.nv_seen = phong::select(v.ok, nv, T(-std::numeric_limits<scalar_t<T>>::infinity()));
+    }
     return {vec3(position.x, position.y, position.z), vec3(unit_normal.x, unit_normal.y, unit_normal.z),
-            vec3(v.unit.x, v.unit.y, v.unit.z), defined, v.ok, poison, nv, minus_position, nv_seen};
+            vec3(v.unit.x, v.unit.y, v.unit.z), defined, v.ok, poison, nv, lanes};
 }
 
 /// Whether a pair is lit, from dd = |d|^2 and nd = n.d (d = L.xyz - w Q): the light has a
@@ -357,7 +364,7 @@ PHONG_HD constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light&
     using S = scalar_t<T>;
     // n.(l + v); a point without a view vector (sees_viewer off: no specular term) has
     // nv_seen = -inf, so that its numerator is not positive
-    const T numerator = nl + s.nv_seen;
+    const T numerator = nl + s.lanes.nv_seen;
     const mask_t<T> positive = math_traits<T>::both(on, numerator > T(0));
     if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
     const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, s.view.x), math_traits<T>::fma(d.y, inv, s.view.y),
@@ -385,7 +392,7 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     decltype(auto) p = position_of(L);
     vec3 d;
     if constexpr (F.lights == light_kind::positional && !std::is_floating_point_v<T>)
-        d = vec3(T(p.x), T(p.y), T(p.z)) + s.minus_position; // L.xyz - Q, the same bits (see surface_frame)
+        d = vec3(T(p.x), T(p.y), T(p.z)) + s.lanes.minus_position; // L.xyz - Q, the same bits (see lanes_frame)
     else d = detail::homogeneous_difference<F.lights>(vec3(T(p.x), T(p.y), T(p.z)), w, s.position);
     const T dd = phong::dot(d, d);
     const T nd = phong::dot(s.normal, d);
@@ -426,10 +433,9 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     // Phong with the fast integer power (n >= 1): a point without a view vector has v = 0, so its
     // cosine 2 (n.d)(n.v) - d.v is 0 and its power 0 (or v NaN: a poisoned point, cosine not > 0):
     // no test of sees_viewer per pair.
-    [[maybe_unused]] const mask_t<T> specular_on = [&] {
-        if constexpr (F.specular == specular_model::phong && std::is_same_v<Exponent, integer_exponent<T>>) return on;
-        else return math_traits<T>::both(on, s.sees_viewer);
-    }();
+    [[maybe_unused]] mask_t<T> specular_on;
+    if constexpr (F.specular == specular_model::phong && std::is_same_v<Exponent, integer_exponent<T>>) specular_on = on;
+    else specular_on = math_traits<T>::both(on, s.sees_viewer);
     if constexpr (F.specular == specular_model::phong) {
         add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none &&
