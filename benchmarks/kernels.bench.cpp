@@ -3,7 +3,8 @@
 // fast mode's approximations (phong/fast_math.hpp) beside their exact twins: fast::pow_unit against
 // phong::pow_unit, fast::pow_integer likewise (exponents 1..64 in turn), fast::rsqrt against
 // phong::rsqrt (bound counter: their published constants; the fast power's error over results
-// >= 2^-24, where its relative bound holds).
+// >= 2^-24, where its relative bound holds); on this build's widest SIMD lanes, fast::rsqrt and
+// fast::reciprocal_normal against 1 / sqrt(x) and 1 / x on the same lanes (rows kernel.lanes_*).
 // Time per call over 65536 (x, m) pairs of the lighting model's range (x in (0, 1], a third of them
 // within 1e-3 of 1 as near a highlight; m in [1, 200] and up to 1e4), and the error of every result
 // in T's normal range against pow in the __float128 reference type (tests/support/wide.hpp).
@@ -14,6 +15,7 @@
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
+#include <phong/batch.hpp> // first: its pragmas cover the intrinsics headers (the SIMD rows)
 #include <phong/fast_math.hpp>
 #include <phong/math.hpp>
 
@@ -132,6 +134,43 @@ void rsqrt_row(benchmark::State& state)
     state.counters["N"] = double(n_pairs);
 }
 
+#if PHONG_HAS_XSIMD
+/// 1/sqrt(x) or 1/x over the rsqrt rows' x, on SIMD lanes (phong::simd_batch<T>: AVX-512 with
+/// -march=native here), one call per lane batch; ns per item. Fast: fast::rsqrt /
+/// fast::reciprocal_normal (estimate + Newton); else the exact twin, 1 / sqrt(x) or 1 / x.
+template <class T, bool Reciprocal, bool Fast>
+void lanes_row(benchmark::State& state)
+{
+    using V = phong::simd_batch<T>;
+    std::vector<T> x(n_pairs), out(n_pairs);
+    for (std::size_t i = 0; i < n_pairs; ++i) x[i] = T(std::pow(10.0, -4 + 8 * uniform(3001, i, 0)));
+    for (auto _ : state) {
+        for (std::size_t i = 0; i + V::size <= n_pairs; i += V::size) {
+            const V v = V::load_unaligned(x.data() + i);
+            V r;
+            if constexpr (Reciprocal) r = Fast ? phong::fast::reciprocal_normal(v) : V(T(1)) / v;
+            else r = Fast ? phong::fast::rsqrt(v) : V(T(1)) / xsimd::sqrt(v);
+            r.store_unaligned(out.data() + i);
+        }
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    double max_rel = 0;
+    for (std::size_t i = 0; i < n_pairs; ++i) {
+        const phong_test::wide xi(x[i]);
+        const phong_test::wide ref = Reciprocal ? 1 / xi : 1 / phong_test::wsqrt(xi);
+        max_rel = std::max(max_rel, phong_test::error_rel(out[i], ref));
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(n_pairs));
+    state.counters["ns_per_pair"] = benchmark::Counter(double(state.iterations()) * double(n_pairs) * 1e-9,
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["max_rel_err"] = max_rel;
+    state.counters["bound"] = !Fast ? -1 : Reciprocal ? phong::fast::reciprocal_max_rel<T> : phong::fast::rsqrt_max_rel<T>;
+    state.counters["K"] = 1;
+    state.counters["N"] = double(n_pairs);
+}
+#endif
+
 const bool registered = [] {
     const std::string tail = "/typical/K:1/N:" + std::to_string(n_pairs);
     benchmark::RegisterBenchmark(("kernel.pow_unit.float" + tail).c_str(), power_row<float, power_kernel::phong>);
@@ -146,6 +185,12 @@ const bool registered = [] {
     benchmark::RegisterBenchmark(("kernel.fast_rsqrt.float" + tail).c_str(), rsqrt_row<float, true>);
     benchmark::RegisterBenchmark(("kernel.rsqrt.double" + tail).c_str(), rsqrt_row<double, false>);
     benchmark::RegisterBenchmark(("kernel.fast_rsqrt.double" + tail).c_str(), rsqrt_row<double, true>);
+#if PHONG_HAS_XSIMD
+    benchmark::RegisterBenchmark(("kernel.lanes_rsqrt.float" + tail).c_str(), lanes_row<float, false, false>);
+    benchmark::RegisterBenchmark(("kernel.lanes_fast_rsqrt.float" + tail).c_str(), lanes_row<float, false, true>);
+    benchmark::RegisterBenchmark(("kernel.lanes_reciprocal.float" + tail).c_str(), lanes_row<float, true, false>);
+    benchmark::RegisterBenchmark(("kernel.lanes_fast_reciprocal_normal.float" + tail).c_str(), lanes_row<float, true, true>);
+#endif
     return true;
 }();
 

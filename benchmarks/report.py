@@ -198,12 +198,13 @@ def main():
                 w(f"| {bname} | {hname} | " + " | ".join(cells) + " |")
         w("")
 
-    # Scalar kernels beside what a user would call instead.
+    # Kernels beside what a user would call instead (scalar, and on SIMD lanes).
     kernels = sorted({k[0] for k in rows if k[0].startswith("kernel.")}, key=lambda v: (v.split(".")[2], v))
     if kernels:
-        w("## Scalar kernels (65536 calls over the model's range of x and m)\n")
-        w("`phong::pow_unit` against `std::pow` (`benchmarks/kernels.bench.cpp`); errors against pow in "
-          "__float128 over the results in the type's normal range.\n")
+        w("## Kernels (65536 items over the model's range of x and m)\n")
+        w("`phong::pow_unit` against `std::pow`, the fast mode's approximations against their exact twins, "
+          "scalar and (rows `kernel.lanes_*`) on this build's widest SIMD lanes (`benchmarks/kernels.bench.cpp`); "
+          "errors against the __float128 reference over the results in the type's normal range.\n")
         w("| kernel | ns / call | max_rel_err | p99_ulp | max_ulp | NaN |")
         w("|---|---:|---:|---:|---:|---:|")
         for v in kernels:

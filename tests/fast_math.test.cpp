@@ -209,3 +209,57 @@ TEST_CASE_TEMPLATE("fast::rsqrt on SIMD lanes: within rsqrt_max_rel, edges", T, 
     CHECK(out[0] == T(0));
 }
 #endif
+
+/// fast::reciprocal_normal over [1, 2) densely (the estimate's error repeats every binade), and at
+/// the ends of the normal range: within reciprocal_max_rel of 1/x (long double), scalars (1/x
+/// itself) and SIMD lanes (AVX-512 rcp14, AVX2 rcp + one Newton step; the derivation beside the
+/// constant gives 1.06 u and 3.3 u).
+TEST_CASE_TEMPLATE("fast::reciprocal_normal: within reciprocal_max_rel of 1/x, scalars and lanes", T, float, double)
+{
+    const T ends[] = {std::numeric_limits<T>::min(), T(1e-30), T(3e7), std::numeric_limits<T>::max() / T(4)};
+    double worst = 0;
+    for (int i = 0; i < (1 << 16); ++i) {
+        const T x = T(1) + T(i) / T(1 << 16);
+        worst = std::max(worst, double(std::fabs(W(phong::fast::reciprocal_normal(x)) * W(x) - 1)));
+    }
+    for (T x : ends) worst = std::max(worst, double(std::fabs(W(phong::fast::reciprocal_normal(x)) * W(x) - 1)));
+    MESSAGE("fast::reciprocal_normal, scalar: max relative error ", worst);
+    CHECK(worst <= phong::fast::reciprocal_max_rel<T>);
+#if PHONG_HAS_XSIMD
+    using V = phong::simd_batch<T>;
+    constexpr std::size_t n = V::size;
+    alignas(64) T in[64], out[64];
+    double worst_lanes = 0;
+    const int steps = 1 << 20;
+    for (int i = 0; i < steps; i += int(n)) {
+        for (std::size_t k = 0; k < n; ++k) in[k] = T(1) + T(i + int(k)) / T(steps); // [1, 2)
+        if (i == 0) for (std::size_t k = 0; k < 4 && k < n; ++k) in[k] = ends[k];
+        phong::fast::reciprocal_normal(V::load_unaligned(in)).store_unaligned(out);
+        for (std::size_t k = 0; k < n; ++k) worst_lanes = std::max(worst_lanes, double(std::fabs(W(out[k]) * W(in[k]) - 1)));
+    }
+    MESSAGE("fast::reciprocal_normal, ", n, " lanes: max relative error ", worst_lanes);
+    CHECK(worst_lanes <= phong::fast::reciprocal_max_rel<T>);
+#endif
+}
+
+/// plan_pow_integer: the schedule written out by hand for a few n (n = 2^k: a chain of k
+/// squarings; 45 = 101101b: 5 squarings, multiplications after the 2nd, 4th and 5th, the bits
+/// 01101 below the top one), and pow_integer(x, plan) the same bits as pow_integer(x, n).
+TEST_CASE("fast::plan_pow_integer: the schedule of n's bits")
+{
+    using phong::fast::plan_pow_integer;
+    CHECK(plan_pow_integer(0).chain == 0u);
+    CHECK(plan_pow_integer(1).chain == 1u);
+    CHECK(plan_pow_integer(1).squarings == 0u);
+    CHECK(plan_pow_integer(32).chain == 6u);
+    CHECK(plan_pow_integer(32).squarings == 5u);
+    CHECK(plan_pow_integer(32).multiplies == 0u);
+    CHECK(plan_pow_integer(64).chain == 7u);
+    CHECK(plan_pow_integer(45).chain == 8u);
+    CHECK(plan_pow_integer(45).squarings == 5u);
+    CHECK(plan_pow_integer(45).multiplies == 13u);
+    CHECK(plan_pow_integer(3).multiplies == 1u);
+    CHECK(phong::fast::pow_integer(0.5f, plan_pow_integer(45)) == std::ldexp(1.0f, -45)); // powers of two: exact
+    CHECK(phong::fast::pow_integer(3.0f, plan_pow_integer(5)) == 243.0f); // 3^5, exact in float
+    static_assert(plan_pow_integer(16).chain == 5u && phong::fast::pow_integer(2.0, plan_pow_integer(10)) == 1024.0); // constexpr
+}

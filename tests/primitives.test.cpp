@@ -13,6 +13,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
+#include <vector>
 
 namespace {
 
@@ -191,6 +193,9 @@ TEST_CASE_TEMPLATE("primitives: a ray aimed at a surface point hits no later tha
         const ld out = ld(*rc::gen::inRange(1, 33)) / 8, dz = ld(*rc::gen::inRange(-16, 17)) / 32;
         const lvec3 S(X.x + out * std::cos(ph), X.y + out * std::sin(ph), X.z + dz);
         RC_PRE(S.z < 0 || S.z > 1 || wall_f(S, s) > ld(0.01)); // outside (the wall may slant over S)
+        // Not on the wall's extension either: from there a cone's ray (dz = -out, s = 0) runs in
+        // the surface itself, touches the base's rim and grazes the wall: no hit is as right as any.
+        RC_PRE(std::abs(wall_f(S, s)) > ld(0.01));
         const vec3<T> sS = narrow<T>(S), c = narrow<T>(X - S);
         const auto h = phong::ray_tapered_cylinder(sS, c, T(s));
         RC_ASSERT(bool(h));
@@ -254,6 +259,98 @@ TEST_CASE_TEMPLATE("primitives: ray_sphere with vectors whose squares overflow",
     // Away from the sphere: no hit; an inf component: no hit.
     CHECK_FALSE(static_cast<bool>(phong::ray_sphere(vec3<T>(x, 0, 0), vec3<T>(x, 0, 0))));
     CHECK_FALSE(static_cast<bool>(phong::ray_sphere(vec3<T>(0), vec3<T>(std::numeric_limits<T>::infinity(), 0, 0))));
+}
+
+/// The tapered cylinder's first hit after t = 0 of S + t c in the reference's wide type
+/// (__float128 where available), from the formulas written out (wall: |(x, y)| = 1 + (s - 1) z,
+/// 0 <= z <= 1, by the textbook quadratic; base z = 0, |(x, y)| <= 1; cap z = 1, |(x, y)| <= s),
+/// and how far it lies from a rim (closer, a perturbation of the ray may change the part hit).
+struct tapered_reference {
+    phong_test::wide t = std::numeric_limits<ld>::infinity();
+    primitive_part part = primitive_part::none;
+    phong_test::wide rim_distance = std::numeric_limits<ld>::infinity();
+};
+tapered_reference tapered_first_hit(const phong_test::wvec3& S, const phong_test::wvec3& c, phong_test::wide s)
+{
+    using phong_test::wide;
+    using phong_test::wsqrt;
+    tapered_reference r;
+    const auto consider = [&](wide t, primitive_part part, wide rim) {
+        if (t > 0 && t < r.t) r = {t, part, rim};
+    };
+    const wide k = s - 1;
+    const wide a = c.x * c.x + c.y * c.y - k * k * c.z * c.z;
+    const wide b = 2 * (S.x * c.x + S.y * c.y - (1 + k * S.z) * k * c.z);
+    const wide cc = S.x * S.x + S.y * S.y - (1 + k * S.z) * (1 + k * S.z);
+    const wide disc = b * b - 4 * a * cc;
+    if (disc >= 0 && a != 0)
+        for (const wide t : {(-b - wsqrt(disc)) / (2 * a), (-b + wsqrt(disc)) / (2 * a)}) {
+            const wide z = S.z + t * c.z;
+            if (z >= 0 && z <= 1) consider(t, primitive_part::wall, phong_test::wmin(z, 1 - z));
+        }
+    for (const auto& [z0, radius, part] : {std::tuple{wide(0), wide(1), primitive_part::base}, std::tuple{wide(1), s, primitive_part::cap}}) {
+        if (c.z == 0) continue;
+        const wide t = (z0 - S.z) / c.z, x = S.x + t * c.x, y = S.y + t * c.y;
+        const wide rho = wsqrt(x * x + y * y);
+        if (rho <= radius) consider(t, part, radius - rho);
+    }
+    return r;
+}
+
+TEST_CASE_TEMPLATE("primitives: ray_tapered_cylinder from far away keeps its digits", T, float, double)
+{
+    // Rays from a distance D onto the wall, at most 60 degrees off its outward normal, against
+    // the long double reference on the same (rounded) S and c. Solved at a far S, B^2 and A C
+    // (~D^2) cancelled down to the discriminant: float lost the hit's digits from D ~ 10 on
+    // (1.5 % of t at D = 100) and missed hits from D ~ 1e3. The hit is now found to within the
+    // rounding of a point of the ray near the object, a few eps D: |t - t_ref| <= 64 eps (t + 1)
+    // off the rims.
+    const T eps = std::numeric_limits<T>::epsilon();
+    std::vector<ld> distances{4, 10, 100, 1e3, 1e4};
+    // The reference's own cancellation, ~2^-digits D^2, must stay far below double's tolerance.
+    if (sizeof(T) == 8 && phong_test::wide_digits >= 113) distances.insert(distances.end(), {1e5, 1e6});
+    int compared = 0;
+    for (const ld s : {ld(0.5), ld(1), ld(0), ld(1.5)})
+        for (const ld D : distances)
+            for (int i = 0; i < 64; ++i) {
+                const ld z = ld(1 + i % 7) / 8, ph = ld(i) * 2 * pi / 64 + ld(0.1);
+                const ld w = 1 + (s - 1) * z;
+                const lvec3 X(w * std::cos(ph), w * std::sin(ph), z);
+                const lvec3 m = lvec3(std::cos(ph), std::sin(ph), -(s - 1)) / std::sqrt(1 + (s - 1) * (s - 1)); // outward unit normal
+                const lvec3 tilt = lvec3(-std::sin(ph), std::cos(ph), 0) * ((ld(i % 5) - 2) / 4) + lvec3(0, 0, (ld(i % 3) - 1) / 4);
+                const lvec3 u = (m + tilt) / llen(m + tilt); // cos(u, m) >= 0.6
+                const vec3<T> S = narrow<T>(X + u * D), c = narrow<T>(-u);
+                const tapered_reference want = tapered_first_hit(phong_test::widen(S), phong_test::widen(c), s);
+                CAPTURE(s);
+                CAPTURE(D);
+                CAPTURE(i);
+                REQUIRE(want.part != primitive_part::none);
+                if (want.rim_distance < ld(0.01)) continue; // a perturbation of the ray may change the part
+                const auto h = phong::ray_tapered_cylinder(S, c, T(s));
+                CHECK(h.part == want.part);
+                CHECK(std::abs(ld(h.t) - ld(want.t)) <= 64 * ld(eps) * (ld(want.t) + 1));
+                ++compared;
+            }
+    CHECK(compared > 1000);
+}
+
+TEST_CASE_TEMPLATE("primitives: ray_tapered_cylinder with vectors whose squares overflow", T, float, double)
+{
+    const T x = sizeof(T) == 4 ? T(1e20) : T(1e160); // |x|^2 overflows T
+    const T eps = std::numeric_limits<T>::epsilon();
+    // From (x, 0, 1/2) toward -x: the wall of s = 1/2 has radius 3/4 at z = 1/2, t = x - 3/4,
+    // which is x in T (by hand). It was a miss: B^2 - A C = inf - inf.
+    const auto h1 = phong::ray_tapered_cylinder(vec3<T>(x, 0, T(0.5)), vec3<T>(-1, 0, 0), T(0.5));
+    CHECK(h1.part == primitive_part::wall);
+    CHECK(std::abs(h1.t / x - T(1)) <= 2 * eps);
+    CHECK_FALSE(static_cast<bool>(phong::ray_tapered_cylinder(vec3<T>(x, 0, T(0.5)), vec3<T>(-1, 0, 0), T(0.5), 2 * x)));
+    // From (5, 0, 1/2) along a huge c = (-x, 0, 0): t = 4.25 / x (4.25 for a unit c, as by hand above).
+    const auto h2 = phong::ray_tapered_cylinder(vec3<T>(5, 0, T(0.5)), vec3<T>(-x, 0, 0), T(0.5));
+    CHECK(h2.part == primitive_part::wall);
+    CHECK(std::abs(h2.t * x / T(4.25) - T(1)) <= 4 * eps);
+    // Pointing away, and an inf component: no hit.
+    CHECK_FALSE(static_cast<bool>(phong::ray_tapered_cylinder(vec3<T>(x, 0, T(0.5)), vec3<T>(1, 0, 0), T(0.5))));
+    CHECK_FALSE(static_cast<bool>(phong::ray_tapered_cylinder(vec3<T>(5, 0, T(0.5)), vec3<T>(-std::numeric_limits<T>::infinity(), 0, 0), T(0.5))));
 }
 
 TEST_CASE("primitives: constant evaluation")

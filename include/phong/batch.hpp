@@ -1145,11 +1145,12 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
     };
     if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) {
         // One integer shininess in every lane (a shared material, or a step of equal ones):
-        // the fast power by binary powering, decided here once rather than per pair.
+        // the fast power by binary powering, its schedule made here once rather than per pair
+        // (n >= 1; m = 0, pow(0, 0) = 1 on every lane that is on, takes lane_shininess below).
         const T m0 = mat.shininess.get(0);
-        if (m0 >= T(0) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
+        if (m0 >= T(1) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
             math_traits<V>::all(mat.shininess == V(m0)))
-            return run(exact::integer_exponent<V>{unsigned(m0)});
+            return run(exact::integer_exponent<V>::of(unsigned(m0)));
     }
     if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
         run(shininess_lanes(mat.shininess)); // m == 0 tested once

@@ -149,39 +149,97 @@ PHONG_HD constexpr V pow_unit(V x, V m)
 inline constexpr unsigned pow_integer_max_exponent = 64;
 
 /// Relative error bound of fast::pow_integer in T's arithmetic (u = T's unit roundoff, 2^-24 for
-/// float): x^n by binary powering is a product of squares b_i = x^(2^i), each squaring doubling its
-/// operand's relative error and adding one rounding, so b_i carries at most (2^i - 1) u, and the
-/// product of the b_i of n's set bits, one rounding per multiplication after the first (1 * b is
-/// exact), at most (n - popcount(n)) u + (popcount(n) - 1) u = (n - 1) u, first order (n u < 4e-6).
+/// float): x^n by left-to-right binary powering (the bits of n from the top: square, then
+/// multiply by x where the bit is set). With e_k the relative error of the partial power x^k
+/// (e_1 = 0), a squaring gives e_2k <= 2 e_k + u and a multiplication by the exact x gives
+/// e_(k+1) <= e_k + u, so by induction e_k <= (k - 1) u, first order (n u < 4e-6).
 /// For n <= pow_integer_max_exponent: 63 u = 3.8e-6 in float, within pow_unit_max_rel (so the fast
 /// mode's bounds, phong/accuracy.hpp, hold unchanged). Results below T's smallest normal number
 /// are subnormal or 0 (absolute error below 2^-126). tests/fast_math.test.cpp checks it against
 /// long double pow for every n in [0, 64].
 template <class T> inline constexpr double pow_integer_max_rel = double(pow_integer_max_exponent - 1) * std::numeric_limits<scalar_t<T>>::epsilon() / 2;
 
+/// fast::pow_integer's schedule for one exponent n, made once where n is the same for many
+/// powers (shade_batch: once per call): the squarings and the multiplications by x that follow
+/// them, from n's bits. chain: 0 for n = 0 (x^0 = 1), 1 + squarings where n is a power of two
+/// (squarings only: pow_integer runs them without a test per step), else 8.
+struct pow_integer_plan {
+    unsigned squarings = 0;  ///< floor(log2 n) (0 for n = 0 and 1)
+    unsigned multiplies = 0; ///< n's bits below its top bit: bit i set, multiply by x after the squaring that leaves i to go
+    unsigned chain = 0;      ///< 0: n = 0; 1 to 7: n = 2^(chain - 1); 8: any other n
+};
+
+/// The schedule of x^n for n in [0, pow_integer_max_exponent] (larger n: squarings up to 31, see
+/// pow_integer's precondition).
+PHONG_HD constexpr pow_integer_plan plan_pow_integer(unsigned n)
+{
+    pow_integer_plan plan;
+    if (n == 0) return plan;
+    while ((n >> plan.squarings) > 1u) ++plan.squarings;
+    plan.multiplies = n - (1u << plan.squarings);
+    plan.chain = plan.multiplies == 0 && plan.squarings <= 6 ? plan.squarings + 1 : 8;
+    return plan;
+}
+
+/// Fast x^n with n's schedule given (plan_pow_integer(n)): see pow_integer(x, n) below. A power
+/// of two n <= 64 is a chain of squarings entered at its length (one jump, no test per squaring).
+template <class V>
+PHONG_HD constexpr V pow_integer(V x, const pow_integer_plan& plan)
+{
+    using S = scalar_t<V>;
+    V power = x;
+    switch (plan.chain) {
+    case 0: return V(S(1)); // pow(0, 0) = 1
+    case 7: power = power * power; [[fallthrough]];
+    case 6: power = power * power; [[fallthrough]];
+    case 5: power = power * power; [[fallthrough]];
+    case 4: power = power * power; [[fallthrough]];
+    case 3: power = power * power; [[fallthrough]];
+    case 2: power = power * power; [[fallthrough]];
+    case 1: return power;
+    default: break;
+    }
+    for (unsigned i = plan.squarings; i-- > 0;) { // left to right: the bits below n's top one
+        power = power * power;
+        if ((plan.multiplies >> i) & 1u) power = power * x;
+    }
+    return power;
+}
+
 /// Fast x^n for a base x in [0, 1] and an integer exponent n in [0, pow_integer_max_exponent]:
-///   x^n = prod_{bit i of n set} x^(2^i)   (binary powering: floor(log2 n) squarings and
-///   popcount(n) - 1 multiplications; 5 squarings for n = 32, against the two polynomials of
+///   x^n by left-to-right binary powering (floor(log2 n) squarings and popcount(n) - 1
+///   multiplications by x; 5 squarings for n = 32, against the two polynomials of
 ///   fast::pow_unit). n is one value for every lane. The fast mode's SIMD lanes take it where the
 ///   shininess is such an integer (shade_batch with one material: Blinn-Phong exponents are
-///   usually small integers), else fast::pow_unit's kernels.
+///   usually small integers), with the schedule made once per call (pow_integer_plan), else
+///   fast::pow_unit's kernels.
 /// Error: relative pow_integer_max_rel<T>. Edge: n = 0 gives 1 for every x (pow(0, 0) = 1); x = 0
 /// gives 0 for n > 0; x = 1 gives exactly 1. Pre: n <= pow_integer_max_exponent (larger n: the
 /// result is still x^n rounded, but the bound grows as (n - 1) u). Exact twin: phong::pow_unit.
 template <class V>
 PHONG_HD constexpr V pow_integer(V x, unsigned n)
 {
-    using S = scalar_t<V>;
-    V power(S(1));
-    bool first = true; // 1 * b is exact: the first factor is taken as it is
-    for (V square = x; n != 0; n >>= 1) {
-        if (n & 1u) {
-            power = first ? square : power * square;
-            first = false;
-        }
-        if (n > 1u) square = square * square;
-    }
-    return power;
+    return pow_integer(x, plan_pow_integer(n));
+}
+
+/// Relative error bound of fast::reciprocal_normal for a positive normal x. Float SIMD lanes: a
+/// hardware estimate r0 with relative error e0 refined by one Newton step in correction form,
+/// r1 = r0 + r0 (1 - x r0): the step leaves e0^2 (AVX-512 rcp14: e0 < 2^-14, 2^-28; AVX rcp:
+/// e0 <= 1.5 2^-12, 2.25 2^-24), 1 - x r0 is one fma (its rounding is u e0: negligible) and the
+/// last fma rounds once more (u): 1.06 u (AVX-512), 3.3 u = 2.0e-7 (AVX); published 2.5e-7.
+/// Elsewhere 1/x, correctly rounded (u). tests/fast_math.test.cpp measures it over dense sweeps.
+template <class T> inline constexpr double reciprocal_max_rel = sizeof(T) == 4 ? 2.5e-7 : 1.2e-16;
+
+/// Fast 1/x for a positive normal x (the caller has checked, or selects the other lanes away):
+///   r1 = r0 + r0 (1 - x r0),   r0 the hardware estimate (float SIMD lanes; see detail/fast_lanes.hpp),
+/// relative error reciprocal_max_rel<T>; scalars and other lanes: 1/x. Edge: other x (0, inf,
+/// subnormal, negative, NaN) give an unspecified value, maybe NaN (no guards: that is the point).
+/// Exact twin: 1 / x.
+template <class V>
+PHONG_HD constexpr V reciprocal_normal(V x)
+{
+    if constexpr (requires { lanes<V>::reciprocal_normal(x); }) return lanes<V>::reciprocal_normal(x);
+    else return V(scalar_t<V>(1)) / x;
 }
 
 /// Relative error bound of fast::rsqrt for a positive normal x: an estimate with relative error

@@ -139,17 +139,53 @@ PHONG_HD constexpr ray_hit<T> first_after(int count, T t0, T t1, T t_min, primit
     return h;
 }
 
-/// Ray against the disk z = z0, x^2 + y^2 <= radius^2.
+/// Ray S + t c against the disk z = z0, x^2 + y^2 <= radius^2; the hit's time is reported as
+/// t_offset + t (the ray's origin S lies at time t_offset of the caller's ray; 0 + t is t).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_disk(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T z0, T radius, T t_min,
-                                       primitive_part part)
+                                       primitive_part part, T t_offset = T(0))
 {
     if (c.z == T(0)) return {};
     const T t = (z0 - S.z) / c.z;
-    if (!(t > t_min) || t == std::numeric_limits<T>::infinity()) return {};
+    const T t_total = t_offset + t;
+    if (!(t_total > t_min) || t_total == std::numeric_limits<T>::infinity()) return {};
     const T x = S.x + t * c.x, y = S.y + t * c.y;
     if (!(x * x + y * y <= radius * radius)) return {};
-    return {t, part};
+    return {t_total, part};
+}
+
+/// Slab method: the times [enter, leave] during which S + t c lies in the box lo <= P <= hi.
+/// Returns false when the ray's line misses the box, for c = 0 outside it, and for NaN input.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr bool ray_box(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& lo,
+                                const glm::vec<3, T, Q>& hi, T& enter, T& leave)
+{
+    const T inf = std::numeric_limits<T>::infinity();
+    enter = -inf;
+    leave = inf;
+    for (int a = 0; a < 3; ++a) {
+        if (c[a] == T(0)) {
+            if (!(S[a] >= lo[a] && S[a] <= hi[a])) return false;
+            continue;
+        }
+        T t0 = (lo[a] - S[a]) / c[a], t1 = (hi[a] - S[a]) / c[a];
+        if (t0 != t0 || t1 != t1) return false; // NaN input
+        if (t1 < t0) { const T tmp = t0; t0 = t1; t1 = tmp; }
+        enter = phong::max(enter, t0);
+        leave = phong::min(leave, t1);
+    }
+    return enter <= leave;
+}
+
+/// For a direction c whose c.c overflows: the power of two s that brings c's largest component
+/// into [1, 2) (the ray S + t' (c s) is the same ray, t = t' s, exactly but for underflow);
+/// 0 when a component is inf or NaN (no hit).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr T direction_scale(const glm::vec<3, T, Q>& c)
+{
+    constexpr T max = std::numeric_limits<T>::max();
+    if (!(phong::abs(c.x) <= max && phong::abs(c.y) <= max && phong::abs(c.z) <= max)) return T(0);
+    return math_traits<T>::inverse_pow2_scale(phong::max_abs(c));
 }
 
 } // namespace detail
@@ -174,10 +210,8 @@ PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::
     const T a = phong::dot(c, c);
     if (!(a > T(0))) return {}; // c = 0 or NaN
     if (a == std::numeric_limits<T>::infinity()) [[unlikely]] {
-        // c.c overflowed: the ray S + t' (c 2^-e), t = t' 2^-e, with c 2^-e's largest component in [1, 2).
-        constexpr T max = std::numeric_limits<T>::max();
-        if (!(phong::abs(c.x) <= max && phong::abs(c.y) <= max && phong::abs(c.z) <= max)) return {}; // inf
-        const T s = math_traits<T>::inverse_pow2_scale(phong::max_abs(c));
+        const T s = detail::direction_scale(c); // c.c overflowed: the same ray with c s, t = t' s
+        if (s == T(0)) return {};
         const ray_hit<T> h = phong::ray_sphere(S, c * s, t_min / s);
         if (!h || !(h.t * s > t_min)) return {};
         return {h.t * s, h.part};
@@ -224,18 +258,12 @@ PHONG_HD constexpr ray_hit<T> ray_square(const glm::vec<3, T, Q>& S, const glm::
     return h;
 }
 
-/// Ray S + t c against the generic tapered cylinder with small radius s (wall, base and cap):
-///   wall: A t^2 + 2 B t + C = 0 with k = s - 1, w = 1 + k S.z, e = k c.z,
-///         A = cx^2 + cy^2 - e^2, B = Sx cx + Sy cy - w e, C = Sx^2 + Sy^2 - w^2,
-///         a root counts when 0 <= z <= 1 at it;
-///   base: z = 0 with x^2 + y^2 <= 1;  cap: z = 1 with x^2 + y^2 <= s^2.
-/// Returns the nearest hit after t_min and which part it is (wall, base or cap).
-/// Pre: s >= 0 (s < 0 would add the other nappe of the cone). Edge: s = 0 has no cap (a disk of
-/// radius 0 is never hit) and the apex is a wall hit; a ray along a generator line (A = 0) uses
-/// the linear root; c = 0 and NaN give no hit.
+namespace detail {
+/// The tapered cylinder's hits of the ray S + t c, reported at times t_offset + t (see
+/// ray_tapered_cylinder).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s,
-                                                   T t_min = T(0))
+PHONG_HD constexpr ray_hit<T> tapered_cylinder_hits(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s, T t_min,
+                                                    T t_offset)
 {
     const T k = s - T(1);
     const T w = T(1) + k * S.z, e = k * c.z;
@@ -243,15 +271,54 @@ PHONG_HD constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, c
     const T B = S.x * c.x + S.y * c.y - w * e;
     const T C = S.x * S.x + S.y * S.y - w * w;
     T t[2] = {T(0), T(0)};
-    const int n = detail::quadratic_roots(A, B, C, t[0], t[1]);
+    const int n = quadratic_roots(A, B, C, t[0], t[1]);
     ray_hit<T> best;
     for (int i = 0; i < n; ++i) {
         const T z = S.z + t[i] * c.z;
-        if (t[i] > t_min && t[i] < best.t && z >= T(0) && z <= T(1)) best = {t[i], primitive_part::wall};
+        const T t_total = t_offset + t[i];
+        if (t_total > t_min && t_total < best.t && z >= T(0) && z <= T(1)) best = {t_total, primitive_part::wall};
     }
-    best = detail::nearer(best, detail::ray_disk(S, c, T(0), T(1), t_min, primitive_part::base));
-    if (s > T(0)) best = detail::nearer(best, detail::ray_disk(S, c, T(1), s, t_min, primitive_part::cap));
+    best = nearer(best, ray_disk(S, c, T(0), T(1), t_min, primitive_part::base, t_offset));
+    if (s > T(0)) best = nearer(best, ray_disk(S, c, T(1), s, t_min, primitive_part::cap, t_offset));
     return best;
+}
+} // namespace detail
+
+/// Ray S + t c against the generic tapered cylinder with small radius s (wall, base and cap):
+///   wall: A t^2 + 2 B t + C = 0 with k = s - 1, w = 1 + k S.z, e = k c.z,
+///         A = cx^2 + cy^2 - e^2, B = Sx cx + Sy cy - w e, C = Sx^2 + Sy^2 - w^2,
+///         a root counts when 0 <= z <= 1 at it;
+///   base: z = 0 with x^2 + y^2 <= 1;  cap: z = 1 with x^2 + y^2 <= s^2.
+/// Returns the nearest hit after t_min and which part it is (wall, base or cap).
+/// A far origin (outside the bounding box [-R, R]^2 x [0, 1], R = max(1, s), grown by R on every
+/// side) first moves to the box: the ray S' + t' c with S' = S + t_e c, t_e the box's entry time,
+/// t = t_e + t'. Solved at S itself, B^2 and A C (about |S|^2 |c|^2) cancel to the discriminant's
+/// size (|c|^2): float lost a hit's digits from |S| ~ 10 on, missed hits from |S| ~ 1e3, and
+/// overflowed at |S| ~ 1e19. From the box the hit is found to within the rounding of S + t_e c,
+/// a few eps |S| along the ray, the input's own precision. A c whose c.c overflows is scaled by
+/// a power of two first (t scaled back), as in ray_sphere.
+/// Pre: s >= 0 (s < 0 would add the other nappe of the cone). Edge: s = 0 has no cap (a disk of
+/// radius 0 is never hit) and the apex is a wall hit; a ray along a generator line (A = 0) uses
+/// the linear root; c = 0, NaN, inf and a hit at t = inf give no hit.
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s,
+                                                   T t_min = T(0))
+{
+    if (phong::dot(c, c) == std::numeric_limits<T>::infinity()) [[unlikely]] {
+        const T scale = detail::direction_scale(c); // the same ray with c scale, t = t' scale
+        if (scale == T(0)) return {};
+        const ray_hit<T> h = phong::ray_tapered_cylinder(S, c * scale, s, t_min / scale);
+        if (!h || !(h.t * scale > t_min)) return {};
+        return {h.t * scale, h.part};
+    }
+    const T R = phong::max(T(1), s);
+    if (phong::abs(S.x) <= T(2) * R && phong::abs(S.y) <= T(2) * R && S.z >= -R && S.z <= T(1) + R)
+        return detail::tapered_cylinder_hits(S, c, s, t_min, T(0));
+    T enter = T(0), leave = T(0);
+    if (!detail::ray_box(S, c, glm::vec<3, T, Q>(-R, -R, T(0)), glm::vec<3, T, Q>(R, R, T(1)), enter, leave) || !(leave > t_min) ||
+        !(enter < std::numeric_limits<T>::infinity()))
+        return {}; // the line misses the box (or NaN), the box lies before t_min, or beyond T's range
+    return detail::tapered_cylinder_hits(S + enter * c, c, s, t_min, enter);
 }
 
 /// Ray S + t c against the generic cube [-1, 1]^3 (slab method): the entry time when it is
@@ -262,18 +329,7 @@ PHONG_HD constexpr ray_hit<T> ray_cube(const glm::vec<3, T, Q>& S, const glm::ve
 {
     const T inf = std::numeric_limits<T>::infinity();
     T enter = -inf, leave = inf;
-    for (int a = 0; a < 3; ++a) {
-        if (c[a] == T(0)) {
-            if (!(phong::abs(S[a]) <= T(1))) return {};
-            continue;
-        }
-        T t0 = (T(-1) - S[a]) / c[a], t1 = (T(1) - S[a]) / c[a];
-        if (t0 != t0 || t1 != t1) return {}; // NaN input
-        if (t1 < t0) { const T tmp = t0; t0 = t1; t1 = tmp; }
-        enter = phong::max(enter, t0);
-        leave = phong::min(leave, t1);
-    }
-    if (!(enter <= leave)) return {};
+    if (!detail::ray_box(S, c, glm::vec<3, T, Q>(T(-1)), glm::vec<3, T, Q>(T(1)), enter, leave)) return {};
     if (enter > t_min && enter < inf) return {enter, primitive_part::surface};
     if (leave > t_min && leave < inf) return {leave, primitive_part::surface};
     return {};

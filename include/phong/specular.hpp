@@ -36,7 +36,10 @@ namespace detail {
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr T reflection_cosine_scaled(T nd, T nv, const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& v)
 {
-    return T(2) * nd * nv - phong::dot(d, v);
+    // SIMD lanes: nd (2 nv), the same bits as (2 nd) nv, with 2 nv once per point (shade_batch's
+    // light loop); scalars keep (2 nd) nv (one instruction fewer per pair in shade's loop)
+    if constexpr (std::is_floating_point_v<T>) return T(2) * nd * nv - phong::dot(d, v);
+    else return nd * (T(2) * nv) - phong::dot(d, v);
 }
 
 /// Blinn's 1/|l + v|, the scale of n.h = (n.l + n.v) / |l + v| (h = normalize(l + v)).

@@ -18,6 +18,20 @@
 
 namespace phong::detail::exact {
 
+/// The per-point frame's fields for SIMD lanes only (empty for scalars, whose frame stays five
+/// fields):
+///  - minus_position: -Q, exactly (hidden from the compiler, opaque_lanes), so that the light
+///    loop forms d = L.xyz - Q as L.xyz + (-Q), one add with the light's coordinate read from
+///    memory, where a subtraction takes a load and a subtract (x - y and x + (-y) are the same
+///    IEEE operation: the same bits, signed zeros and NaN included);
+///  - nv_seen (Blinn): n.v where sees_viewer, else -inf, so that the fast route's n.l + n.v is not
+///    positive where there is no view vector (add_halfway_specular_fast: no mask per pair).
+template <class T, glm::qualifier Q, bool Lanes = !std::is_floating_point_v<T>> struct lanes_frame {};
+template <class T, glm::qualifier Q> struct lanes_frame<T, Q, true> {
+    glm::vec<3, T, Q> minus_position = glm::vec<3, T, Q>(T(0));
+    T nv_seen = T(0);
+};
+
 /// Per-point quantities, computed once and shared by every light (five fields: a compiler
 /// keeps them in registers across the light loop).
 template <class T, glm::qualifier Q>
@@ -29,7 +43,27 @@ struct surface_frame {
     mask_t<T> sees_viewer;      ///< the view vector exists (not at the eye, not a zero given v): specular can be on
     T poison;                   ///< 0, or NaN when the point's inputs are not finite
     T nv = T(0);                ///< with a specular term: n.v
+    [[no_unique_address]] lanes_frame<T, Q> lanes = {}; ///< SIMD lanes: see lanes_frame
 };
+
+/// x unchanged, hidden from the compiler's algebra (GCC and Clang, SIMD lanes): an x + (-y)
+/// built from it is not folded back into x - y.
+template <class T>
+PHONG_HD inline T opaque_lanes(T x)
+{
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    if constexpr (requires { typename T::register_type; }) {
+        typename T::register_type r = x;
+#  if defined(__AVX512F__)
+        __asm__("" : "+v"(r)); // any vector register, xmm/ymm/zmm 0-31
+#  else
+        __asm__("" : "+x"(r));
+#  endif
+        return T(r);
+    }
+#endif
+    return x;
+}
 
 /// A unit vector with its squared length: v / |v|, or 0 when |v|^2 is not a normal number
 /// (below exact_min_square: lost to underflow; inf: overflowed; NaN).
@@ -163,8 +197,14 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     T nv = T(0);
     if constexpr (F.specular != specular_model::none) nv = phong::dot(unit_normal, v.unit);
     // Built from components: copied whole, g++ moved the vectors through the stack.
+    lanes_frame<T, Q> lanes{};
+    if constexpr (!std::is_floating_point_v<T>) {
+        lanes.minus_position = vec3(opaque_lanes(T(-0.0f) - position.x), opaque_lanes(T(-0.0f) - position.y), opaque_lanes(T(-0.0f) - position.z));
+        if constexpr (F.specular == specular_model::blinn)
+            lanes.nv_seen = phong::select(v.ok, nv, T(-std::numeric_limits<scalar_t<T>>::infinity()));
+    }
     return {vec3(position.x, position.y, position.z), vec3(unit_normal.x, unit_normal.y, unit_normal.z),
-            vec3(v.unit.x, v.unit.y, v.unit.z), defined, v.ok, poison, nv};
+            vec3(v.unit.x, v.unit.y, v.unit.z), defined, v.ok, poison, nv, lanes};
 }
 
 /// Whether a pair is lit, from dd = |d|^2 and nd = n.d (d = L.xyz - w Q): the light has a
@@ -196,18 +236,23 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
     else return detail::cosine_power(x, scale, m);
 }
 
-/// The fast mode's shininess on SIMD lanes where every lane has the same integer n <=
-/// fast::pow_integer_max_exponent (shade_batch finds it once per call): the power is
-/// fast::pow_integer (binary powering: five multiplications for n = 32, against two polynomials),
-/// within the fast power's bound (fast::pow_integer_max_rel <= fast::pow_unit_max_rel).
+/// The fast mode's shininess on SIMD lanes where every lane has the same integer n in [1,
+/// fast::pow_integer_max_exponent] (shade_batch finds it once per call): the power is
+/// fast::pow_integer with n's schedule made once (five squarings for n = 32, against two
+/// polynomials), within the fast power's bound (fast::pow_integer_max_rel <= fast::pow_unit_max_rel).
+/// n >= 1: the power of a base 0 is 0, so add_specular zeroes the base of the lanes that are off
+/// (or whose cosine is not positive) instead of selecting the power.
 template <class T> struct integer_exponent {
-    unsigned n; ///< the shininess of every lane
+    fast::pow_integer_plan plan; ///< of the shininess n of every lane, n >= 1
+    fast::pow_integer_plan half; ///< of n / 2 where n is even (Blinn's power of (n.h)^2, add_halfway_specular_fast)
+    bool even;                   ///< n is even
+    static integer_exponent of(unsigned n) { return {fast::plan_pow_integer(n), fast::plan_pow_integer(n / 2), n % 2 == 0}; }
 };
 template <evaluation M, class T>
 PHONG_HD constexpr T route_cosine_power(T x, T scale, const integer_exponent<T>& m)
 {
     static_assert(M == evaluation::fast, "integer_exponent: the fast mode's power");
-    return fast::pow_integer(phong::clamp(x * scale, T(0), T(1)), m.n);
+    return fast::pow_integer(phong::clamp(x * scale, T(0), T(1)), m.plan);
 }
 
 /// The shininess on SIMD lanes with m == 0 tested once (shade_batch: once per call, not per
@@ -231,7 +276,7 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, const lane_shininess<T>& m
 template <class T, class Exponent> PHONG_HD constexpr bool any_zero_exponent(const Exponent& m, const mask_t<T>& on)
 {
     if constexpr (std::is_same_v<Exponent, lane_shininess<T>>) return m.any_zero && math_traits<T>::any(math_traits<T>::both(on, m.zero));
-    else if constexpr (std::is_same_v<Exponent, integer_exponent<T>>) return m.n == 0 && math_traits<T>::any(on);
+    else if constexpr (std::is_same_v<Exponent, integer_exponent<T>>) return false; // n >= 1
     else return math_traits<T>::any(math_traits<T>::both(on, m == T(0)));
 }
 
@@ -247,6 +292,15 @@ PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x,
     if constexpr (std::is_floating_point_v<T>) {
         if (x > T(0)) sum += in_type<T>(specular_of(L)) * (f * route_cosine_power<M>(x, scale, m));
         else if (m == T(0)) sum += in_type<T>(specular_of(L)) * f; // cosine_power's pow(0, 0) = 1
+    } else if constexpr (std::is_same_v<Exponent, integer_exponent<T>>) {
+        // The fast power x^n, n >= 1, of the base c zeroed where the lane is off or c <= 0 (then
+        // its power is 0): the mask goes into the product that forms the base, no select of the
+        // power. The base is not clamped to 1: lanes that are on have unit n, d / |d| and v, so
+        // c <= 1 up to its rounding error, which c^n amplifies by n with or without a clamp
+        // (accuracy.hpp's fast bound), and c^n stays finite (|c| <= 3 |d| for unit vectors).
+        const mask_t<T> positive = math_traits<T>::both(on, x > T(0));
+        if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
+        sum += in_type<T>(specular_of(L)) * (f * fast::pow_integer(phong::select(positive, x * scale, T(0)), m.plan));
     } else {
         // Where no lane that is on has c > 0 (nor m = 0: pow(0, 0) = 1), every selected power is 0
         // and the sum would only gain +0: the power is skipped for the whole step, as scalars skip
@@ -290,6 +344,40 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
     }
 }
 
+/// Blinn's specular term in the fast mode on SIMD lanes with an integer shininess n >= 1
+/// (integer_exponent), l = d / |d| with inv = 1/|d| and nl = n.l given (0 where the pair is off;
+/// on: the lit lanes, the point's sees_viewer is read here):
+///   h = d inv + v (one fma per component), hh = |h|^2, n.h = (n.l + n.v) / |h|,
+///   n even: (n.h)^n = ((n.l + n.v)^2 / hh)^(n/2), 1/hh by fast::reciprocal_normal: no square
+///           root, one squaring fewer; the base's error, as a cosine's, is that of n.l + n.v plus
+///           u + reciprocal_max_rel / 2 (AVX-512: 1.5 u), below the 1/|h| route's u + rsqrt's 1.6 u;
+///   n odd:  n.h = (n.l + n.v) rsqrt_normal(hh), as route_inverse_halfway_length.
+/// Lanes with hh < 16 fast::rsqrt_max_rel^2 (l = -v within the error of l: no halfway vector, as in
+/// route_inverse_halfway_length) or n.l + n.v <= 0, or off, get the base 0 and so the power 0.
+/// Unlike the exact route, l is not rounded before l + v: the fast mode does not promise that
+/// l = -v cancels bit for bit (the threshold above takes that case), and one rounding is more
+/// accurate than two.
+template <class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light>
+PHONG_HD constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light& L, T f, T nl, T inv, const glm::vec<3, T, Q>& d,
+                                                  const surface_frame<T, Q>& s, const integer_exponent<T>& m, mask_t<T> on)
+{
+    using S = scalar_t<T>;
+    // n.(l + v); a point without a view vector (sees_viewer off: no specular term) has
+    // nv_seen = -inf, so that its numerator is not positive
+    const T numerator = nl + s.lanes.nv_seen;
+    const mask_t<T> positive = math_traits<T>::both(on, numerator > T(0));
+    if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
+    const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, s.view.x), math_traits<T>::fma(d.y, inv, s.view.y),
+                              math_traits<T>::fma(d.z, inv, s.view.z));
+    const T hh = phong::dot(h, h);
+    constexpr double er = fast::rsqrt_max_rel<S>;
+    const mask_t<T> defined = math_traits<T>::both(positive, hh >= T(S(16 * er * er)));
+    T power;
+    if (m.even) power = fast::pow_integer(phong::select(defined, (numerator * numerator) * fast::reciprocal_normal(hh), T(0)), m.half);
+    else power = fast::pow_integer(phong::select(defined, numerator * detail::rsqrt_normal(hh), T(0)), m.plan);
+    sum_of<term_kind::specular>(sums) += in_type<T>(specular_of(L)) * (f * power);
+}
+
 /// One light's terms added to the sums. Light: a light_source (light.hpp) whose scalar type U is T,
 /// or float lights in double arithmetic (the stable mode's wider route); visibility: unweighted or
 /// a weight in [0, 1]; m: the shininess, T (SIMD lanes in shade_batch: lane_shininess<T>, or
@@ -302,7 +390,10 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     using vec3 = glm::vec<3, T, Q>;
     const T w = light_w<F, T>(L);
     decltype(auto) p = position_of(L);
-    const vec3 d = detail::homogeneous_difference<F.lights>(vec3(T(p.x), T(p.y), T(p.z)), w, s.position);
+    vec3 d;
+    if constexpr (F.lights == light_kind::positional && !std::is_floating_point_v<T>)
+        d = vec3(T(p.x), T(p.y), T(p.z)) + s.lanes.minus_position; // L.xyz - Q, the same bits (see lanes_frame)
+    else d = detail::homogeneous_difference<F.lights>(vec3(T(p.x), T(p.y), T(p.z)), w, s.position);
     const T dd = phong::dot(d, d);
     const T nd = phong::dot(s.normal, d);
 
@@ -339,9 +430,17 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     // first (SIMD lanes measured slower the other way: the ray tracer's batch, 1 light).
     constexpr bool diffuse_last = std::is_floating_point_v<T> && std::is_same_v<Sums<T, Q>, light_sums<T, Q>>;
     if constexpr (F.diffuse && !diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
-    [[maybe_unused]] const mask_t<T> specular_on = math_traits<T>::both(on, s.sees_viewer);
+    // Phong with the fast integer power (n >= 1): a point without a view vector has v = 0, so its
+    // cosine 2 (n.d)(n.v) - d.v is 0 and its power 0 (or v NaN: a poisoned point, cosine not > 0):
+    // no test of sees_viewer per pair.
+    [[maybe_unused]] mask_t<T> specular_on;
+    if constexpr (F.specular == specular_model::phong && std::is_same_v<Exponent, integer_exponent<T>>) specular_on = on;
+    else specular_on = math_traits<T>::both(on, s.sees_viewer);
     if constexpr (F.specular == specular_model::phong) {
         add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
+    } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none &&
+                         std::is_same_v<Exponent, integer_exponent<T>>) {
+        add_halfway_specular_fast(sums, L, f, phong::select(on, nl, T(0)), inv, d, s, m, on);
     } else if constexpr (F.specular == specular_model::blinn) {
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)

@@ -41,6 +41,29 @@ struct lanes<xsimd::batch<T, A>> {
 #  endif
         return math_traits<V>::rsqrt(x);
     }
+    /// 1/x for a positive normal x, relative error fast::reciprocal_max_rel<T>: float lanes with
+    /// AVX-512 (rcp14) or AVX with FMA (rcp), the estimate + one Newton step in correction form
+    /// (two fused multiply-adds; unfused, x r0 rounded would add u); else 1/x.
+    static V reciprocal_normal(const V& x)
+    {
+        if constexpr (std::is_same_v<T, float>) {
+#  if defined(__AVX512F__)
+            if constexpr (sizeof(V) == 64) return newton_reciprocal(x, V(_mm512_rcp14_ps(x)));
+#  endif
+#  if defined(__AVX__) && defined(__FMA__)
+            if constexpr (sizeof(V) == 32) return newton_reciprocal(x, V(_mm256_rcp_ps(x)));
+#  endif
+        }
+        return V(T(1)) / x;
+    }
+
+private:
+    static V newton_reciprocal(const V& x, const V& r0)
+    {
+        // r0 + r0 (1 - x r0); -0 - x is -x exactly (xsimd's unary minus is 0 - x, which the
+        // compiler may not fold into a negated fma)
+        return math_traits<V>::fma(r0, math_traits<V>::fma(V(T(-0.0)) - x, r0, V(T(1))), r0);
+    }
 };
 
 } // namespace phong::fast
