@@ -6,7 +6,7 @@
 # (find_package(phong CONFIG REQUIRED) + phong::phong) with CMAKE_PREFIX_PATH, with g++ and
 # clang++, and run it. Then tests/consumer_batch: a renderer's translation unit calling shade_batch
 # with -march=native and -Wall -Wextra -Wpedantic -Werror, phong's headers not treated as system
-# headers (issue 13: warning-free in users' builds), at -O1 and -O3, with g++ and clang++; built once
+# headers (issue 13: warning-free in users' builds), at -O1 and -O3 (and -O3 without -march=native), with g++ and clang++; built once
 # more with -DPHONG_USE_XSIMD=OFF (g++), which must reach the code as PHONG_NO_XSIMD.
 set -euo pipefail
 root="$PWD"
@@ -42,6 +42,7 @@ batch_user() { # batch_user <name> <compiler> [extra cmake args]
   cmake --build "$tmp/$name" -j2
   "$tmp/$name/batch_user_O1"
   "$tmp/$name/batch_user_O3"
+  "$tmp/$name/batch_user_O3_baseline"
 }
 for cxx in g++ clang++; do
   batch_user "batch-$cxx" "$cxx"

@@ -1265,7 +1265,7 @@ std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t cou
     steps = std::min(steps, max_steps); // callers pass at most max_steps; said here for g++'s -Wstringop-overflow
     // Per-step materials first: they may end the call early.
     constexpr bool materials_per_step = !shared && F.mode == evaluation::exact && !std::is_same_v<V, T>;
-    const material<V, Q>* step_material[max_steps];
+    const material<V, Q>* step_material[max_steps] = {}; // zeroed: g++ -O3 cannot see that steps >= 1
     material<V, Q> slot[materials_per_step ? step_material_slots : 1];
     if constexpr (materials_per_step) {
         std::size_t used = 0, k = 0;
