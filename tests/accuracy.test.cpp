@@ -85,7 +85,7 @@ TEST_CASE_TEMPLATE("accuracy: every input class within its published bound, ever
         if (wide_digits < 113 && sizeof(T) == 8 &&
             (c == input_class::shininess_1e4 || c == input_class::shininess_1e5 || c == input_class::grazing ||
              c == input_class::grazing_specular)) {
-            MESSAGE("reference is long double: double " << phong::accuracy::name(c) << " not checked in this build");
+            MESSAGE("reference is long double: double " << std::string(phong::accuracy::name(c)) << " not checked in this build");
             continue;
         }
         const auto scenes = make_class<T>(c, n, test_seed);

@@ -73,7 +73,7 @@ template <class T, specular_model S, evaluation M = evaluation::stable, bool int
         CAPTURE(e.p99_ulp);
         CAPTURE(e.max_ulp);
         CAPTURE(e.max_rel);
-        MESSAGE(std::string(M == evaluation::fast ? "fast " : "stable ") << (integer_shininess ? "(integer m) " : "") << phong::accuracy::name(cls) << (sizeof(T) == 4 ? " float " : " double ") << (S == specular_model::phong ? "phong" : "blinn")
+        MESSAGE((std::string(M == evaluation::fast ? "fast " : "stable ") + (integer_shininess ? "(integer m) " : "") + phong::accuracy::name(cls) + (sizeof(T) == 4 ? " float " : " double ") + (S == specular_model::phong ? "phong" : "blinn"))
                 << ": p99 " << e.p99_ulp << " max " << e.max_ulp << " ulp, max rel " << e.max_rel << ", non-finite " << e.non_finite);
         CHECK(disagree == 0);
         if (cls == input_class::non_finite) {
@@ -125,8 +125,8 @@ TEST_CASE("shade_batch stable, float: both sides of the double-lane route's shin
                                       ? measure_batch<phong::accuracy::measured_features(evaluation::stable, specular_model::phong), float>(scenes, disagree)
                                       : measure_batch<phong::accuracy::measured_features(evaluation::stable, specular_model::blinn), float>(scenes, disagree);
             CAPTURE(m);
-            CAPTURE(S == specular_model::phong ? "phong" : "blinn");
-            MESSAGE("stable float m = " << m << (S == specular_model::phong ? " phong" : " blinn") << ": p99 " << e.p99_ulp << " max "
+            CAPTURE(std::string(S == specular_model::phong ? "phong" : "blinn"));
+            MESSAGE("stable float m = " << m << std::string(S == specular_model::phong ? " phong" : " blinn") << ": p99 " << e.p99_ulp << " max "
                                         << e.max_ulp << " ulp, max rel " << e.max_rel);
             CHECK(disagree == 0);
             CHECK(e.non_finite == 0);
@@ -153,7 +153,7 @@ TEST_CASE_TEMPLATE("shade_batch stable: a grazing light's specular cosine near 0
         const error_stats e = S == specular_model::phong
                                   ? measure_batch<phong::accuracy::measured_features(evaluation::stable, specular_model::phong), T>(scenes, disagree)
                                   : measure_batch<phong::accuracy::measured_features(evaluation::stable, specular_model::blinn), T>(scenes, disagree);
-        CAPTURE(S == specular_model::phong ? "phong" : "blinn");
+        CAPTURE(std::string(S == specular_model::phong ? "phong" : "blinn"));
         MESSAGE((std::string("stable cosine near 0 ") + (sizeof(T) == 4 ? "float " : "double ") + (S == specular_model::phong ? "phong" : "blinn"))
                 << ": p99 " << e.p99_ulp << " max " << e.max_ulp << " ulp, max rel " << e.max_rel);
         CHECK(disagree == 0);

@@ -184,11 +184,7 @@ template <class T, features F> void check_long_call_equals_points_alone(std::uin
         std::size_t same = 0;
         for (std::size_t i = 0; i < count; ++i) {
             std::vector<color<F, T>> alone(1);
-            const bool front = c.front[i];
-            aos_points<T> one{std::span(&c.p[i], 1), std::span(&c.n[i], 1), {}, std::span(&front, 1), {}};
-            if (given) one.views = std::span(&c.v[i], 1);
-            if (masked) one.light_masks = std::span(&c.masks[i], 1);
-            shade_batch<F>(one, c.base.mat, c.base.lights, std::span<color<F, T>>(alone), c.base.env);
+            shade_batch<F>(c.point_alone(i, given, masked), c.base.mat, c.base.lights, std::span<color<F, T>>(alone), c.base.env);
             same += soa_out[i] == alone[0] && aos_out[i] == alone[0] && in_place_out[i] == alone[0];
         }
         CAPTURE(masked);

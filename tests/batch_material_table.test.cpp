@@ -123,11 +123,7 @@ template <class T, features F> void check_long_table_call_equals_points_alone(st
         std::size_t same = 0;
         for (std::size_t i = 0; i < count; ++i) {
             std::vector<color<F, T>> alone(1);
-            const bool front = c.front[i];
-            aos_points<T> one{std::span(&c.p[i], 1), std::span(&c.n[i], 1), {}, std::span(&front, 1), {}};
-            if (given) one.views = std::span(&c.v[i], 1);
-            if (masked) one.light_masks = std::span(&c.masks[i], 1);
-            shade_batch<F>(one, material_table<T>{.materials = table, .ids = std::span(&ids[i], 1)}, c.base.lights,
+            shade_batch<F>(c.point_alone(i, given, masked), material_table<T>{.materials = table, .ids = std::span(&ids[i], 1)}, c.base.lights,
                            std::span<color<F, T>>(alone), c.base.env);
             color<F, T> soa_i;
             for (int k = 0; k < channels; ++k) soa_i[k] = channel[k][i];

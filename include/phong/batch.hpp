@@ -727,7 +727,7 @@ glm::vec<3, V, Q> load_vec3(std::span<const glm::vec<3, T, Q>> in, std::size_t i
 /// Stores the r, g, b lanes of a colour as W interleaved rgb at d (3W scalars; aos_in_registers
 /// only): AVX-512, six permutes and three stores; AVX2, nine permutes, six blends, three stores.
 template <class V, class T, glm::qualifier Q>
-inline void interleave_lanes(const glm::vec<3, V, Q>& c, [[maybe_unused]] T* d)
+inline void interleave_lanes([[maybe_unused]] const glm::vec<3, V, Q>& c, [[maybe_unused]] T* d)
 {
     static_assert(aos_in_registers<V, T, Q>);
     [[maybe_unused]] constexpr std::size_t W = sizeof(V) / sizeof(T);

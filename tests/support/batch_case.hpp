@@ -67,6 +67,12 @@ template <class T> struct batch_case {
                 std::span<const bool>(front.get(), size()),
                 masked ? std::span<const std::uint64_t>(masks) : std::span<const std::uint64_t>()};
     }
+    /// Point i alone, AoS (the oracle of a long call: each point shaded in a call of its own).
+    phong::aos_points<T> point_alone(std::size_t i, bool given, bool masked) const
+    {
+        return {std::span(&p[i], 1), std::span(&n[i], 1), given ? std::span(&v[i], 1) : std::span<const glm::vec<3, T>>(),
+                std::span<const bool>(front.get() + i, 1), masked ? std::span(&masks[i], 1) : std::span<const std::uint64_t>()};
+    }
     /// The scene of point i as shade<F> sees it, for the conditioning test: a given view vector
     /// becomes an eye point at Q + v (eye_point), where the same v results.
     scene<T> point_scene(std::size_t i, const phong::features& F, bool per_point_material) const

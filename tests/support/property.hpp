@@ -7,6 +7,7 @@
 #include <rapidcheck.h>
 
 #include <cstdint>
+#include <string>
 
 namespace phong_test {
 
@@ -14,7 +15,7 @@ namespace phong_test {
 template <class Property> void check_property(const char* description, Property&& property)
 {
     const bool ok = rc::check(description, std::forward<Property>(property));
-    CHECK_MESSAGE(ok, description);
+    CHECK_MESSAGE(ok, std::string(description)); // doctest prints a const char* as a pointer
 }
 
 /// A float on a grid: integer i in [lo, hi] times step. RapidCheck's float generators never give
