@@ -263,7 +263,7 @@ TEST_CASE_TEMPLATE("primitives: ray_sphere with vectors whose squares overflow",
 
 /// The tapered cylinder's first hit after t = 0 of S + t c in the reference's wide type
 /// (__float128 where available), from the formulas written out (wall: |(x, y)| = 1 + (s - 1) z,
-/// 0 <= z <= 1, by the textbook quadratic; base z = 0, |(x, y)| <= 1; cap z = 1, |(x, y)| <= s),
+/// 0 <= z <= 1, by the quadratic formula; base z = 0, |(x, y)| <= 1; cap z = 1, |(x, y)| <= s),
 /// and how far it lies from a rim (closer, a perturbation of the ray may change the part hit).
 struct tapered_reference {
     phong_test::wide t = std::numeric_limits<ld>::infinity();
@@ -283,8 +283,12 @@ tapered_reference tapered_first_hit(const phong_test::wvec3& S, const phong_test
     const wide b = 2 * (S.x * c.x + S.y * c.y - (1 + k * S.z) * k * c.z);
     const wide cc = S.x * S.x + S.y * S.y - (1 + k * S.z) * (1 + k * S.z);
     const wide disc = b * b - 4 * a * cc;
-    if (disc >= 0 && a != 0)
-        for (const wide t : {(-b - wsqrt(disc)) / (2 * a), (-b + wsqrt(disc)) / (2 * a)}) {
+    // Roots as q / a and cc / q, q = -(b + sign(b) sqrt(disc)) / 2: a ray parallel to a cone's
+    // generator line has a ~ 1e-16 (the rounding of c), where (-b -+ sqrt(disc)) / 2a cancels
+    // to two digits in long double (the reference type without __float128).
+    const wide q = -(b + (b < 0 ? -wsqrt(disc) : wsqrt(disc))) / 2;
+    if (disc >= 0 && q != 0)
+        for (const wide t : {cc / q, a != 0 ? q / a : wide(-1)}) {
             const wide z = S.z + t * c.z;
             if (z >= 0 && z <= 1) consider(t, primitive_part::wall, phong_test::wmin(z, 1 - z));
         }
