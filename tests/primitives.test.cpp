@@ -357,6 +357,32 @@ TEST_CASE_TEMPLATE("primitives: ray_tapered_cylinder with vectors whose squares 
     CHECK_FALSE(static_cast<bool>(phong::ray_tapered_cylinder(vec3<T>(5, 0, T(0.5)), vec3<T>(-std::numeric_limits<T>::infinity(), 0, 0), T(0.5))));
 }
 
+TEST_CASE_TEMPLATE("primitives: rays with a direction so short that c.c underflows", T, float, double)
+{
+    // |c| = y, y^2 below T's smallest normal (float 1e-25, double 1e-170): the same hits as for a
+    // unit c, at t / y (by hand, as in the cases above). The sphere missed them (c.c = 0), the
+    // wall's quadratic lost its leading coefficient (4.4375 / y instead of 4.25 / y).
+    const T y = sizeof(T) == 4 ? T(1e-25) : T(1e-170);
+    const T eps = std::numeric_limits<T>::epsilon();
+    const auto h1 = phong::ray_sphere(vec3<T>(0, 0, 5), vec3<T>(0, 0, -y));
+    REQUIRE(static_cast<bool>(h1));
+    CHECK(std::abs(h1.t * y / T(4) - T(1)) <= 2 * eps);
+    const auto h2 = phong::ray_tapered_cylinder(vec3<T>(5, 0, T(0.5)), vec3<T>(-y, 0, 0), T(0.5));
+    CHECK(h2.part == primitive_part::wall);
+    CHECK(std::abs(h2.t * y / T(4.25) - T(1)) <= 4 * eps);
+    // A subnormal c: t = 4 / c is beyond T's range, no hit (not t = inf); c = 0: no hit.
+    const T tiny = std::numeric_limits<T>::denorm_min();
+    CHECK_FALSE(static_cast<bool>(phong::ray_sphere(vec3<T>(0, 0, 5), vec3<T>(0, 0, -tiny))));
+    CHECK_FALSE(static_cast<bool>(phong::ray_tapered_cylinder(vec3<T>(T(0.25), 0, 5), vec3<T>(0, 0, -tiny), T(0.5))));
+    CHECK_FALSE(static_cast<bool>(phong::ray_sphere(vec3<T>(0, 0, 5), vec3<T>(0))));
+    // A subnormal c from just outside the sphere: t = eps / tiny stays in range (float:
+    // 2^-23 / 2^-149 = 2^126; double 2^1022).
+    const T s0 = T(1) + eps;
+    const auto h3 = phong::ray_sphere(vec3<T>(0, 0, s0), vec3<T>(0, 0, -tiny));
+    REQUIRE(static_cast<bool>(h3));
+    CHECK(std::abs(h3.t * tiny / (s0 - T(1)) - T(1)) <= 4 * eps);
+}
+
 TEST_CASE("primitives: constant evaluation")
 {
     static_assert(phong::ray_sphere(glm::dvec3(0, 0, 5), glm::dvec3(0, 0, -1)).t == 4.0);

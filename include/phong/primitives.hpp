@@ -177,15 +177,34 @@ PHONG_HD constexpr bool ray_box(const glm::vec<3, T, Q>& S, const glm::vec<3, T,
     return enter <= leave;
 }
 
-/// For a direction c whose c.c overflows: the power of two s that brings c's largest component
-/// into [1, 2) (the ray S + t' (c s) is the same ray, t = t' s, exactly but for underflow);
-/// 0 when a component is inf or NaN (no hit).
+/// Whether c.c = a is no normal number of T (it overflowed or underflowed, or c is 0 or NaN):
+/// then the hit is taken with direction_scale.
+template <class T> PHONG_HD constexpr bool direction_square_not_normal(T a)
+{
+    return !(a >= std::numeric_limits<T>::min() && a <= std::numeric_limits<T>::max());
+}
+
+/// For a direction c whose c.c overflows or underflows: the power of two s that brings c's
+/// largest component into [1, 2) (subnormal components: as far as 2^(max exponent) takes them;
+/// the ray S + t' (c s) is the same ray, t = t' s, exactly but for underflow); 0 when c = 0 or
+/// a component is inf or NaN (no hit).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr T direction_scale(const glm::vec<3, T, Q>& c)
 {
     constexpr T max = std::numeric_limits<T>::max();
     if (!(phong::abs(c.x) <= max && phong::abs(c.y) <= max && phong::abs(c.z) <= max)) return T(0);
-    return math_traits<T>::inverse_pow2_scale(phong::max_abs(c));
+    const T largest = phong::max_abs(c);
+    if (largest == T(0)) return T(0);
+    return math_traits<T>::inverse_pow2_scale(largest);
+}
+
+/// A hit h of the ray S + t' (c scale) as a hit of S + t c: t = t' scale, no hit where that is
+/// not after t_min or beyond T's range.
+template <class T> PHONG_HD constexpr ray_hit<T> scaled_back(const ray_hit<T>& h, T scale, T t_min)
+{
+    const T t = h.t * scale;
+    if (!h || !(t > t_min) || t == std::numeric_limits<T>::infinity()) return {};
+    return {t, h.part};
 }
 
 } // namespace detail
@@ -197,7 +216,7 @@ PHONG_HD constexpr T direction_scale(const glm::vec<3, T, Q>& c)
 /// (S.c)^2 - (c.c)(S.S - 1), so rays far from the sphere or near tangency keep their digits, and
 /// the roots as in detail::quadratic_roots. Part: surface. Pre: S, c finite; c need not be unit
 /// (t is in units of c, so the same t serves the world ray and the inverse-transformed ray).
-/// Huge vectors: a c whose c.c overflows is scaled by a power of two first (t scaled back,
+/// Huge vectors: a c whose c.c overflows or underflows is scaled by a power of two first (t scaled back,
 /// exactly but for underflow), and where S.S overflows the root C / q is taken from |S|, so
 /// finite S and c never give an infinite t nor miss a hit for overflow.
 /// Edge: c = 0, a miss, or a tangent ray that rounds to a miss gives no hit; NaN or inf gives no
@@ -208,13 +227,10 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
     const T a = phong::dot(c, c);
-    if (!(a > T(0))) return {}; // c = 0 or NaN
-    if (a == std::numeric_limits<T>::infinity()) [[unlikely]] {
-        const T s = detail::direction_scale(c); // c.c overflowed: the same ray with c s, t = t' s
-        if (s == T(0)) return {};
-        const ray_hit<T> h = phong::ray_sphere(S, c * s, t_min / s);
-        if (!h || !(h.t * s > t_min)) return {};
-        return {h.t * s, h.part};
+    if (detail::direction_square_not_normal(a)) [[unlikely]] {
+        const T s = detail::direction_scale(c); // the same ray with c s, t = t' s
+        if (s == T(0)) return {};               // c = 0, inf or NaN
+        return detail::scaled_back(phong::ray_sphere(S, c * s, t_min / s), s, t_min);
     }
     const T b = phong::dot(S, c);
     const glm::vec<3, T, Q> closest = S - c * (b / a); // the foot of the perpendicular from the centre
@@ -295,7 +311,7 @@ PHONG_HD constexpr ray_hit<T> tapered_cylinder_hits(const glm::vec<3, T, Q>& S, 
 /// t = t_e + t'. Solved at S itself, B^2 and A C (about |S|^2 |c|^2) cancel to the discriminant's
 /// size (|c|^2): float lost a hit's digits from |S| ~ 10 on, missed hits from |S| ~ 1e3, and
 /// overflowed at |S| ~ 1e19. From the box the hit is found to within the rounding of S + t_e c,
-/// a few eps |S| along the ray, the input's own precision. A c whose c.c overflows is scaled by
+/// a few eps |S| along the ray, the input's own precision. A c whose c.c overflows or underflows is scaled by
 /// a power of two first (t scaled back), as in ray_sphere.
 /// Pre: s >= 0 (s < 0 would add the other nappe of the cone). Edge: s = 0 has no cap (a disk of
 /// radius 0 is never hit) and the apex is a wall hit; a ray along a generator line (A = 0) uses
@@ -304,12 +320,10 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s,
                                                    T t_min = T(0))
 {
-    if (phong::dot(c, c) == std::numeric_limits<T>::infinity()) [[unlikely]] {
+    if (detail::direction_square_not_normal(phong::dot(c, c))) [[unlikely]] {
         const T scale = detail::direction_scale(c); // the same ray with c scale, t = t' scale
-        if (scale == T(0)) return {};
-        const ray_hit<T> h = phong::ray_tapered_cylinder(S, c * scale, s, t_min / scale);
-        if (!h || !(h.t * scale > t_min)) return {};
-        return {h.t * scale, h.part};
+        if (scale == T(0)) return {};               // c = 0, inf or NaN
+        return detail::scaled_back(phong::ray_tapered_cylinder(S, c * scale, s, t_min / scale), scale, t_min);
     }
     const T R = phong::max(T(1), s);
     if (phong::abs(S.x) <= T(2) * R && phong::abs(S.y) <= T(2) * R && S.z >= -R && S.z <= T(1) + R)
