@@ -223,6 +223,7 @@ TEST_CASE_TEMPLATE("fast::reciprocal_normal: within reciprocal_max_rel of 1/x, s
         worst = std::max(worst, double(std::fabs(W(phong::fast::reciprocal_normal(x)) * W(x) - 1)));
     }
     for (T x : ends) worst = std::max(worst, double(std::fabs(W(phong::fast::reciprocal_normal(x)) * W(x) - 1)));
+    static_assert(phong::fast::reciprocal_normal(4.0f) == 0.25f && phong::fast::reciprocal_normal(0.5) == 2.0); // constexpr for scalars
     MESSAGE("fast::reciprocal_normal, scalar: max relative error ", worst);
     CHECK(worst <= phong::fast::reciprocal_max_rel<T>);
 #if PHONG_HAS_XSIMD
