@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <array>
 #include <cstddef>
 #include <cstdio>
@@ -524,6 +525,14 @@ template <std::size_t W> struct consecutive_elements {
 };
 template <std::size_t W> inline constexpr consecutive_elements<W> full_step_elements{W};
 
+/// Storage for one step's material lanes, left uninitialized (material's default member
+/// initializers would fill 14 vectors per slot per call: 8 KiB of stores per call of 32 steps);
+/// the step functions construct the lanes in it (std::construct_at) before any read.
+template <class V, glm::qualifier Q> union material_slot {
+    material<V, Q> lanes;
+    material_slot() {}
+};
+
 /// The lane material of one step from a material table: the table's lanes (splatted once per
 /// call) when every point of the step has the same id, else a gather of the table's entries.
 /// An id past the table takes its last entry (a debug build reports it before: shade_batch's
@@ -585,10 +594,10 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
                 const std::uint32_t first = std::min(id[0], last);
                 const __m512i clamped = _mm512_min_epu32(_mm512_loadu_si512(id), _mm512_set1_epi32(int(last)));
                 if (_mm512_cmpneq_epi32_mask(clamped, _mm512_set1_epi32(int(first))) == 0) return &splatted[first];
-                if (!columns.empty()) return &(scratch = permuted(clamped));
+                if (!columns.empty()) return std::construct_at(&scratch, permuted(clamped));
                 alignas(64) std::uint32_t element[W];
                 _mm512_store_si512(element, clamped);
-                return &(scratch = gather<V, true>(table.data(), element));
+                return std::construct_at(&scratch, gather<V, true>(table.data(), element));
             }
         }
 #endif
@@ -598,10 +607,10 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
                 const std::uint32_t first = std::min(id[0], last);
                 const __m256i clamped = _mm256_min_epu32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(id)), _mm256_set1_epi32(int(last)));
                 if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(clamped, _mm256_set1_epi32(int(first)))) == -1) return &splatted[first];
-                if (!columns.empty()) return &(scratch = permuted(clamped));
+                if (!columns.empty()) return std::construct_at(&scratch, permuted(clamped));
                 alignas(32) std::uint32_t element[W];
                 _mm256_store_si256(reinterpret_cast<__m256i*>(element), clamped);
-                return &(scratch = gather<V, true>(table.data(), element));
+                return std::construct_at(&scratch, gather<V, true>(table.data(), element));
             }
         }
 #endif
@@ -612,7 +621,7 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
             uniform = uniform && element[k] == element[0];
         }
         if (uniform) return &splatted[element[0]];
-        return &(scratch = gather<V, true>(table.data(), element));
+        return std::construct_at(&scratch, gather<V, true>(table.data(), element));
     }
 };
 
@@ -1056,14 +1065,18 @@ template <class V> exact::lane_shininess<V> shininess_lanes(const V& m)
 /// part, emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted: without masks, the
 /// loop runs without the lights' ambient terms); the sums start from it.
 /// step_materials: null (mat for every step), or, not folded and in the exact mode only, the
-/// material lanes of each step (step k: *step_materials[k]; a table's steps or per-point
-/// materials, several steps per call). The fast mode's integer exponent and the stable mode's
-/// route are decided per call from mat: those modes take one step per call with per-step materials.
+/// material lanes of each step (step k: *step_materials[k]; per-point materials or a table's
+/// tail). table: null, or (exact mode, not folded, full steps) a material table whose step k
+/// takes the ids of points table_first + k W .. + W - 1, looked up in the step loop
+/// (table_lanes::step; step_materials null). The fast mode's integer exponent and the stable
+/// mode's route are decided per call from mat: those modes take one step per call with
+/// per-step materials.
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
 PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size_t first, std::size_t steps, const material<V, Q>& mat,
                                       std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
                                       const environment<V, Q>& env, const std::uint64_t* bits, std::size_t count,
-                                      const material<V, Q>* const* step_materials)
+                                      const material<V, Q>* const* step_materials, const table_lanes<V, T, Q>* table = nullptr,
+                                      std::size_t table_first = 0)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     const step_stream<V, T> io = stream; // a copy the colour stores cannot alias: its pointers stay in registers
@@ -1120,9 +1133,14 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
                 pending = finish<G>(sums, s, mat, env);
             } else if constexpr (!Folded && std::is_same_v<std::decay_t<decltype(call_m)>, exact::lane_shininess<V>>) {
                 // Per-step materials: the step's shininess tested for 0 here, as once per call otherwise.
-                const material<V, Q>& step_mat = step_materials ? *step_materials[k] : mat;
+                // A table's step looks its ids up here, in the loop: their loads and, for mixed
+                // ids, the lanes' permutes overlap the shading of the steps around them.
+                material_slot<V, Q> looked_up;
+                const material<V, Q>& step_mat = table            ? *table->step(table_first + k * W, W, looked_up.lanes)
+                                                 : step_materials ? *step_materials[k]
+                                                                  : mat;
                 exact::lane_shininess<V> m = call_m;
-                if (step_materials) m = shininess_lanes(step_mat.shininess);
+                if (table || step_materials) m = shininess_lanes(step_mat.shininess);
                 add_masked_lights<F, V, T, Q>(sums, s, lights, m, step_bits, count);
                 pending = finish<F>(sums, s, step_mat, env);
             } else {
@@ -1178,10 +1196,10 @@ template <class V, class T, glm::qualifier Q> struct per_point_lanes {
     {
         constexpr std::size_t W = sizeof(V) / sizeof(T);
         if (count == W) {
-            scratch = gather<V, false>(materials.data() + i, full_step_elements<W>.index);
+            std::construct_at(&scratch, gather<V, false>(materials.data() + i, full_step_elements<W>.index));
         } else {
             const consecutive_elements<W> tail(count);
-            scratch = gather<V, false>(materials.data() + i, tail.index);
+            std::construct_at(&scratch, gather<V, false>(materials.data() + i, tail.index));
         }
         return &scratch;
     }
@@ -1239,8 +1257,9 @@ void store_step(const color<F, V, Q>& c, std::size_t i, std::size_t count, const
 #  pragma GCC diagnostic push
 #  pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-/// Material lanes kept per call of shade_lanes for steps of mixed materials (a table's steps of
-/// mixed ids, per-point materials): a call ends at the step that would need one more.
+/// Material lanes kept per call of shade_lanes for steps of mixed materials (per-point
+/// materials; a table's full steps are looked up in shade_lanes): a call ends at the step that
+/// would need one more.
 inline constexpr std::size_t step_material_slots = 8;
 
 /// Up to call_steps batch steps from point i (steps full steps of W points, or one step of
@@ -1249,8 +1268,9 @@ inline constexpr std::size_t step_material_slots = 8;
 /// (aos_in_registers) and light masks of full steps are read in place, full steps' SoA or
 /// interleaved rgb colours written in place. `materials` gives each step's material lanes
 /// (shared_lanes, per_point_lanes or table_lanes); materials that differ per step go in one call
-/// of several steps in the exact mode (a pointer per step: a table's lanes as they are, or a
-/// slot), one step per call in the others.
+/// of several steps in the exact mode (a table's full steps: looked up by shade_lanes in its step
+/// loop; per-point materials and a table's tail: a pointer per step, to a table's lanes as they
+/// are or to a slot), one step per call in the others.
 template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
 std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, const Points& points,
                                const MaterialLanes& materials, std::span<const light<V, Q>> lights,
@@ -1263,15 +1283,22 @@ std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t cou
     constexpr int channels = F.alpha ? 4 : 3;
     constexpr std::size_t max_steps = call_steps<F, Points, Output, V, T, Q>;
     steps = std::min(steps, max_steps); // callers pass at most max_steps; said here for g++'s -Wstringop-overflow
-    // Per-step materials first: they may end the call early.
+    // Per-step materials first: they may end the call early. A table's full steps look their
+    // materials up inside shade_lanes instead, where the ids' loads and a mixed step's permutes
+    // overlap the shading of the steps around them and no slot can run out (before, here, for
+    // all of a call's steps ahead of its shading: the ray tracer's batch, 2 lights, took ~1 ns
+    // per hit more; benchmarks/demo/whitted.cpp).
     constexpr bool materials_per_step = !shared && F.mode == evaluation::exact && !std::is_same_v<V, T>;
+    constexpr bool table_in_loop = materials_per_step && std::is_same_v<MaterialLanes, table_lanes<V, T, Q>>;
+    const bool look_up_in_loop = table_in_loop && count == W;
     const material<V, Q>* step_material[max_steps] = {}; // zeroed: g++ -O3 cannot see that steps >= 1
-    material<V, Q> slot[materials_per_step ? step_material_slots : 1];
+    material_slot<V, Q> slots[materials_per_step ? step_material_slots : 1];
+    [[maybe_unused]] const auto slot = [&](std::size_t k) -> material<V, Q>& { return slots[k].lanes; };
     if constexpr (materials_per_step) {
         std::size_t used = 0, k = 0;
-        for (; k < steps && used < step_material_slots; ++k) {
-            step_material[k] = materials.step(i + k * W, count, slot[used]);
-            used += step_material[k] == &slot[used];
+        for (; k < steps && used < step_material_slots && !look_up_in_loop; ++k) {
+            step_material[k] = materials.step(i + k * W, count, slot(used));
+            used += step_material[k] == &slot(used);
         }
         if (k < steps && used == step_material_slots) steps = k; // the next step may need a slot
     }
@@ -1344,11 +1371,15 @@ std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t cou
     }
     if constexpr (shared) {
         shade_lanes<F, V, T, Q, folded>(io, 0, steps, materials.lanes, lights, wide_lights, env, bits, count, nullptr);
+    } else if constexpr (table_in_loop) {
+        if (look_up_in_loop)
+            shade_lanes<F, V, T, Q, false>(io, 0, steps, materials.splatted[0], lights, wide_lights, env, bits, count, nullptr, &materials, i);
+        else shade_lanes<F, V, T, Q, false>(io, 0, steps, *step_material[0], lights, wide_lights, env, bits, count, step_material);
     } else if constexpr (materials_per_step) {
         shade_lanes<F, V, T, Q, folded>(io, 0, steps, *step_material[0], lights, wide_lights, env, bits, count, step_material);
     } else {
         for (std::size_t k = 0; k < steps; ++k)
-            shade_lanes<F, V, T, Q, folded>(io, k, 1, *materials.step(i + k * W, count, slot[0]), lights, wide_lights, env,
+            shade_lanes<F, V, T, Q, folded>(io, k, 1, *materials.step(i + k * W, count, slot(0)), lights, wide_lights, env,
                                             bits ? bits + k * W : nullptr, count, nullptr);
     }
     if (io.out[0] == out_block[0][0]) {
