@@ -145,7 +145,9 @@ using table = std::array<bound, input_class_count>;
 // sum |x_k y_k| for any order and any mix of fma). Nothing here depends on -O1/-O2/-O3 or -march:
 // the exact path has no compensated (error-free) steps that contraction could break; the one
 // place where contraction would change a result qualitatively (Blinn's l = -v) is guarded in
-// shade.hpp by rounded products. First-order coefficients k u are used as g(k) = k u (1 + 2^-10)
+// shade.hpp by rounded products (SIMD lanes: h = d / |d| + v fused on purpose, one rounding per
+// component, and |h| < u taken as l = -v: detail::exact::lanes_inverse_halfway_length, whose
+// error is below the E_s of the rounded route used below, and whose cut-off lies where E_c is +inf). First-order coefficients k u are used as g(k) = k u (1 + 2^-10)
 // / (1 - 2 k u), which is at least Higham's gamma_k = k u / (1 - k u) (a product of k factors
 // (1 + delta), |delta| <= u) and covers the products of two such errors (for w = 0 or 1 every k
 // is below 200: k u <= 2^-16). pow_unit's own documented bound (detail/power.hpp) enters

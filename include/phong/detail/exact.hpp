@@ -14,6 +14,7 @@
 #include "light_terms.hpp"
 #include "twofold.hpp"
 
+#include <limits>
 #include <type_traits>
 
 namespace phong::detail::exact {
@@ -344,6 +345,22 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
     }
 }
 
+/// Blinn's 1/|l + v| on SIMD lanes in the exact mode, from d and inv = 1/|d| (l = d inv):
+/// h = d inv + v in one fma per component (no rounded l: three products fewer per pair than
+/// route_inverse_halfway_length), 0 where |h|^2 < u^2 (u = epsilon / 2). That threshold is where
+/// l = -v bit for bit ends up: fl(d inv) = -v leaves h = the products' rounding errors, |h| <= u / 2,
+/// and n.h is taken as 0 as the rounded route does for h = 0. It zeroes nothing that has an exact
+/// bound (accuracy.hpp: a bound needs |l + v| > 2 E_s >= 28 u, and then |fl(h)| > 14 u).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v)
+{
+    using S = scalar_t<T>;
+    const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z));
+    const T hh = phong::dot(h, h);
+    constexpr S u = std::numeric_limits<S>::epsilon() / 2;
+    return phong::select(hh >= T(u * u), detail::rsqrt_normal(hh), T(0));
+}
+
 /// Blinn's specular term in the fast mode on SIMD lanes with an integer shininess n >= 1
 /// (integer_exponent), l = d / |d| with inv = 1/|d| and nl = n.l given (0 where the pair is off;
 /// on: the lit lanes, the point's sees_viewer is read here):
@@ -441,6 +458,9 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none &&
                          std::is_same_v<Exponent, integer_exponent<T>>) {
         add_halfway_specular_fast(sums, L, f, phong::select(on, nl, T(0)), inv, d, s, m, on);
+    } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none && F.mode == evaluation::exact &&
+                         !std::is_same_v<mask_t<T>, bool>) {
+        add_specular<F.mode>(sums, L, f, nl + s.nv, lanes_inverse_halfway_length(d, inv, s.view), m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn) {
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)
