@@ -33,11 +33,11 @@ using color = std::conditional_t<F.alpha, glm::vec<4, T, Q>, glm::vec<3, T, Q>>;
 
 /// The model's terms at one point, each an rgb (shade_terms<F>). Their sum in this order,
 ///   emission + ambient + diffuse + specular,
-/// is shade<F>'s colour bit for bit (terms F leaves out are 0), with FMA contraction too (each
-/// term's product is rounded on its own; docs/compilers.md).
-/// emission is the material's emission (features::emission), ambient ka (La + sum_i f_i La_i),
-/// diffuse kd sum_i f_i Ld_i max(n.l_i, 0), specular ks sum_i f_i Ls_i s_i; alpha the material's
-/// alpha. For a point with NaN or inf input every term is NaN.
+/// is shade<F>'s colour bit for bit (terms F leaves out are 0; with g++ and FMA instructions on,
+/// e.g. -march=native, only under -ffp-contract=off, else within the exact bound:
+/// docs/compilers.md). emission is the material's emission (features::emission), ambient
+/// ka (La + sum_i f_i La_i), diffuse kd sum_i f_i Ld_i max(n.l_i, 0), specular ks sum_i f_i Ls_i
+/// s_i; alpha the material's alpha. For a point with NaN or inf input every term is NaN.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct shading_terms {
     glm::vec<3, T, Q> emission;
@@ -51,31 +51,19 @@ struct shading_terms {
 
 namespace detail {
 
-/// a * b component by component, each product as a value no compiler fuses into a later sum
-/// (twofold.hpp's rounded_product: an fma with 0 where FMA instructions are on).
-template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> rounded_products(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b)
-{
-    return {rounded_product(a.x, b.x), rounded_product(a.y, b.y), rounded_product(a.z, b.z)};
-}
-
 /// The model's terms at the point, from the per-light sums (poison: the NaN policy's 0 or NaN).
 template <features F, class T, glm::qualifier Q, class Frame>
 PHONG_HD constexpr shading_terms<T, Q> terms_of(const light_sums<T, Q>& sums, const Frame& s, const material<T, Q>& mat,
                                                 const environment<T, Q>& env)
 {
     using vec3 = glm::vec<3, T, Q>;
-    // Each term's product rounded on its own (rounded_products), so that g++'s contraction cannot
-    // fuse it into total_of's sum in one caller and not in another: shade_terms' terms then sum to
-    // shade's colour bit for bit with -march=native too (they did not: tests/renderer_api.test.cpp
-    // built with -march=x86-64-v3; docs/compilers.md).
     shading_terms<T, Q> t{vec3(s.poison), vec3(T(0)), vec3(T(0)), vec3(T(0)), mat.alpha + s.poison};
     if constexpr (F.emission) t.emission += mat.emission;
-    if constexpr (F.scene_ambient && F.light_ambient) t.ambient = rounded_products(mat.ka, env.ambient + sums.ambient);
-    else if constexpr (F.scene_ambient) t.ambient = rounded_products(mat.ka, env.ambient);
-    else if constexpr (F.light_ambient) t.ambient = rounded_products(mat.ka, sums.ambient);
-    if constexpr (F.diffuse) t.diffuse = rounded_products(mat.kd, sums.diffuse);
-    if constexpr (F.specular != specular_model::none) t.specular = rounded_products(mat.ks, sums.specular);
+    if constexpr (F.scene_ambient && F.light_ambient) t.ambient = mat.ka * (env.ambient + sums.ambient);
+    else if constexpr (F.scene_ambient) t.ambient = mat.ka * env.ambient;
+    else if constexpr (F.light_ambient) t.ambient = mat.ka * sums.ambient;
+    if constexpr (F.diffuse) t.diffuse = mat.kd * sums.diffuse;
+    if constexpr (F.specular != specular_model::none) t.specular = mat.ks * sums.specular;
     return t;
 }
 
