@@ -1295,12 +1295,14 @@ std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t cou
     material_slot<V, Q> slots[materials_per_step ? step_material_slots : 1];
     [[maybe_unused]] const auto slot = [&](std::size_t k) -> material<V, Q>& { return slots[k].lanes; };
     if constexpr (materials_per_step) {
-        std::size_t used = 0, k = 0;
-        for (; k < steps && used < step_material_slots && !look_up_in_loop; ++k) {
-            step_material[k] = materials.step(i + k * W, count, slot(used));
-            used += step_material[k] == &slot(used);
+        if (!look_up_in_loop) {
+            std::size_t used = 0, k = 0;
+            for (; k < steps && used < step_material_slots; ++k) {
+                step_material[k] = materials.step(i + k * W, count, slot(used));
+                used += step_material[k] == &slot(used);
+            }
+            if (k < steps && used == step_material_slots) steps = k; // the next step may need a slot
         }
-        if (k < steps && used == step_material_slots) steps = k; // the next step may need a slot
     }
     // Full steps in place are read and written where they are; the rest goes through these
     // blocks (in place: only a tail, one step).
@@ -1371,12 +1373,11 @@ std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t cou
     }
     if constexpr (shared) {
         shade_lanes<F, V, T, Q, folded>(io, 0, steps, materials.lanes, lights, wide_lights, env, bits, count, nullptr);
-    } else if constexpr (table_in_loop) {
-        if (look_up_in_loop)
-            shade_lanes<F, V, T, Q, false>(io, 0, steps, materials.splatted[0], lights, wide_lights, env, bits, count, nullptr, &materials, i);
-        else shade_lanes<F, V, T, Q, false>(io, 0, steps, *step_material[0], lights, wide_lights, env, bits, count, step_material);
     } else if constexpr (materials_per_step) {
-        shade_lanes<F, V, T, Q, folded>(io, 0, steps, *step_material[0], lights, wide_lights, env, bits, count, step_material);
+        const table_lanes<V, T, Q>* table = nullptr; // a table's full steps: looked up in shade_lanes
+        if constexpr (table_in_loop) table = look_up_in_loop ? &materials : nullptr;
+        shade_lanes<F, V, T, Q, folded>(io, 0, steps, table ? table->splatted[0] : *step_material[0], lights, wide_lights, env, bits,
+                                        count, table ? nullptr : step_material, table, i);
     } else {
         for (std::size_t k = 0; k < steps; ++k)
             shade_lanes<F, V, T, Q, folded>(io, k, 1, *materials.step(i + k * W, count, slot(0)), lights, wide_lights, env,

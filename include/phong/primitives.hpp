@@ -177,13 +177,6 @@ PHONG_HD constexpr bool ray_box(const glm::vec<3, T, Q>& S, const glm::vec<3, T,
     return enter <= leave;
 }
 
-/// Whether c.c = a is no normal number of T (it overflowed or underflowed, or c is 0 or NaN):
-/// then the hit is taken with direction_scale.
-template <class T> PHONG_HD constexpr bool direction_square_not_normal(T a)
-{
-    return !(a >= std::numeric_limits<T>::min() && a <= std::numeric_limits<T>::max());
-}
-
 /// For a direction c whose c.c overflows or underflows: the power of two s that brings c's
 /// largest component into [1, 2) (subnormal components: as far as 2^(max exponent) takes them;
 /// the ray S + t' (c s) is the same ray, t = t' s, exactly but for underflow); 0 when c = 0 or
@@ -227,7 +220,7 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
     const T a = phong::dot(c, c);
-    if (detail::direction_square_not_normal(a)) [[unlikely]] {
+    if (!detail::normal_square(a)) [[unlikely]] { // c.c overflowed or underflowed, or c is 0 or NaN
         const T s = detail::direction_scale(c); // the same ray with c s, t = t' s
         if (s == T(0)) return {};               // c = 0, inf or NaN
         return detail::scaled_back(phong::ray_sphere(S, c * s, t_min / s), s, t_min);
@@ -320,7 +313,7 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s,
                                                    T t_min = T(0))
 {
-    if (detail::direction_square_not_normal(phong::dot(c, c))) [[unlikely]] {
+    if (!detail::normal_square(phong::dot(c, c))) [[unlikely]] { // as in ray_sphere
         const T scale = detail::direction_scale(c); // the same ray with c scale, t = t' scale
         if (scale == T(0)) return {};               // c = 0, inf or NaN
         return detail::scaled_back(phong::ray_tapered_cylinder(S, c * scale, s, t_min / scale), scale, t_min);
