@@ -219,14 +219,34 @@ TEST_CASE_TEMPLATE("shade_batch degenerate lanes: documented finite values, NaN 
     }
     // Blinn with l = -v exactly: eye at the origin, Q = (0, 0, -1), light at (0, 0, -2): l = (0, 0, -1), v = (0, 0, 1).
     // n = (0, 0, -1) faces the light: n.l = 1 > 0, h undefined -> n.h = 0: specular 0 for m > 0, 1 for m = 0.
-    soa_scene<T> opp;
-    for (int i = 0; i < 3; ++i) opp.add({T(0), T(0), T(-1)}, {T(0), T(0), T(-1)});
+    // Both modes: the exact lanes form h = d (1/|d|) + v fused and take |h| < u as this case. A full
+    // step too (the kernel's in-place loop), and near-opposite points (light a few ulp off the eye
+    // ray: |l + v| at the rounding level) give finite colours within [diffuse only, + ks].
     material<T> shiny = mat;
     shiny.shininess = T(8);
-    opp.template shade<F>(shiny, lights, env);
-    CHECK(opp.r[0] == doctest::Approx(double(ambient_only + T(0.25))).epsilon(1e-6)); // diffuse only
-    opp.template shade<F>(mat, lights, env);
-    CHECK(opp.r[2] == doctest::Approx(double(ambient_only + T(0.25) + T(1))).epsilon(1e-6)); // m = 0: 0^0 = 1
+    for (int mode = 0; mode < 2; ++mode) {
+        CAPTURE(mode);
+        soa_scene<T> opp;
+        for (std::size_t i = 0; i < batch_width<T> + 3; ++i) opp.add({T(0), T(0), T(-1)}, {T(0), T(0), T(-1)});
+        if (mode == 0) opp.template shade<F>(shiny, lights, env);
+        else opp.template shade<E>(shiny, lights, env);
+        for (std::size_t i = 0; i < opp.r.size(); ++i)
+            CHECK(opp.r[i] == doctest::Approx(double(ambient_only + T(0.25))).epsilon(1e-6)); // diffuse only
+        if (mode == 0) opp.template shade<F>(mat, lights, env);
+        else opp.template shade<E>(mat, lights, env);
+        CHECK(opp.r[2] == doctest::Approx(double(ambient_only + T(0.25) + T(1))).epsilon(1e-6)); // m = 0: 0^0 = 1
+        soa_scene<T> near;
+        const T e = std::numeric_limits<T>::epsilon();
+        for (int k = 1; k <= int(batch_width<T>) + 3; ++k) near.add({T(k) * e, T(0), T(-1)}, {T(0), T(0), T(-1)});
+        if (mode == 0) near.template shade<F>(shiny, lights, env);
+        else near.template shade<E>(shiny, lights, env);
+        for (std::size_t i = 0; i < near.r.size(); ++i) {
+            CAPTURE(i);
+            CHECK(std::isfinite(near.r[i]));
+            CHECK(near.r[i] >= T(0.99) * (ambient_only + T(0.25)));
+            CHECK(near.r[i] <= T(1.01) * (ambient_only + T(0.25) + T(1)));
+        }
+    }
 }
 
 TEST_CASE_TEMPLATE("shade_batch: per-point materials and interleaved output equal the SoA path", T, float, double)
