@@ -91,6 +91,8 @@ constexpr features phong_exact{.scene_ambient = false, .light_ambient = true, .l
                                .mode = evaluation::exact};
 constexpr features blinn_stable{.scene_ambient = false, .light_ambient = true, .specular = specular_model::blinn,
                                 .lights = light_kind::any, .mode = evaluation::stable};
+constexpr features blinn_exact{.scene_ambient = false, .light_ambient = true, .specular = specular_model::blinn,
+                               .lights = light_kind::any, .mode = evaluation::exact};
 constexpr features spot_stable{.scene_ambient = false, .light_ambient = true, .lights = light_kind::positional,
                                .spot = spot_model::opengl, .mode = evaluation::stable};
 constexpr features spot_exact{.scene_ambient = false, .light_ambient = true, .lights = light_kind::positional,
@@ -111,6 +113,75 @@ TEST_CASE("shade_batch: shininess 1e30 (double) and 1e38 (float) in the stable m
     huge_shininess<blinn_stable, float>(1e38f);
     huge_shininess<phong_exact, double>(1e30); // exact mode: pow(r.v, m)
     huge_shininess<phong_exact, float>(1e38f);
+}
+
+// Float lanes take m as min(m, 2^100) (exact::lane_shininess::bounded), so that m log2 x stays finite
+// without a clamp: the same powers, 1 at c = 1 and 0 below, on both sides of the bound.
+TEST_CASE("shade_batch: exact float shininess up to the largest float gives the powers 1 and 0")
+{
+    for (const float m : {0x1p31f, 0x1p100f, 0x1p101f, 1e38f, std::numeric_limits<float>::max()}) {
+        huge_shininess<phong_exact, float>(m);
+        huge_shininess<blinn_exact, float>(m);
+    }
+    huge_shininess<blinn_exact, double>(std::numeric_limits<double>::max());
+}
+
+// pow(c, 0) = 1 (shade<F>'s cosine_power): with shininess 0 the specular term is ks Ls wherever the
+// pair is lit and the point sees the viewer, whatever the cosine, and nothing at a point without a
+// view vector (at the eye). Materials with m = 0 and m = 8 alternate point by point, so that a step
+// of lanes holds both (the batch decides per lane, once per step, where the power is taken).
+// Plane points with n = (0, 0, 1) and the directional light l = n (n.l = 1 exactly):
+//   (0, 0, -3): v = l, r.v = n.h = 1;
+//   (4, 0, -3): r.v = 3/5 (Blinn: n.h = (1 + 3/5) / |l + v|);
+//   (0, 0, 3):  v = -n, r.v = -1 (Blinn: l = -v, no halfway vector, n.h taken as 0): power 0^m;
+//   (0, 0, 0):  at the eye, no view vector.
+// ka La + kd Ld = 0.75 everywhere, ks Ls = 0.125: the colours are exact sums except c^8 at (4, 0, -3).
+template <features F, class T> void zero_shininess()
+{
+    const T px0[4] = {T(0), T(4), T(0), T(0)}, pz0[4] = {T(-3), T(-3), T(3), T(0)};
+    constexpr std::size_t n = 40; // two AVX-512 float steps and a tail
+    std::vector<T> px(n), py(n, T(0)), pz(n), nx(n, T(0)), ny(n, T(0)), nz(n, T(1)), r(n, T(-1)), g(n, T(-1)), b(n, T(-1));
+    std::vector<material<T>> mats(n, material<T>{vec3<T>(T(0.25)), vec3<T>(T(0.5)), vec3<T>(T(0.125)), vec3<T>(T(0)), T(0), T(1)});
+    for (std::size_t i = 0; i < n; ++i) {
+        px[i] = px0[(i / 2) % 4], pz[i] = pz0[(i / 2) % 4];
+        if (i % 2) mats[i].shininess = T(8);
+    }
+    light<T> L{};
+    L.position = {T(0), T(0), T(1), T(0)};
+    L.ambient = L.diffuse = L.specular = vec3<T>(T(1));
+    const light<T> lights[1] = {L};
+    shade_batch<F>(soa3<T>{px, py, pz}, soa3<T>{nx, ny, nz}, std::span<const material<T>>(mats), std::span<const light<T>>(lights),
+                   soa_rgba<T>{r, g, b, {}});
+    for (std::size_t i = 0; i < n; ++i) {
+        CAPTURE(i);
+        const std::size_t where = (i / 2) % 4;
+        const bool zero = i % 2 == 0;
+        T expected = T(0.75);
+        if (where == 0) expected = T(0.875);
+        if (zero && where != 3) expected = T(0.875);
+        if (!zero && where == 1) { // 0.125 c^8, c from the definitions
+            const double c = F.specular == specular_model::blinn ? 1.6 / std::sqrt(0.8 * 0.8 + 1.6 * 1.6) : 0.6;
+            CHECK(double(r[i]) == doctest::Approx(0.75 + 0.125 * std::pow(c, 8.0)).epsilon(1e-5));
+        } else {
+            CHECK(r[i] == expected);
+        }
+        CHECK(g[i] == r[i]);
+        CHECK(b[i] == r[i]);
+    }
+    // One material for every point (the folded path): m = 0 throughout.
+    shade_batch<F>(soa3<T>{px, py, pz}, soa3<T>{nx, ny, nz}, mats[0], std::span<const light<T>>(lights), soa_rgba<T>{r, g, b, {}});
+    for (std::size_t i = 0; i < n; ++i) {
+        CAPTURE(i);
+        CHECK(r[i] == ((i / 2) % 4 == 3 ? T(0.75) : T(0.875)));
+    }
+}
+
+TEST_CASE_TEMPLATE("shade_batch: shininess 0 turns the specular term on at every lit cosine, and off without a view vector", T, float, double)
+{
+    zero_shininess<phong_exact, T>();
+    zero_shininess<blinn_exact, T>();
+    zero_shininess<phong_stable, T>();
+    zero_shininess<blinn_stable, T>();
 }
 
 TEST_CASE("shade_batch: spot exponents 1e300 (double) and 3e38 (float) are UBSan-clean and exact")

@@ -172,6 +172,10 @@ struct math_traits<xsimd::batch<T, A>> {
         if constexpr (float_lanes) return detail::lanes::pow_unit(x, m, m_is_zero);
         else return pow(x, m);
     }
+    /// Float lanes: x^m for x in [0, 1] and 0 <= m <= 2^100 where x > 0 or m = 0; other lanes
+    /// unspecified (finite), for the caller to select away (detail/lanes_power.hpp's pow_unit_positive).
+    template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
+    PHONG_LANES_INLINE static V pow_unit_positive(const V& x, const V& m) { return detail::lanes::pow_unit_positive(x, m); }
     /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
     /// xsimd's kernels (exp clamped as above: m log1p(-x) reaches -1e30 and below for the
     /// shininess validate accepts); x >= 1 gives 0, and 1 for m = 0.
@@ -924,8 +928,16 @@ PHONG_BATCH_ALWAYS_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V,
         else add_lights<F>(sums, s, masked(lights, bits[0]), m);
         return;
     } else {
-        each_visible_light<V, T>(sums, lights.size(), bits, count,
-                                 [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], m); });
+        if constexpr (std::is_same_v<Exponent, exact::lane_shininess<V>> && std::is_same_v<T, float> && exact::step_specular_route<F>) {
+            // Float lanes: the step's specular constants (exact::step_specular), made once per step;
+            // a pair's specular mask is then one compare.
+            const exact::step_specular<V> step_m = exact::step_specular_of(m, s.sees_viewer);
+            each_visible_light<V, T>(sums, lights.size(), bits, count,
+                                     [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], step_m); });
+        } else {
+            each_visible_light<V, T>(sums, lights.size(), bits, count,
+                                     [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], m); });
+        }
     }
 }
 
@@ -1021,10 +1033,12 @@ template <class V, class T> struct step_stream {
 /// (normalizations, the power's polynomial) and its loads from memory with the next step's, which
 /// a call per step kept apart (batch exact at K = 1: 1.4x the hand-written kernel's time with a
 /// call per step; docs/batch.md). Steps read and written in place (SoA points or AoS points with
-/// the transposes in registers; SoA colours or interleaved rgb likewise) take 32 per call (Phong
-/// at K = 1: 0.95x the hand-written kernel's time against 0.99x with 8), steps through the call's
-/// blocks 8 (a block of 32 steps would be 26 KiB).
-inline constexpr std::size_t steps_per_call = 32;
+/// the transposes in registers; SoA colours or interleaved rgb likewise) take 128 per call (K = 1:
+/// Phong 0.94x to 0.95x, Blinn 0.95x to 0.97x the hand-written kernel's time against 0.97x and 0.99x
+/// with 32, 0.99x with 8; 512 gained at most 1 % more), steps through the call's blocks 8 (a block
+/// of 32 steps would be 26 KiB). The arrays per step of a call (per-step material pointers, facing
+/// masks) exist only where they are used.
+inline constexpr std::size_t steps_per_call = 128;
 inline constexpr std::size_t block_steps_per_call = 8;
 /// Whether full steps of these points are read in place, and full steps' colours written in place.
 template <class Points, class V, class T, glm::qualifier Q>
@@ -1042,8 +1056,10 @@ inline constexpr std::size_t call_steps = in_place_steps<F, Points, Output, V, T
 /// step with per-step materials.
 template <class V> exact::lane_shininess<V> shininess_lanes(const V& m)
 {
-    const mask_t<V> zero = m == V(typename math_traits<V>::scalar(0));
-    return {m, zero, math_traits<V>::any(zero)};
+    using S = typename math_traits<V>::scalar;
+    const mask_t<V> zero = m == V(S(0));
+    return {m, zero, math_traits<V>::any(zero), xsimd::select(zero, V(-std::numeric_limits<S>::infinity()), V(S(0))),
+            xsimd::min(m, V(S(0x1p100)))};
 }
 
 /// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
@@ -1291,7 +1307,7 @@ std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t cou
     constexpr bool materials_per_step = !shared && F.mode == evaluation::exact && !std::is_same_v<V, T>;
     constexpr bool table_in_loop = materials_per_step && std::is_same_v<MaterialLanes, table_lanes<V, T, Q>>;
     const bool look_up_in_loop = table_in_loop && count == W;
-    const material<V, Q>* step_material[max_steps] = {}; // zeroed: g++ -O3 cannot see that steps >= 1
+    const material<V, Q>* step_material[materials_per_step ? max_steps : 1] = {}; // zeroed: g++ -O3 cannot see that steps >= 1
     material_slot<V, Q> slots[materials_per_step ? step_material_slots : 1];
     [[maybe_unused]] const auto slot = [&](std::size_t k) -> material<V, Q>& { return slots[k].lanes; };
     if constexpr (materials_per_step) {
@@ -1310,7 +1326,7 @@ std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t cou
     constexpr std::size_t block_steps = in_place ? 1 : block_steps_per_call;
     alignas(64) T in_block[block_steps][9][W];
     alignas(64) T out_block[block_steps][4][W];
-    mask_t<V> front[max_steps];
+    mask_t<V> front[F.two_sided == facing::flag ? max_steps : 1];
     step_stream<V, T> io{};
     constexpr bool soa_in = std::is_same_v<Points, soa_points<T>>;
     if (points_in_place<Points, V, T, Q> && count == W) {

@@ -263,7 +263,42 @@ template <class T> struct lane_shininess {
     T m;
     mask_t<T> zero; ///< m == 0
     bool any_zero;  ///< any(zero)
+    T threshold;    ///< the least cosine whose power is not 0, exclusive: 0, or -inf where m == 0 (pow(c, 0) = 1 for every c)
+    T bounded;      ///< min(m, 2^100): the same powers of every x in [0, 1] (x^m = 0 for x < 1 from m ~ 2^31 on), and m log2 x finite
 };
+
+/// One step's specular constants on float SIMD lanes (shade_batch's light loop, made per step from
+/// lane_shininess and the frame by step_specular_of):
+///  - m: lane_shininess::bounded, the power's exponent;
+///  - threshold: the power of a cosine c is taken where c > threshold (lane_shininess::threshold),
+///    and +inf where the point does not see the viewer, so the specular term is off there;
+///  - halfway_min (Blinn): the least |h|^2 that has a halfway vector, u^2 (lanes_inverse_halfway_length),
+///    or +inf where the point does not see the viewer, so its 1/|h| and cosine are 0.
+/// With them a pair's specular mask is one compare (c > threshold, within the lit lanes): no mask
+/// of m = 0 and of sees_viewer per pair, and the power needs no select of its own (pow_unit_positive).
+/// Where the point does not see the viewer v = 0: Phong's cosine 2 (n.d)(n.v) - d.v is then 0.
+template <class T> struct step_specular {
+    T m;
+    T threshold;
+    T halfway_min;
+};
+
+/// The routes that take step_specular on float lanes: those whose cosine is 0 where the point does
+/// not see the viewer once halfway_min applies (Phong; Blinn in the exact mode without a spot,
+/// whose 1/|h| is lanes_inverse_halfway_length's).
+template <features F>
+inline constexpr bool step_specular_route = F.specular == specular_model::phong ||
+                                            (F.specular == specular_model::blinn && F.spot == spot_model::none && F.mode == evaluation::exact);
+
+/// step_specular for one step: m's per-call (or per-step material) fields and the frame's sees_viewer.
+template <class T>
+PHONG_HD step_specular<T> step_specular_of(const lane_shininess<T>& m, mask_t<T> sees_viewer)
+{
+    using S = scalar_t<T>;
+    constexpr S u = std::numeric_limits<S>::epsilon() / 2, inf = std::numeric_limits<S>::infinity();
+    return {m.bounded, phong::select(sees_viewer, m.threshold, T(inf)), phong::select(sees_viewer, T(u * u), T(inf))};
+}
+
 template <evaluation M, class T>
 PHONG_HD constexpr T route_cosine_power(T x, T scale, const lane_shininess<T>& m)
 {
@@ -302,6 +337,14 @@ PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x,
         const mask_t<T> positive = math_traits<T>::both(on, x > T(0));
         if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
         sum += in_type<T>(specular_of(L)) * (f * fast::pow_integer(phong::select(positive, x * scale, T(0)), m.plan));
+    } else if constexpr (std::is_same_v<Exponent, step_specular<T>>) {
+        // The lanes whose power is not 0: on, and c > 0 (any c where m = 0). The same powers as the
+        // branch below (pow_unit's select, folded into this mask), and the same skip of a step.
+        const T c = x * scale;
+        const mask_t<T> powered = math_traits<T>::both(on, c > m.threshold);
+        if (!math_traits<T>::any(powered)) return; // every power 0: the sum would gain +0
+        const T power = math_traits<T>::pow_unit_positive(math_traits<T>::min(c, T(1)), m.m);
+        sum += in_type<T>(specular_of(L)) * (f * phong::select(powered, power, T(0)));
     } else {
         // Where no lane that is on has c > 0 (nor m = 0: pow(0, 0) = 1), every selected power is 0
         // and the sum would only gain +0: the power is skipped for the whole step, as scalars skip
@@ -351,14 +394,15 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 /// l = -v bit for bit ends up: fl(d inv) = -v leaves h = the products' rounding errors, |h| <= u / 2,
 /// and n.h is taken as 0 as the rounded route does for h = 0. It zeroes nothing that has an exact
 /// bound (accuracy.hpp: a bound needs |l + v| > 2 E_s >= 28 u, and then |fl(h)| > 14 u).
+/// halfway_min: that u^2, or per lane (step_specular) +inf where the point has no view vector.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v)
+PHONG_HD constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v,
+                                                  T halfway_min = T(scalar_t<T>(std::numeric_limits<scalar_t<T>>::epsilon() / 2) *
+                                                                    scalar_t<T>(std::numeric_limits<scalar_t<T>>::epsilon() / 2)))
 {
-    using S = scalar_t<T>;
     const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z));
     const T hh = phong::dot(h, h);
-    constexpr S u = std::numeric_limits<S>::epsilon() / 2;
-    return phong::select(hh >= T(u * u), detail::rsqrt_normal(hh), T(0));
+    return phong::select(hh >= halfway_min, detail::rsqrt_normal(hh), T(0));
 }
 
 /// Blinn's specular term in the fast mode on SIMD lanes with an integer shininess n >= 1
@@ -449,9 +493,13 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     if constexpr (F.diffuse && !diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
     // Phong with the fast integer power (n >= 1): a point without a view vector has v = 0, so its
     // cosine 2 (n.d)(n.v) - d.v is 0 and its power 0 (or v NaN: a poisoned point, cosine not > 0):
-    // no test of sees_viewer per pair.
+    // no test of sees_viewer per pair; nor with step_specular, whose threshold and halfway_min
+    // turn the specular term off there.
+    static_assert(!std::is_same_v<Exponent, step_specular<T>> || step_specular_route<F>);
     [[maybe_unused]] mask_t<T> specular_on;
-    if constexpr (F.specular == specular_model::phong && std::is_same_v<Exponent, integer_exponent<T>>) specular_on = on;
+    if constexpr ((F.specular == specular_model::phong && std::is_same_v<Exponent, integer_exponent<T>>) ||
+                  std::is_same_v<Exponent, step_specular<T>>)
+        specular_on = on;
     else specular_on = math_traits<T>::both(on, s.sees_viewer);
     if constexpr (F.specular == specular_model::phong) {
         add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
@@ -460,7 +508,9 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
         add_halfway_specular_fast(sums, L, f, phong::select(on, nl, T(0)), inv, d, s, m, on);
     } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none && F.mode == evaluation::exact &&
                          !std::is_same_v<mask_t<T>, bool>) {
-        add_specular<F.mode>(sums, L, f, nl + s.nv, lanes_inverse_halfway_length(d, inv, s.view), m, specular_on);
+        if constexpr (std::is_same_v<Exponent, step_specular<T>>)
+            add_specular<F.mode>(sums, L, f, nl + s.nv, lanes_inverse_halfway_length(d, inv, s.view, m.halfway_min), m, specular_on);
+        else add_specular<F.mode>(sums, L, f, nl + s.nv, lanes_inverse_halfway_length(d, inv, s.view), m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn) {
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)

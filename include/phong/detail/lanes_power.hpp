@@ -83,8 +83,10 @@ template <class V> PHONG_LANES_POWER_INLINE V log2_of_split(const V& t, const V&
 }
 
 /// 2^y for y <= 0: k = round(y), r = y - k, 2^r = 1 + r R(r), times 2^k exactly (y clamped below
-/// where 2^y is 0 in float anyway; a NaN y is clamped like -inf).
-template <class V> PHONG_LANES_POWER_INLINE V exp2_nonpositive(const V& y_in)
+/// where 2^y is 0 in float anyway; a NaN y is clamped like -inf). Finite: y known finite (not NaN),
+/// so AVX-512's scalef, which takes any k (2^r 2^k is 0 for k < -150 as for the clamped k = -150),
+/// needs no clamp; exponent-field arithmetic keeps it.
+template <class V, bool Finite = false> PHONG_LANES_POWER_INLINE V exp2_nonpositive(const V& y_in)
 {
     using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
 #if defined(__AVX512F__)
@@ -94,7 +96,8 @@ template <class V> PHONG_LANES_POWER_INLINE V exp2_nonpositive(const V& y_in)
 #endif
     // scalef takes any k; else the exponent field k + 127 stays >= 0 (field 0: the value 0).
     constexpr float y_min = scalef ? -150.0f : -127.0f;
-    const V y = xsimd::max(y_in, V(y_min));
+    V y = y_in;
+    if constexpr (!(Finite && scalef)) y = xsimd::max(y_in, V(y_min));
     const V k = xsimd::nearbyint(y);
     const V r = y - k;
     V q(exp2_coefficients[0]);
@@ -117,6 +120,18 @@ template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m, c
     const V power = exp2_nonpositive(m * log2_of_split(t, e));
     // pow(0, m > 0) = 0 (2^(-126 m) above is not 0 for m < 1); pow(0, 0) = 1 comes out of y = 0.
     return xsimd::select(x > V(0.0f) || m_is_zero, power, V(0.0f));
+}
+
+/// pow_unit without the select: x^m for x in (0, 1] and 0 <= m <= 2^100 (x below 2^-126 taken as
+/// 2^-126), and for m = 0 any x; the lanes with x <= 0 and m > 0 get a finite value that is not 0,
+/// for the caller to select away (shade_batch: with the mask of the lit lanes, one compare per pair).
+/// With m <= 2^100, y = m log2 x is finite (|y| <= 126 2^100), so the exponential needs no clamp of
+/// y under AVX-512. The same bits as pow_unit where it is not selected away; the same bound.
+template <class V> PHONG_LANES_POWER_INLINE V pow_unit_positive(const V& x, const V& m)
+{
+    V e;
+    const V t = split_exponent(xsimd::max(x, V(std::numeric_limits<float>::min())), e);
+    return exp2_nonpositive<V, true>(m * log2_of_split(t, e));
 }
 
 /// x^m lane-wise for x in [0, 1], m >= 0 finite.
