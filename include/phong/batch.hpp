@@ -1058,8 +1058,8 @@ template <class V> exact::lane_shininess<V> shininess_lanes(const V& m)
 {
     using S = typename math_traits<V>::scalar;
     const mask_t<V> zero = m == V(S(0));
-    return {m, zero, math_traits<V>::any(zero), xsimd::select(zero, V(-std::numeric_limits<S>::infinity()), V(S(0))),
-            xsimd::min(m, V(S(0x1p100)))};
+    return {m, zero, math_traits<V>::any(zero), phong::select(zero, V(-std::numeric_limits<S>::infinity()), V(S(0))),
+            phong::min(m, V(S(0x1p100)))};
 }
 
 /// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
