@@ -197,6 +197,36 @@ TEST_CASE("shade_batch's float power: edges")
     CHECK(r <= std::numeric_limits<float>::min());
 }
 
+// pow_unit_positive (shade_batch's exact float lanes with exact::step_specular): pow_unit without
+// its select, m bounded by 2^100 (no clamp of m log2 x under AVX-512). Where pow_unit keeps its
+// power (x > 0, or m = 0) the two agree bit for bit, seeded bases over (0, 1] and exponents up to
+// 2^100 included; with m = 0 every base gives 1; below the domain the result is finite (the caller
+// selects it away).
+TEST_CASE("shade_batch's float power without its select: the same bits where the power is kept")
+{
+    const auto positive = [](float x, float m) {
+        return on_lanes([](const V& a, const V& b) { return phong::math_traits<V>::pow_unit_positive(a, b); }, x, m);
+    };
+    std::mt19937 rng(20261124);
+    std::uniform_real_distribution<float> exponent(-40.0f, 0.0f);
+    for (float m : {0.0f, 0.5f, 1.0f, 32.0f, 1e4f, 3e7f, 0x1p100f}) {
+        CAPTURE(m);
+        for (int i = 0; i < 2000; ++i) {
+            const float x = std::exp2(exponent(rng));
+            CAPTURE(x);
+            CHECK(positive(x, m) == lanes_pow(x, m));
+        }
+        for (float x : {1.0f, std::nextafter(1.0f, 0.0f), std::numeric_limits<float>::min(), std::numeric_limits<float>::denorm_min()})
+            CHECK(positive(x, m) == lanes_pow(x, m));
+    }
+    for (float x : {0.0f, -0.5f, -std::numeric_limits<float>::infinity()}) {
+        CAPTURE(x);
+        CHECK(positive(x, 0.0f) == 1.0f);
+        CHECK(std::isfinite(positive(x, 32.0f)));
+        CHECK(std::isfinite(positive(x, 0x1p100f)));
+    }
+}
+
 #if PHONG_STABLE_LANES
 TEST_CASE("stable_lanes: float lanes split to double and back exactly; the double 1/sqrt within 3 ulp over the float-derived range")
 {

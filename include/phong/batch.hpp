@@ -928,16 +928,15 @@ PHONG_BATCH_ALWAYS_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V,
         else add_lights<F>(sums, s, masked(lights, bits[0]), m);
         return;
     } else {
-        if constexpr (std::is_same_v<Exponent, exact::lane_shininess<V>> && std::is_same_v<T, float> && exact::step_specular_route<F>) {
-            // Float lanes: the step's specular constants (exact::step_specular), made once per step;
-            // a pair's specular mask is then one compare.
-            const exact::step_specular<V> step_m = exact::step_specular_of(m, s.sees_viewer);
-            each_visible_light<V, T>(sums, lights.size(), bits, count,
-                                     [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], step_m); });
-        } else {
-            each_visible_light<V, T>(sums, lights.size(), bits, count,
-                                     [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], m); });
-        }
+        // Float lanes: the step's specular constants (exact::step_specular), made once per step; a
+        // pair's specular mask is then one compare. Else m as given.
+        const auto step_m = [&] {
+            if constexpr (std::is_same_v<Exponent, exact::lane_shininess<V>> && std::is_same_v<T, float> && exact::step_specular_route<F>)
+                return exact::step_specular_of(m, s.sees_viewer);
+            else return m;
+        }();
+        each_visible_light<V, T>(sums, lights.size(), bits, count,
+                                 [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], step_m); });
     }
 }
 

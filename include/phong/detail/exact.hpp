@@ -290,13 +290,27 @@ template <features F>
 inline constexpr bool step_specular_route = F.specular == specular_model::phong ||
                                             (F.specular == specular_model::blinn && F.spot == spot_model::none && F.mode == evaluation::exact);
 
+/// u^2 (u = epsilon / 2): the least |h|^2 that has a halfway vector on SIMD lanes
+/// (lanes_inverse_halfway_length).
+template <class T> PHONG_HD constexpr T lanes_halfway_min()
+{
+    constexpr scalar_t<T> u = std::numeric_limits<scalar_t<T>>::epsilon() / 2;
+    return T(u * u);
+}
+
 /// step_specular for one step: m's per-call (or per-step material) fields and the frame's sees_viewer.
 template <class T>
 PHONG_HD step_specular<T> step_specular_of(const lane_shininess<T>& m, mask_t<T> sees_viewer)
 {
-    using S = scalar_t<T>;
-    constexpr S u = std::numeric_limits<S>::epsilon() / 2, inf = std::numeric_limits<S>::infinity();
-    return {m.bounded, phong::select(sees_viewer, m.threshold, T(inf)), phong::select(sees_viewer, T(u * u), T(inf))};
+    const T inf(std::numeric_limits<scalar_t<T>>::infinity());
+    return {m.bounded, phong::select(sees_viewer, m.threshold, inf), phong::select(sees_viewer, lanes_halfway_min<T>(), inf)};
+}
+
+/// The least |h|^2 with a halfway vector of a step's lanes: step_specular's per lane, else u^2.
+template <class T, class Exponent> PHONG_HD T halfway_min_of([[maybe_unused]] const Exponent& m)
+{
+    if constexpr (std::is_same_v<Exponent, step_specular<T>>) return m.halfway_min;
+    else return lanes_halfway_min<T>();
 }
 
 template <evaluation M, class T>
@@ -394,11 +408,10 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 /// l = -v bit for bit ends up: fl(d inv) = -v leaves h = the products' rounding errors, |h| <= u / 2,
 /// and n.h is taken as 0 as the rounded route does for h = 0. It zeroes nothing that has an exact
 /// bound (accuracy.hpp: a bound needs |l + v| > 2 E_s >= 28 u, and then |fl(h)| > 14 u).
-/// halfway_min: that u^2, or per lane (step_specular) +inf where the point has no view vector.
+/// halfway_min: that u^2 (lanes_halfway_min), or per lane (step_specular) +inf where the point has
+/// no view vector.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v,
-                                                  T halfway_min = T(scalar_t<T>(std::numeric_limits<scalar_t<T>>::epsilon() / 2) *
-                                                                    scalar_t<T>(std::numeric_limits<scalar_t<T>>::epsilon() / 2)))
+PHONG_HD constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v, T halfway_min)
 {
     const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z));
     const T hh = phong::dot(h, h);
@@ -508,9 +521,7 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
         add_halfway_specular_fast(sums, L, f, phong::select(on, nl, T(0)), inv, d, s, m, on);
     } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none && F.mode == evaluation::exact &&
                          !std::is_same_v<mask_t<T>, bool>) {
-        if constexpr (std::is_same_v<Exponent, step_specular<T>>)
-            add_specular<F.mode>(sums, L, f, nl + s.nv, lanes_inverse_halfway_length(d, inv, s.view, m.halfway_min), m, specular_on);
-        else add_specular<F.mode>(sums, L, f, nl + s.nv, lanes_inverse_halfway_length(d, inv, s.view), m, specular_on);
+        add_specular<F.mode>(sums, L, f, nl + s.nv, lanes_inverse_halfway_length(d, inv, s.view, halfway_min_of<T>(m)), m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn) {
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)

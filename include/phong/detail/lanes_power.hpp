@@ -110,14 +110,21 @@ template <class V, bool Finite = false> PHONG_LANES_POWER_INLINE V exp2_nonposit
     return mantissa * xsimd::bitwise_cast<V>(field);
 }
 
+/// 2^(m log2 x) for x in [0, 1] (0 and subnormals taken as 2^-126), m >= 0 finite; Finite: m <= 2^100
+/// (exp2_nonpositive: y = m log2 x is then finite, |y| <= 126 2^100).
+template <class V, bool Finite = false> PHONG_LANES_POWER_INLINE V power_of_log2(const V& x, const V& m)
+{
+    V e;
+    const V t = split_exponent(xsimd::max(x, V(std::numeric_limits<float>::min())), e); // 0, subnormals: 2^-126
+    return exp2_nonpositive<V, Finite>(m * log2_of_split(t, e));
+}
+
 /// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound),
 /// with m_is_zero = (m == 0) given: a caller whose m is the same for many x (the light loop of
 /// shade_batch) computes it once. Edges: x <= 0 and NaN give 0^m (0, or 1 for m = 0).
 template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m, const typename V::batch_bool_type& m_is_zero)
 {
-    V e;
-    const V t = split_exponent(xsimd::max(x, V(std::numeric_limits<float>::min())), e); // 0, subnormals: 2^-126
-    const V power = exp2_nonpositive(m * log2_of_split(t, e));
+    const V power = power_of_log2(x, m);
     // pow(0, m > 0) = 0 (2^(-126 m) above is not 0 for m < 1); pow(0, 0) = 1 comes out of y = 0.
     return xsimd::select(x > V(0.0f) || m_is_zero, power, V(0.0f));
 }
@@ -127,12 +134,7 @@ template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m, c
 /// for the caller to select away (shade_batch: with the mask of the lit lanes, one compare per pair).
 /// With m <= 2^100, y = m log2 x is finite (|y| <= 126 2^100), so the exponential needs no clamp of
 /// y under AVX-512. The same bits as pow_unit where it is not selected away; the same bound.
-template <class V> PHONG_LANES_POWER_INLINE V pow_unit_positive(const V& x, const V& m)
-{
-    V e;
-    const V t = split_exponent(xsimd::max(x, V(std::numeric_limits<float>::min())), e);
-    return exp2_nonpositive<V, true>(m * log2_of_split(t, e));
-}
+template <class V> PHONG_LANES_POWER_INLINE V pow_unit_positive(const V& x, const V& m) { return power_of_log2<V, true>(x, m); }
 
 /// x^m lane-wise for x in [0, 1], m >= 0 finite.
 template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m) { return pow_unit(x, m, m == V(0.0f)); }
