@@ -249,6 +249,46 @@ TEST_CASE_TEMPLATE("shade_batch degenerate lanes: documented finite values, NaN 
     }
 }
 
+// A light nearer than sqrt(smallest normal T): the floor bounds d^2 *before* the window multiplies,
+// f = window^2 / max(d^2, floor), in every mode and on every route. Float lights on double lanes
+// (the stable mode's wider route) used to cap the quotient instead, min(window^2 / d^2, 1 / floor):
+// 1 / window^2 too large (a fuzzer finding, 2026-11-24).
+template <class T, features F> void check_light_below_floor()
+{
+    // d = 2^-62 (float: d^2 = 2^-124 is normal but below the floor 2^-63), range = 2 d: window = (15/16)^2.
+    const T d = std::ldexp(T(1), -62);
+    material<T> mat{.ka = glm::vec<3, T>(T(1)), .kd = glm::vec<3, T>(T(0)), .ks = glm::vec<3, T>(T(0))};
+    std::array<light<T>, 1> lights{};
+    lights[0].position = {T(0), d, T(-1), T(1)};
+    lights[0].ambient = glm::vec<3, T>(T(1));
+    lights[0].attenuation.range = 2 * d;
+    const environment<T> env{};
+    // The formula written literally, in long double, with the documented floors (2^-63 float, 2^-511 double).
+    const long double floor = std::is_same_v<T, float> ? std::ldexp(1.0L, -63) : std::ldexp(1.0L, -511);
+    const long double dd = std::ldexp(1.0L, -124), window = 1 - std::pow(0.5L, 4);
+    const double expected = double(window * window / std::max(dd, floor));
+    soa_scene<T> s;
+    for (std::size_t i = 0; i < batch_width<T> + 1; ++i) s.add({T(0), T(0), T(-1)}, {T(0), T(0), T(1)});
+    s.template shade<F>(mat, lights, env);
+    const auto scalar = shade<F>(glm::vec<3, T>(T(0), T(0), T(-1)), glm::vec<3, T>(T(0), T(0), T(1)), mat, lights, env);
+    CHECK(double(scalar.r) == doctest::Approx(expected).epsilon(1e-6));
+    for (std::size_t i = 0; i < s.size(); ++i) CHECK(double(s.r[i]) == doctest::Approx(expected).epsilon(1e-6));
+}
+
+TEST_CASE("shade_batch and shade: a light nearer than the attenuation floor gets the window, every mode")
+{
+    constexpr features F{.scene_ambient = false, .light_ambient = true, .diffuse = false, .specular = specular_model::none,
+                         .lights = light_kind::positional, .attenuation = attenuation_model::windowed};
+    constexpr features twofold{.scene_ambient = false, .light_ambient = true, .diffuse = false, .specular = specular_model::none,
+                               .lights = light_kind::positional, .attenuation = attenuation_model::windowed,
+                               .mode = evaluation::stable, .precision = stable_precision::twofold};
+    check_light_below_floor<float, presets::with_mode(F, evaluation::exact)>();
+    check_light_below_floor<float, presets::with_mode(F, evaluation::stable)>();
+    check_light_below_floor<float, twofold>();
+    check_light_below_floor<float, presets::with_mode(F, evaluation::fast)>();
+    check_light_below_floor<double, presets::with_mode(F, evaluation::stable)>();
+}
+
 TEST_CASE_TEMPLATE("shade_batch: per-point materials and interleaved output equal the SoA path", T, float, double)
 {
     constexpr features F{.light_ambient = true, .specular = specular_model::blinn, .lights = light_kind::any,

@@ -34,25 +34,29 @@ struct falloff {
 /// Pre: c0, c1, c2 >= 0 and finite, d >= 0. Edge: d = 0 with c0 = 0 gives the cap
 /// 1 / attenuation_denominator_min<T>; d = inf is taken as the largest finite T, which gives 0
 /// when c2 > 0 and at most 1 / (c1 max) (2.9e-39 in float) when only c1 > 0; NaN d gives NaN.
-template <class T>
+/// Floor: the type whose attenuation_denominator_min applies (T's scalar; float lights evaluated
+/// in double pass float, so the result is float's formula evaluated in double).
+template <class T, class Floor = scalar_t<T>>
 PHONG_HD constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 {
     d = phong::min(d, largest<T>()); // inf -> max: keeps c2 * d finite
     const T denominator = c0 + d * (c1 + c2 * d);
-    return T(1) / phong::max(denominator, T(attenuation_denominator_min<scalar_t<T>>));
+    return T(1) / phong::max(denominator, T(attenuation_denominator_min<Floor>));
 }
 
 /// Windowed inverse square (Filament, three.js "physically based" falloff):
 ///   f = clamp(1 - (d / range)^4, 0, 1)^2 / max(d^2, attenuation_denominator_min<T>)
 /// Reaches exactly 0 at d >= range and stays finite at d = 0 (cap 1/attenuation_denominator_min).
 /// Pre: range > 0 (inf allowed: pure inverse square), d >= 0. Edge: d = inf gives 0.
-template <class T>
+/// Floor: as for attenuation_polynomial. The floor bounds d^2 before the window multiplies, so
+/// capping the quotient afterwards would differ (by up to 1/window^2) where d^2 < the floor.
+template <class T, class Floor = scalar_t<T>>
 PHONG_HD constexpr T attenuation_windowed(T d, T range)
 {
     d = phong::min(d, largest<T>());
     const T ratio = phong::min(d / range, T(65536)); // ratio^4 stays finite; window is 0 anyway
     const T window = phong::clamp(T(1) - pow<4>(ratio), T(0), T(1));
-    return window * window / phong::max(d * d, T(attenuation_denominator_min<scalar_t<T>>));
+    return window * window / phong::max(d * d, T(attenuation_denominator_min<Floor>));
 }
 
 /// A spot cone: the axis the light points along and its two parametrizations, OpenGL's

@@ -92,9 +92,10 @@ PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T
 /// distance = |L.xyz - Q| (validate: w is 0 or 1), read only with attenuation;
 /// l = the unit light vector (0 if none), read only with a spot. Directional lights (w = 0) are
 /// not attenuated. U is the light's own scalar type: float lights shaded in double keep float's
-/// cap on f (attenuation.hpp), so a light at Q gives the same large finite value as in float.
+/// floor under the attenuation's denominator (attenuation.hpp), so f is float's formula: a light
+/// at Q gives the same large finite value as in float, with the window applied as in float.
 /// visibility: unweighted, or the caller's weight in [0, 1] (phong::weighted: soft shadows).
-/// Light: a light_source (light.hpp), read through light_traits. Cap: the scalar type whose cap
+/// Light: a light_source (light.hpp), read through light_traits. Cap: the scalar type whose floor
 /// applies (the light's; float lights widened to double by the caller name float here,
 /// detail/stable_lanes.hpp).
 template <features F, class T, glm::qualifier Q, class Light, class W, class Cap = light_scalar_t<Light>>
@@ -106,11 +107,13 @@ PHONG_HD constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_unuse
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) {
         T fa;
         decltype(auto) a = attenuation_of(L);
+        // The larger floor of T's and Cap's: float lights shaded in double get float's formula.
+        using Floor = std::conditional_t<(attenuation_denominator_min<scalar_t<Cap>> > attenuation_denominator_min<scalar_t<T>>),
+                                         scalar_t<Cap>, scalar_t<T>>;
         if constexpr (F.attenuation == attenuation_model::polynomial)
-            fa = phong::attenuation_polynomial(distance, T(a.constant), T(a.linear), T(a.quadratic));
+            fa = phong::attenuation_polynomial<T, Floor>(distance, T(a.constant), T(a.linear), T(a.quadratic));
         else
-            fa = phong::attenuation_windowed(distance, T(a.range));
-        if constexpr (!std::is_same_v<Cap, T>) fa = phong::min(fa, T(1 / attenuation_denominator_min<Cap>));
+            fa = phong::attenuation_windowed<T, Floor>(distance, T(a.range));
         if constexpr (F.lights == light_kind::any) f = phong::select(w > T(0), fa, T(1));
         else f = fa;
     }
