@@ -143,6 +143,12 @@ template <class D> inline D inverse_length(const D& dd)
 /// point) or in [2^-298, 2^257] (finite input; min and max of double are far outside), or NaN or
 /// inf (non-finite input: the lane is poisoned, its value does not matter). One test: dd > 0.
 /// Pre: d's components are differences of floats (or floats).
+/// Blinn's |l + v|^2 (half_light) takes it too: l = d / |d| and v = e / |e| rounded, with d and e
+/// float-derived, so a nonzero component of l or v is at least 2^-149 / 2^130 = 2^-279 (float's
+/// least step over the longest float vector) and a nonzero component of l + v at least an ulp of
+/// that, 2^-331: a nonzero |l + v|^2 is above 2^-662, far inside double's normal range, and at
+/// most 4, so 1/|l + v| is inverse_length's, bit for bit, with one test instead of two and no
+/// select of the input (Blinn's stable lanes, K = 16: 5 % faster).
 template <class D> inline D inverse_length_of_float_difference(const D& dd)
 {
     return xsimd::select(dd > D(0.0), rsqrt_normal(dd), D(0.0));
@@ -248,15 +254,23 @@ inline half_terms<D> half_light(const half_frame<D, Q>& s, const light<double, Q
     const vec3 d = detail::homogeneous_difference<F.lights>(vec3(D(L.position.x), D(L.position.y), D(L.position.z)), w, s.position);
     const D dd = phong::dot(d, d);
     const D nd = phong::dot(s.normal, d);
-    const D inv = inverse_length_of_float_difference(dd); // 0: the light is at Q (no direction)
+    // 1/|d|, 0 where the light is at Q (no direction). Gated with f = 1, nothing reads it off the
+    // lit lanes (their n.d > 0 implies dd > 0) but through the masks below: there it is taken as is
+    // (NaN for dd = 0, discarded), one compare and one select fewer.
+    D inv;
+    if constexpr (gated<F> && unit_factor<F>) inv = rsqrt_normal(dd);
+    else inv = inverse_length_of_float_difference(dd);
     // Rounded products: an fma contracted into Blinn's l + v would keep l = -v (d a power-of-two
     // multiple of -Q, as v's e) from cancelling exactly (found by the blinn_opposite class, AVX-512).
     const vec3 l(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
     D distance(0.0);
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = dd * inv;
     const D f = light_factor<F, D, Q, light<double, Q>, unweighted, float>(L, distance, w, l, unweighted{});
-    auto on = s.defined && (inv > D(0.0));
+    // Lit: a defined normal, a light direction (inv > 0) and, where gated, n.l > 0. Gated, n.d > 0
+    // implies d != 0 and so inv > 0 (a nonzero float-derived dd is at least 2e-90): one compare.
+    auto on = s.defined;
     if constexpr (gated<F>) on = on && (nd > D(0.0));
+    else on = on && (inv > D(0.0));
     const D nl = nd * inv;
     half_terms<D> t{D(0.0), D(0.0), D(1.0), D(0.0), f, on};
     if constexpr (F.diffuse) t.diffuse = xsimd::select(on, f * (gated<F> ? nl : xsimd::max(nl, D(0.0))), D(0.0));
@@ -265,7 +279,7 @@ inline half_terms<D> half_light(const half_frame<D, Q>& s, const light<double, Q
             t.c = phong::dot(d, s.reflected_view) * inv; // r.v = l.(2 (n.v) n - v)
         } else {
             const vec3 sum = l + s.view;
-            const D inv_h = inverse_length(phong::dot(sum, sum)); // 0: l = -v, n.h taken as 0
+            const D inv_h = inverse_length_of_float_difference(phong::dot(sum, sum)); // 0: l = -v, n.h taken as 0
             t.c = (nl + s.nv) * inv_h;
         }
         t.x = D(1.0) - t.c; // pow_cosine takes x < 0 (rounding) as 0, c <= 0 as 0 (and NaN as 0)
