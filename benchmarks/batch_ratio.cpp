@@ -63,7 +63,7 @@ template <bool Blinn, phong::evaluation Mode> void compare(std::size_t N, std::s
     }
     std::sort(ratios.begin(), ratios.end());
     const double pairs = double(N * K);
-    std::printf("%-5s K=%-2zu  hand %.3f ns/pair  batch %s %.3f ns/pair  ratio of best %.2f  median ratio %.2f\n",
+    std::printf("%-5s K=%-2zu  hand %.3f ns/pair  batch %s %.3f ns/pair  ratio of best %.3f  median ratio %.3f\n",
                 Blinn ? "blinn" : "phong", K, best_hand * 1e9 / pairs, Mode == phong::evaluation::fast ? "fast" : Mode == phong::evaluation::stable ? "stable" : "exact",
                 best_batch * 1e9 / pairs, best_batch / best_hand, ratios[ratios.size() / 2]);
 }

@@ -7,7 +7,8 @@
 # Usage: benchmarks/report.sh [--docs] [extra Google Benchmark flags, e.g. --benchmark_filter=K:1/]
 #   --docs  also copy the report and the plot to docs/benchmarks/ (what README.md shows)
 # Output: build/bench/report/{report.md,error_vs_time.png,results.json}; the report is printed.
-# Takes about 5 minutes on 2 cores (build ~1 min, suite ~4 min, callgrind ~15 s).
+# Takes about 7 minutes on 2 cores (build ~1 min, suite ~5 min, callgrind ~15 s, the interleaved
+# batch / hand ratios ~20 s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 docs=0
@@ -17,7 +18,7 @@ out=$build/report
 mkdir -p "$out"
 
 cmake --preset bench >/dev/null
-cmake --build --preset bench -j 2 --target phong_bench phong_feature_cost
+cmake --build --preset bench -j 2 --target phong_bench phong_feature_cost phong_batch_ratio
 
 echo "Running the suite (5 repetitions per row in random order, medians; load average: $(cut -d' ' -f1-3 /proc/loadavg))"
 # Random interleaving: the repetitions of all rows run in a shuffled order, so a slow spell of this
@@ -28,7 +29,11 @@ echo "Running the suite (5 repetitions per row in random order, medians; load av
 
 benchmarks/feature_cost.sh "$build" | tee "$out/feature_cost.txt" || true
 
-python3 benchmarks/report.py "$out/results.json" "$out" "$build/feature_cost.tsv"
+# The batch targets' ratios once more with both kernels alternating in one process (about 20 s): a
+# steadier figure printed beside the verdicts, which stay the rows' above.
+for mode in exact fast stable; do "$build/benchmarks/phong_batch_ratio" "$mode"; done >"$out/batch_ratio.txt"
+
+python3 benchmarks/report.py "$out/results.json" "$out" "$build/feature_cost.tsv" "$out/batch_ratio.txt"
 cat "$out/report.md"
 if ((docs)); then
   mkdir -p docs/benchmarks

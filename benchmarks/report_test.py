@@ -88,6 +88,30 @@ class PicturePoints(unittest.TestCase):
         self.assertNotIn("`naive_glm", md.split("Anchors")[0])  # anchors are not recommended
 
 
+class InterleavedSection(unittest.TestCase):
+    def test_rows_with_a_target_get_its_limit_and_verdict(self):
+        text = ("hand-written kernel: avx512, float, typical points, N = 65536, 60 interleaved repetitions\n"
+                "phong K=16  hand 1.042 ns/pair  batch fast 0.620 ns/pair  ratio of best 0.59  median ratio 0.61\n"
+                "blinn K=4   hand 1.473 ns/pair  batch exact 1.365 ns/pair  ratio of best 0.93  median ratio 0.93\n"
+                "blinn K=4   hand 1.473 ns/pair  batch stable 2.917 ns/pair  ratio of best 1.98  median ratio 1.98\n")
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "batch_ratio.txt")
+            with open(path, "w") as f:
+                f.write(text)
+            md = report.interleaved_section(path)
+        rows = [line for line in md if line.startswith("| ") and not line.startswith("| mode")]
+        self.assertEqual(rows, ["| fast | phong | 16 | 1.042 | 0.620 | 0.61 | 0.6 | **no** |",  # 0.61 > 0.6
+                                "| exact | blinn | 4 | 1.473 | 1.365 | 0.93 | 1.0 | yes |",
+                                "| stable | blinn | 4 | 1.473 | 2.917 | 1.98 | – | – |"])  # no stable target at K = 4
+
+    def test_no_rows_no_section(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "batch_ratio.txt")
+            with open(path, "w") as f:
+                f.write("phong_batch_ratio: the hand-written kernel needs AVX-512F or AVX2 + FMA\n")
+            self.assertEqual(report.interleaved_section(path), [])
+
+
 class EndToEnd(unittest.TestCase):
     def test_report_and_picture_from_benchmark_json(self):
         bench = []
