@@ -29,7 +29,7 @@ struct falloff {
 };
 
 /// Polynomial attenuation (seed 000's f_i(Q), OpenGL):
-///   f = 1 / max(c0 + c1 d + c2 d^2, attenuation_denominator_min<T>)
+///   f = 1 / max(c0 + c1 d + c2 d^2, attenuation_denominator_min<Floor>)
 /// evaluated as c0 + d (c1 + c2 d), so c2 = 0 with a huge d gives no 0 * inf.
 /// Pre: c0, c1, c2 >= 0 and finite, d >= 0. Edge: d = 0 with c0 = 0 gives the cap
 /// 1 / attenuation_denominator_min<T>; d = inf is taken as the largest finite T, which gives 0
@@ -45,7 +45,7 @@ PHONG_HD constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 }
 
 /// Windowed inverse square (Filament, three.js "physically based" falloff):
-///   f = clamp(1 - (d / range)^4, 0, 1)^2 / max(d^2, attenuation_denominator_min<T>)
+///   f = clamp(1 - (d / range)^4, 0, 1)^2 / max(d^2, attenuation_denominator_min<Floor>)
 /// Reaches exactly 0 at d >= range and stays finite at d = 0 (cap 1/attenuation_denominator_min).
 /// Pre: range > 0 (inf allowed: pure inverse square), d >= 0. Edge: d = inf gives 0.
 /// Floor: as for attenuation_polynomial. The floor bounds d^2 before the window multiplies, so

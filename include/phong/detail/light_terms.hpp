@@ -95,10 +95,10 @@ PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T
 /// floor under the attenuation's denominator (attenuation.hpp), so f is float's formula: a light
 /// at Q gives the same large finite value as in float, with the window applied as in float.
 /// visibility: unweighted, or the caller's weight in [0, 1] (phong::weighted: soft shadows).
-/// Light: a light_source (light.hpp), read through light_traits. Cap: the scalar type whose floor
-/// applies (the light's; float lights widened to double by the caller name float here,
-/// detail/stable_lanes.hpp).
-template <features F, class T, glm::qualifier Q, class Light, class W, class Cap = light_scalar_t<Light>>
+/// Light: a light_source (light.hpp), read through light_traits. LightScalar: the light's own
+/// scalar type, whose attenuation floor applies (float lights widened to double by the caller name
+/// float here, detail/stable_lanes.hpp).
+template <features F, class T, glm::qualifier Q, class Light, class W, class LightScalar = light_scalar_t<Light>>
 PHONG_HD constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
                                   [[maybe_unused]] const glm::vec<3, T, Q>& l, [[maybe_unused]] W visibility)
 {
@@ -107,9 +107,9 @@ PHONG_HD constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_unuse
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) {
         T fa;
         decltype(auto) a = attenuation_of(L);
-        // The larger floor of T's and Cap's: float lights shaded in double get float's formula.
-        using Floor = std::conditional_t<(attenuation_denominator_min<scalar_t<Cap>> > attenuation_denominator_min<scalar_t<T>>),
-                                         scalar_t<Cap>, scalar_t<T>>;
+        // The larger floor of T's and the light's: float lights shaded in double get float's formula.
+        using S = scalar_t<LightScalar>;
+        using Floor = std::conditional_t<(attenuation_denominator_min<S> > attenuation_denominator_min<scalar_t<T>>), S, scalar_t<T>>;
         if constexpr (F.attenuation == attenuation_model::polynomial)
             fa = phong::attenuation_polynomial<T, Floor>(distance, T(a.constant), T(a.linear), T(a.quadratic));
         else
