@@ -133,6 +133,11 @@ template <class T> constexpr bool vector_functions()
     static_assert(phong::attenuation_polynomial(T(0), T(0), T(0), T(1)) == T(1) / phong::attenuation_denominator_min<T>);
     static_assert(phong::attenuation_windowed(T(4), T(4)) == T(0));
     static_assert(phong::attenuation_windowed(T(2), std::numeric_limits<T>::infinity()) == T(0.25));
+    // Floor = float in T = double: float's floor 2^-63 under the denominator, by hand. d = 2^-62 and
+    // range 2^-61: window (1 - 1/16)^2 = 225/256 over 2^-63 = 225 2^55 (the window applied below
+    // the floor too); d = 0 with c2 = 1: 2^63.
+    static_assert(phong::attenuation_windowed<double, float>(0x1p-62, 0x1p-61) == 225 * 0x1p55);
+    static_assert(phong::attenuation_polynomial<double, float>(0.0, 0.0, 0.0, 1.0) == 0x1p63);
     static_assert(phong::spot_opengl(vec3<T>(0, 0, 1), vec3<T>(0, 0, -1), T(5), T(0.5)) == T(1));
     static_assert(phong::spot_opengl(vec3<T>(1, 0, 0), vec3<T>(0, 0, -1), T(5), T(0.5)) == T(0));
     static_assert(phong::spot_smooth(vec3<T>(0, 0, 1), vec3<T>(0, 0, -1), T(0.9), T(0.8)) == T(1));
