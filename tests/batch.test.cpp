@@ -289,6 +289,37 @@ TEST_CASE("shade_batch and shade: a light nearer than the attenuation floor gets
     check_light_below_floor<double, presets::with_mode(F, evaluation::stable)>();
 }
 
+// The stable mode's view vector normalize(E.xyz - E.w Q) does not change when the eye point E is
+// scaled by a power of two. A tiny E (components 3e-319 and 2.5e-322, subnormal) and the same E
+// times 2^1000 (exact) must give the same colours, bit for bit, scalar and batch: the tiny one's
+// products E.w Q are subnormal, where the twofold product error is not exact (a fuzzer finding,
+// 2026-11-25: 1.4e-6 between the scalar path and SSE2 lanes).
+TEST_CASE("stable mode: a tiny eye point gives the colours of the same eye scaled by 2^1000")
+{
+    constexpr features F{.specular_gate = false, .lights = light_kind::any, .two_sided = facing::view,
+                         .view = view_model::eye_point, .mode = evaluation::stable};
+    const material<double> mat{.ka = glm::dvec3(0.5), .kd = glm::dvec3(0.75), .ks = glm::dvec3(0.25), .shininess = 10.4375};
+    std::array<light<double>, 1> lights{};
+    lights[0].position = {-1.0, -1.0, -11.75, 0.0};
+    environment<double> tiny{}, scaled{};
+    tiny.eye = {0.0, 0.0, 3.2379086165851934e-319, 2.4703282292062327e-322};
+    scaled.eye = tiny.eye * 0x1p1000;
+    soa_scene<double> a, b;
+    for (int k = 0; k < 9; ++k) {
+        const glm::dvec3 q(-5.75 + 0.5 * k, -10.0, -10.0 + 0.25 * k), n(-1.0, -1.0, 0.125 * k);
+        a.add(q, n), b.add(q, n);
+        const auto c1 = shade<F>(q, n, mat, lights, tiny), c2 = shade<F>(q, n, mat, lights, scaled);
+        CAPTURE(k);
+        CHECK(c1 == c2);
+    }
+    a.template shade<F>(mat, lights, tiny);
+    b.template shade<F>(mat, lights, scaled);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        CAPTURE(i);
+        CHECK(a.color(i) == b.color(i));
+    }
+}
+
 TEST_CASE_TEMPLATE("shade_batch: per-point materials and interleaved output equal the SoA path", T, float, double)
 {
     constexpr features F{.light_ambient = true, .specular = specular_model::blinn, .lights = light_kind::any,
