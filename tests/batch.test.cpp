@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 using namespace phong;
@@ -317,6 +318,74 @@ TEST_CASE("stable mode: a tiny eye point gives the colours of the same eye scale
     for (std::size_t i = 0; i < a.size(); ++i) {
         CAPTURE(i);
         CHECK(a.color(i) == b.color(i));
+    }
+}
+
+TEST_CASE_TEMPLATE("stable mode: an eye point whose products E.w Q are subnormal or overflow gives the colours of the model",
+                   T, float, double)
+{
+    // v = normalize(E.xyz - E.w Q) where the products E.w Q are subnormal (double: Q ~ 1e-315,
+    // float: 1e-40), so that their twofold error terms are not exact; where E.xyz cancels E.w Q in
+    // one component and the others are subnormal; and where |E.w Q| is beyond T's range although
+    // the direction is finite. Phong at m = 1000 with l mirroring v about n, so that an error of
+    // the view moves the colour m-fold. Expected: the reference model (tests/support/reference.hpp,
+    // in a wide type); scalar and batch within 8 eps (before: 1e-8 to 2e-3 in double; no specular
+    // at all where E.w Q overflowed). Float takes the twofold route (the wider one, double, has
+    // none of these).
+    constexpr features F{.specular_gate = false, .lights = light_kind::any, .two_sided = facing::view,
+                         .view = view_model::eye_point, .mode = evaluation::stable, .precision = stable_precision::twofold};
+    constexpr bool is_double = std::is_same_v<T, double>;
+    using vec3 = glm::vec<3, T>;
+    const material<T> mat{.ka = vec3(0), .kd = vec3(0.25), .ks = vec3(0.5), .shininess = T(1000)};
+    struct eye_case {
+        glm::vec<4, T> eye;
+        vec3 point;      ///< points: point + (k dx, k dy, 0) times scale, k = 0..5 (x, y: the scaled part)
+        T scale;
+        bool cancel_x;   ///< point.x is not scaled: E.x - E.w Q.x = 0 exactly
+    };
+    const T tiny = is_double ? T(1e-315) : T(1e-40), huge_w = is_double ? T(0x1p600) : T(0x1p100),
+            huge_q = is_double ? T(0x1p500) : T(0x1p60), huge_x = is_double ? T(0x1p1000) : T(0x1p120),
+            big_q = is_double ? T(0x1p420) : T(0x1p40);
+    const vec3 mirror(T(0.31), T(0.17), T(-1)); // v along -mirror: l = (0.32, 0.16, 1) mirrors it about n
+    const eye_case cases[] = {
+        {{T(0), T(0), T(0), T(0.3)}, mirror, tiny, false},
+        {{T(0), T(0), T(0), T(1e-5)}, mirror, tiny, false},
+        {{tiny / 10, T(0), T(0), T(0.7)}, mirror, tiny, false},
+        {{T(1), T(0), T(0), T(0.5)}, vec3(T(2), T(0.17), T(-1)), tiny / 100, true},
+        {{T(0), T(0), T(0), huge_w}, mirror, huge_q, false},
+        {{huge_x, T(0), T(0), huge_w / 3}, mirror, big_q, false},
+    };
+    const wide tolerance = 8 * wide(std::numeric_limits<T>::epsilon());
+    const vec3 n(T(0), T(0), T(1));
+    for (const eye_case& c : cases) {
+        std::array<light<T>, 1> lights{};
+        lights[0].position = {c.cancel_x ? T(0) : T(0.32), T(0.16), T(1), T(0)};
+        environment<T> env{};
+        env.eye = c.eye;
+        soa_scene<T> pts;
+        std::vector<wcolor> expected;
+        for (int k = 0; k < 6; ++k) {
+            const vec3 base = c.point + vec3(T(0.013 * k), T(-0.007 * k), T(0));
+            vec3 q = base * (c.scale * T(1 + k));
+            if (c.cancel_x) q.x = c.point.x;
+            pts.add(q, n);
+            expected.push_back(reference_shade(F, q, n, mat, std::span<const light<T>>(lights), env));
+        }
+        pts.template shade<F>(mat, lights, env);
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            CAPTURE(c.eye.x);
+            CAPTURE(c.eye.w);
+            CAPTURE(c.scale);
+            CAPTURE(i);
+            const vec3 q(pts.px[i], pts.py[i], pts.pz[i]);
+            const auto scalar = shade<F>(q, n, mat, lights, env);
+            CHECK(expected[i].r > 1e-3); // the specular term is on: the test reads the view vector
+            for (int ch = 0; ch < 3; ++ch) {
+                CAPTURE(ch);
+                CHECK(std::abs(wide(scalar[ch]) - expected[i][ch]) <= tolerance * expected[i][ch]);
+                CHECK(std::abs(wide(pts.color(i)[ch]) - expected[i][ch]) <= tolerance * expected[i][ch]);
+            }
+        }
     }
 }
 

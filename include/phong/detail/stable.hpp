@@ -81,19 +81,40 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     if constexpr (F.view == view_model::eye_at_origin) e.hi = -position;
     if constexpr (F.view == view_model::given) e.hi = given_view;
     if constexpr (F.view == view_model::eye_point) {
-        // E.xyz - E.w Q keeps its direction when E is scaled by a power of two (exact). An eye point
-        // whose every component is tiny (double: below 2^-960; float: 2^-100) is scaled up first, its
-        // largest component to about 2^-60 (float 2^-30): its products E.w Q would be subnormal, where
-        // the twofold product's error term is not exact (a fuzzer finding: E.w = 2.5e-322 gave 1.4e-6
-        // between scalar and SIMD lanes). Other eye points are used as given (scale 1: the same bits).
+        // d = E.xyz - E.w Q is formed as 2^(a+b) d = (E.xyz 2^a) 2^b - (E.w 2^a)(Q 2^b), which has
+        // d's direction exactly: 2^a brings E's largest component to [1, 2) (E is homogeneous), 2^b
+        // the larger of E.xyz 2^a and Q. Every term is then at most 4, and a product (E.w 2^a)
+        // (Q_k 2^b), or a component scaled by 2^b < 1, can be subnormal only where it is far below
+        // the largest term. Its rounding error is then not exact (a subnormal has no room for
+        // it), which matters only where d cancels to far below its terms: there (|d| < 2^-900 in
+        // double, 2^-100 in float) d is formed again with E.xyz 2^(a+b) and Q 2^b scaled up by
+        // 2^1000 (float 2^120). Fuzzer finding: E.w =
+        // 2.5e-322 gave 1.4e-6 between scalar and SIMD lanes; and E = (0, 0, 0, 1e-5) with
+        // Q ~ 1e-315 gave 2e-3 against the model. Where no intermediate is subnormal or overflows,
+        // every value is the unscaled one times a power of two: unit_of gives the same bits; and
+        // |E.w Q| > max no longer leaves the viewer without a direction.
         using S = scalar_t<T>;
-        constexpr S tiny = std::is_same_v<S, float> ? S(0x1p-100) : S(0x1p-960);
-        constexpr S target = std::is_same_v<S, float> ? S(0x1p-30) : S(0x1p-60);
-        const T largest = phong::max(phong::max(phong::abs(T(env.eye.x)), phong::abs(T(env.eye.y))),
-                                     phong::max(phong::abs(T(env.eye.z)), phong::abs(T(env.eye.w))));
-        const mask_t<T> scaled = largest < T(tiny);
-        const T scale = phong::select(scaled, math_traits<T>::inverse_pow2_scale(phong::select(scaled, largest, T(1))) * T(target), T(1));
-        e = difference_twofold<light_kind::any>(eye * scale, T(env.eye.w) * scale, position);
+        constexpr bool is_float = std::is_same_v<S, float>;
+        const T ew(env.eye.w);
+        const T a = math_traits<T>::inverse_pow2_scale(phong::max(phong::max_abs(eye), phong::abs(ew)));
+        const vec3 eye_a = eye * a;
+        const T b = math_traits<T>::inverse_pow2_scale(phong::max(phong::max_abs(eye_a), phong::max_abs(position)));
+        const vec3 eye_ab = eye_a * b, position_b = position * b;
+        e = difference_twofold<light_kind::any>(eye_ab, ew * a, position_b);
+        const mask_t<T> cancelled = phong::max_abs(e.hi) < T(is_float ? S(0x1p-100) : S(0x1p-900));
+        if (math_traits<T>::any(cancelled)) {
+            // From E.xyz 2^a and Q: 2^b <= 1 here (unless E is 0 or subnormal) may have dropped
+            // subnormal bits, 2^b times the large scale cannot.
+            const T up = phong::select(cancelled, T(is_float ? S(0x1p120) : S(0x1p1000)), T(1));
+            const mask_t<T> down = b <= T(1);
+            const T bu = b * up;
+            vec3 eye_up(T(0)), position_up(T(0));
+            for (int k = 0; k < 3; ++k) {
+                eye_up[k] = phong::select(down, eye_a[k] * bu, eye_ab[k] * up);
+                position_up[k] = phong::select(down, position[k] * bu, position_b[k] * up);
+            }
+            e = difference_twofold<light_kind::any>(eye_up, ew * a, position_up);
+        }
     }
     const unit_twofold<T, Q> uv = unit_of(e.hi, e.lo);
     s.view = uv.hi;
