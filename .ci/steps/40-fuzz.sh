@@ -3,8 +3,9 @@
 # (copied: new units are not kept), with a fixed seed: the same inputs in the same order on every
 # run, whatever the machine's load (a time bound made CI's reach depend on it: on 2026-11-24 two CI
 # runs of one commit stopped at different findings). Explore further with PHONG_FUZZ_RUNS /
-# PHONG_FUZZ_BATCH_RUNS and PHONG_FUZZ_SEED=0 (random); an open finding of such a run is in the
-# closing note of 2026-11-24 (double stable batch, m = 1e236, Q = n = 1e30: batch vs scalar).
+# PHONG_FUZZ_BATCH_RUNS and PHONG_FUZZ_SEED=0 (random). Such runs found the double stable batch at
+# m = 1e236 (now in fuzz_batch.cpp's tolerance: the twofold cosine's eps^2 times m) and the eye
+# point with subnormal products E.w Q (fixed, 2026-11-25); a finding goes into the seed corpus.
 #  * fuzz_shade (tests/fuzz/fuzz_shade.cpp): phong::shade and phong::validate, PHONG_FUZZ_RUNS (300000);
 #  * fuzz_batch and fuzz_batch_native (tests/fuzz/fuzz_batch.cpp): shade_batch against shade at the
 #    baseline ISA and with -march=native, PHONG_FUZZ_BATCH_RUNS each (30000).
