@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <type_traits>
 #include <vector>
 
@@ -387,6 +388,81 @@ TEST_CASE_TEMPLATE("stable mode: an eye point whose products E.w Q are subnormal
             }
         }
     }
+}
+
+TEST_CASE_TEMPLATE("stable mode: scaling every position and normal by 2^k leaves the colours unchanged, bit for bit", T, float, double)
+{
+    // Without attenuation the model reads only directions, and 2^k (Q, L.xyz, E.xyz, n) has the
+    // directions of (Q, L.xyz, E.xyz, n) for every k, subnormal and huge values included: the
+    // stable mode's rescaling by powers of two must then give the same bits (the twofold route
+    // relies on exact error terms, which a subnormal intermediate loses). Positions are on a grid
+    // of 10-bit values, so that 2^k of them is exact; E.w is not (0.3, 1e-5, ...), so that E.w Q is
+    // an inexact product whose scaled copy may be subnormal. Float takes the twofold route.
+    constexpr bool is_double = std::is_same_v<T, double>;
+    using vec3 = glm::vec<3, T>;
+    std::mt19937 rng(20261125);
+    std::uniform_int_distribution<int> grid(-512, 511);
+    const auto coordinate = [&] { return T(grid(rng)) / T(64); }; // [-8, 8), lowest bit 2^-6
+    const auto point = [&] { return vec3(coordinate(), coordinate(), coordinate() - T(9)); };
+    const std::vector<int> ks = is_double ? std::vector<int>{-1066, -1040, -1000, -960, -500, 0, 500, 1000}
+                                          : std::vector<int>{-140, -130, -110, -100, -60, 0, 60, 110};
+    const T eye_ws[] = {T(1), T(0.3), T(1e-5), T(3.7), T(0)};
+    const auto run = [&]<features F>() {
+        const material<T> mat{.ka = vec3(T(0.25)), .kd = vec3(T(0.5)), .ks = vec3(T(0.75)), .shininess = T(37.5)};
+        for (int trial = 0; trial < 8; ++trial) {
+            std::array<light<T>, 3> lights{};
+            for (std::size_t j = 0; j < lights.size(); ++j) {
+                const vec3 p = point();
+                lights[j].position = glm::vec<4, T>(p, T(j == 2 ? 0 : 1)); // two positional, one directional
+                lights[j].ambient = vec3(T(0.125));
+            }
+            environment<T> env{};
+            const vec3 e = point() + vec3(T(0), T(0), T(9));
+            env.eye = glm::vec<4, T>(e, eye_ws[trial % 5]);
+            std::vector<vec3> qs, ns;
+            for (int i = 0; i < 11; ++i) qs.push_back(point()), ns.push_back(vec3(coordinate(), coordinate(), coordinate() + T(8)));
+            std::vector<glm::vec<4, T>> base_scalar, base_batch;
+            for (int k : ks) {
+                const T f = std::ldexp(T(1), k);
+                std::array<light<T>, 3> scaled_lights = lights;
+                for (std::size_t j = 0; j < 3; ++j) scaled_lights[j].position = glm::vec<4, T>(vec3(lights[j].position) * f, lights[j].position.w);
+                environment<T> scaled_env = env;
+                scaled_env.eye = glm::vec<4, T>(e * f, env.eye.w);
+                soa_scene<T> pts;
+                for (std::size_t i = 0; i < qs.size(); ++i) pts.add(qs[i] * f, ns[i] * f);
+                pts.template shade<F>(mat, scaled_lights, scaled_env);
+                for (std::size_t i = 0; i < qs.size(); ++i) {
+                    const auto c = shade<F>(qs[i] * f, ns[i] * f, mat, scaled_lights, scaled_env);
+                    const glm::vec<4, T> scalar(c[0], c[1], c[2], T(0)), batch = pts.color(i);
+                    if (k == ks.front()) {
+                        base_scalar.push_back(scalar), base_batch.push_back(batch);
+                        continue;
+                    }
+                    CAPTURE(trial);
+                    CAPTURE(k);
+                    CAPTURE(i);
+                    CHECK(glm::vec<3, T>(scalar) == glm::vec<3, T>(base_scalar[i]));
+                    CHECK(batch == base_batch[i]);
+                }
+            }
+        }
+    };
+    static constexpr features phong_eye{.light_ambient = true, .lights = light_kind::any, .two_sided = facing::view,
+                                        .view = view_model::eye_point, .mode = evaluation::stable, .precision = stable_precision::twofold};
+    static constexpr features blinn_eye = [] {
+        features f = phong_eye;
+        f.specular = specular_model::blinn;
+        f.specular_gate = false;
+        return f;
+    }();
+    static constexpr features phong_origin = [] {
+        features f = phong_eye;
+        f.view = view_model::eye_at_origin;
+        return f;
+    }();
+    run.template operator()<phong_eye>();
+    run.template operator()<blinn_eye>();
+    run.template operator()<phong_origin>();
 }
 
 TEST_CASE_TEMPLATE("shade_batch: per-point materials and interleaved output equal the SoA path", T, float, double)
