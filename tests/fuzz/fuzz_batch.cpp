@@ -25,8 +25,9 @@
 //  3. Agreement with the scalar shade<F> point by point within `tolerance` (derived below), where
 //     the comparison is meaningful: away from the model's discontinuities (the specular gate
 //     n.l = 0, the two-sided flip n.v = 0, a spot cutoff or hard cone edge, Blinn's l = -v), away
-//     from L.xyz - w Q or E.xyz - E.w Q overflowing T (no direction in T, one in float's wider
-//     route), and for the exact mode only on moderate geometry (documented as inaccurate outside).
+//     from L.xyz - w Q overflowing T, or E.xyz - E.w Q outside the stable mode (no direction in T,
+//     one in float's wider route), and for the exact mode only on moderate geometry (documented as
+//     inaccurate outside).
 #include <phong/batch.hpp>
 #include "decode.hpp"
 
@@ -319,7 +320,11 @@ tolerance_result tolerance(const scene<T>& s, std::size_t i)
             if (std::fabs(x) > top) return true;
         return false;
     };
-    if (F.view == view_model::eye_point && overflows(widen(glm::vec<3, T>(s.env.eye)), wide(s.env.eye.w))) return out;
+    // The stable mode forms E.xyz - E.w Q scaled by powers of two (detail/stable.hpp's prepare):
+    // it has the viewer's direction however large E.w Q is.
+    if (F.view == view_model::eye_point && F.mode != evaluation::stable &&
+        overflows(widen(glm::vec<3, T>(s.env.eye)), wide(s.env.eye.w)))
+        return out;
     if (exact && !(moderate<T>(Q) && moderate<T>(n) && moderate_length<T>(n) && moderate_length<T>(v) &&
                    (F.view == view_model::perspective || moderate<T>(widen(glm::vec<3, T>(s.env.eye))))))
         return out;
