@@ -95,12 +95,12 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
         // |E.w Q| > max no longer leaves the viewer without a direction.
         using S = scalar_t<T>;
         constexpr bool is_float = std::is_same_v<S, float>;
-        const T ew(env.eye.w);
-        const T a = math_traits<T>::inverse_pow2_scale(phong::max(phong::max_abs(eye), phong::abs(ew)));
-        const vec3 eye_a = eye * a;
+        const glm::vec<4, T, Q> eye_w_a = phong::rescaled(glm::vec<4, T, Q>(eye, T(env.eye.w))); // 2^a E
+        const vec3 eye_a(eye_w_a.x, eye_w_a.y, eye_w_a.z);
+        const T w_a = eye_w_a.w;
         const T b = math_traits<T>::inverse_pow2_scale(phong::max(phong::max_abs(eye_a), phong::max_abs(position)));
         const vec3 eye_ab = eye_a * b, position_b = position * b;
-        e = difference_twofold<light_kind::any>(eye_ab, ew * a, position_b);
+        e = difference_twofold<light_kind::any>(eye_ab, w_a, position_b);
         const mask_t<T> cancelled = phong::max_abs(e.hi) < T(is_float ? S(0x1p-100) : S(0x1p-900));
         if (math_traits<T>::any(cancelled)) {
             // From E.xyz 2^a and Q: 2^b <= 1 here (unless E is 0 or subnormal) may have dropped
@@ -113,7 +113,7 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
                 eye_up[k] = phong::select(down, eye_a[k] * bu, eye_ab[k] * up);
                 position_up[k] = phong::select(down, position[k] * bu, position_b[k] * up);
             }
-            e = difference_twofold<light_kind::any>(eye_up, ew * a, position_up);
+            e = difference_twofold<light_kind::any>(eye_up, w_a, position_up);
         }
     }
     const unit_twofold<T, Q> uv = unit_of(e.hi, e.lo);
