@@ -390,6 +390,45 @@ TEST_CASE_TEMPLATE("stable mode: an eye point whose products E.w Q are subnormal
     }
 }
 
+TEST_CASE_TEMPLATE("stable mode: an eye point that is zero, subnormal, huge or mixed gives finite colours, scalar and batch", T,
+                   float, double)
+{
+    // Finite input never gives NaN or inf (shade.hpp): E = 0 (no view vector: no specular term),
+    // E.w = the least subnormal, every component at the largest finite T (|E.w Q| far beyond the
+    // range), E.x huge with E.w subnormal, a direction (w = 0); points at 0, subnormal, near max.
+    constexpr features F{.specular_gate = false, .lights = light_kind::any, .two_sided = facing::view,
+                         .view = view_model::eye_point, .mode = evaluation::stable, .precision = stable_precision::twofold};
+    using vec3 = glm::vec<3, T>;
+    using vec4 = glm::vec<4, T>;
+    const T big = std::numeric_limits<T>::max(), den = std::numeric_limits<T>::denorm_min();
+    const material<T> mat{.ka = vec3(T(0.25)), .kd = vec3(T(0.5)), .ks = vec3(T(0.5)), .shininess = T(10)};
+    std::array<light<T>, 1> lights{};
+    lights[0].position = {T(1), T(2), T(3), T(1)};
+    const vec4 eyes[] = {vec4(0), vec4(T(0), T(0), T(0), den), vec4(den, T(0), T(0), T(0)), vec4(big, big, -big, big),
+                         vec4(T(0), T(0), T(0), big), vec4(big, T(0), T(0), den), vec4(T(1), T(2), T(3), T(0))};
+    const vec3 points[] = {vec3(0), vec3(den, den, -den), vec3(big / 4, -big / 4, big / 4), vec3(big), vec3(T(0.5), T(0.25), T(-3))};
+    const vec3 n(T(0.25), T(0.125), T(1));
+    for (const vec4& eye : eyes) {
+        environment<T> env{};
+        env.eye = eye;
+        soa_scene<T> pts;
+        for (const vec3& q : points) pts.add(q, n);
+        pts.template shade<F>(mat, lights, env);
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            CAPTURE(eye.x);
+            CAPTURE(eye.w);
+            CAPTURE(i);
+            const auto scalar = shade<F>(points[i], n, mat, lights, env);
+            for (int ch = 0; ch < 3; ++ch) {
+                CHECK(std::isfinite(scalar[ch]));
+                CHECK(scalar[ch] >= T(0));
+                CHECK(std::isfinite(pts.color(i)[ch]));
+                CHECK(pts.color(i)[ch] >= T(0));
+            }
+        }
+    }
+}
+
 TEST_CASE_TEMPLATE("stable mode: scaling every position and normal by 2^k leaves the colours unchanged, bit for bit", T, float, double)
 {
     // Without attenuation the model reads only directions, and 2^k (Q, L.xyz, E.xyz, n) has the
