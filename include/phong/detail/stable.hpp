@@ -81,39 +81,37 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
     if constexpr (F.view == view_model::eye_at_origin) e.hi = -position;
     if constexpr (F.view == view_model::given) e.hi = given_view;
     if constexpr (F.view == view_model::eye_point) {
-        // d = E.xyz - E.w Q is formed as 2^(a+b) d = (E.xyz 2^a) 2^b - (E.w 2^a)(Q 2^b), which has
-        // d's direction exactly: 2^a brings E's largest component to [1, 2) (E is homogeneous), 2^b
-        // the larger of E.xyz 2^a and Q. Every term is then at most 4, and a product (E.w 2^a)
-        // (Q_k 2^b), or a component scaled by 2^b < 1, can be subnormal only where it is far below
-        // the largest term. Its rounding error is then not exact (a subnormal has no room for
+        // d = E.xyz - E.w Q is formed as 2^(a+b) d = 2^a (E.xyz 2^b) - (E.w 2^a)(Q 2^b), which has
+        // d's direction exactly: 2^b brings the larger of E.xyz and Q to [1, 2), then 2^a the
+        // larger of E.xyz 2^b and E.w (E is homogeneous). In that order tiny E.xyz and Q are scaled
+        // up (exact) before anything is scaled down; every term is then at most 4, and a product
+        // (E.w 2^a)(Q_k 2^b), or a component scaled down, can be subnormal only where it is far
+        // below the largest term. Its rounding error is then not exact (a subnormal has no room for
         // it), which matters only where d cancels to far below its terms: there (|d| < 2^-900 in
-        // double, 2^-100 in float) d is formed again with E.xyz 2^(a+b) and Q 2^b scaled up by
-        // 2^1000 (float 2^120). Fuzzer finding: E.w =
-        // 2.5e-322 gave 1.4e-6 between scalar and SIMD lanes; and E = (0, 0, 0, 1e-5) with
-        // Q ~ 1e-315 gave 2e-3 against the model. Where no intermediate is subnormal or overflows,
-        // every value is the unscaled one times a power of two: unit_of gives the same bits; and
-        // |E.w Q| > max no longer leaves the viewer without a direction.
+        // double, 2^-100 in float) d is formed again with both terms scaled up by 2^1000 (float
+        // 2^120). Found: E.w = 2.5e-322 gave 1.4e-6 between scalar and SIMD lanes (a fuzzer); E =
+        // (0, 0, 0, 1e-5) with Q ~ 1e-315 gave 2e-3 against the model; E.w first (2^a before 2^b)
+        // lost subnormal E.xyz bits, 0.34 with E.xyz, Q ~ 1e-322 and E.w = 50. Where no
+        // intermediate is subnormal or overflows, every value is the unscaled one times a power of
+        // two: unit_of gives the same bits; and |E.w Q| > max leaves the viewer a direction.
         using S = scalar_t<T>;
         constexpr bool is_float = std::is_same_v<S, float>;
-        const glm::vec<4, T, Q> eye_w_a = phong::rescaled(glm::vec<4, T, Q>(eye, T(env.eye.w))); // 2^a E
-        const vec3 eye_a(eye_w_a.x, eye_w_a.y, eye_w_a.z);
-        const T w_a = eye_w_a.w;
-        const T b = math_traits<T>::inverse_pow2_scale(phong::max(phong::max_abs(eye_a), phong::max_abs(position)));
-        const vec3 eye_ab = eye_a * b, position_b = position * b;
+        const T b = math_traits<T>::inverse_pow2_scale(phong::max(phong::max_abs(eye), phong::max_abs(position)));
+        const vec3 position_b = position * b;
+        const glm::vec<4, T, Q> eye_ab_w_a = phong::rescaled(glm::vec<4, T, Q>(eye * b, T(env.eye.w))); // 2^a (E.xyz 2^b, E.w)
+        const vec3 eye_ab(eye_ab_w_a.x, eye_ab_w_a.y, eye_ab_w_a.z);
+        const T w_a = eye_ab_w_a.w;
         e = difference_twofold<light_kind::any>(eye_ab, w_a, position_b);
         const mask_t<T> cancelled = phong::max_abs(e.hi) < T(is_float ? S(0x1p-100) : S(0x1p-900));
         if (math_traits<T>::any(cancelled)) {
-            // From E.xyz 2^a and Q: 2^b <= 1 here (unless E is 0 or subnormal) may have dropped
-            // subnormal bits, 2^b times the large scale cannot.
+            // Q from the input: 2^b < 1 may have dropped its subnormal bits, 2^b times the large
+            // scale cannot (2^b > 1 only where E.xyz and Q are below 1: then Q 2^b is exact).
             const T up = phong::select(cancelled, T(is_float ? S(0x1p120) : S(0x1p1000)), T(1));
             const mask_t<T> down = b <= T(1);
             const T bu = b * up;
-            vec3 eye_up(T(0)), position_up(T(0));
-            for (int k = 0; k < 3; ++k) {
-                eye_up[k] = phong::select(down, eye_a[k] * bu, eye_ab[k] * up);
-                position_up[k] = phong::select(down, position[k] * bu, position_b[k] * up);
-            }
-            e = difference_twofold<light_kind::any>(eye_up, w_a, position_up);
+            vec3 position_up(T(0));
+            for (int k = 0; k < 3; ++k) position_up[k] = phong::select(down, position[k] * bu, position_b[k] * up);
+            e = difference_twofold<light_kind::any>(eye_ab * up, w_a, position_up);
         }
     }
     const unit_twofold<T, Q> uv = unit_of(e.hi, e.lo);
