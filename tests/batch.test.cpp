@@ -5,6 +5,7 @@
 #include "support/numeric.hpp"
 #include "support/reference.hpp"
 
+#include <phong/accuracy.hpp>
 #include <phong/batch.hpp>
 
 #include <doctest/doctest.h>
@@ -327,7 +328,8 @@ TEST_CASE_TEMPLATE("stable mode: an eye point whose products E.w Q are subnormal
 {
     // v = normalize(E.xyz - E.w Q) where the products E.w Q are subnormal (double: Q ~ 1e-315,
     // float: 1e-40), so that their twofold error terms are not exact; where E.xyz cancels E.w Q in
-    // one component and the others are subnormal; and where |E.w Q| is beyond T's range although
+    // one component and the others are subnormal; where E.xyz and Q are subnormal and E.w is not
+    // (a scaling of E by E.w first lost E.xyz's bits); and where |E.w Q| is beyond T's range although
     // the direction is finite. Phong at m = 1000 with l mirroring v about n, so that an error of
     // the view moves the colour m-fold. Expected: the reference model (tests/support/reference.hpp,
     // in a wide type); scalar and batch within 8 eps (before: 1e-8 to 2e-3 in double; no specular
@@ -346,13 +348,14 @@ TEST_CASE_TEMPLATE("stable mode: an eye point whose products E.w Q are subnormal
     };
     const T tiny = is_double ? T(1e-315) : T(1e-40), huge_w = is_double ? T(0x1p600) : T(0x1p100),
             huge_q = is_double ? T(0x1p500) : T(0x1p60), huge_x = is_double ? T(0x1p1000) : T(0x1p120),
-            big_q = is_double ? T(0x1p420) : T(0x1p40);
+            big_q = is_double ? T(0x1p420) : T(0x1p40), sub = is_double ? T(1e-320) : T(1e-42);
     const vec3 mirror(T(0.31), T(0.17), T(-1)); // v along -mirror: l = (0.32, 0.16, 1) mirrors it about n
     const eye_case cases[] = {
         {{T(0), T(0), T(0), T(0.3)}, mirror, tiny, false},
         {{T(0), T(0), T(0), T(1e-5)}, mirror, tiny, false},
         {{tiny / 10, T(0), T(0), T(0.7)}, mirror, tiny, false},
         {{T(1), T(0), T(0), T(0.5)}, vec3(T(2), T(0.17), T(-1)), tiny / 100, true},
+        {{sub / 4, -sub / 4, sub / 4, T(50.0943)}, mirror, sub, false}, // E.xyz and Q subnormal, E.w not tiny
         {{T(0), T(0), T(0), huge_w}, mirror, huge_q, false},
         {{huge_x, T(0), T(0), huge_w / 3}, mirror, big_q, false},
     };
@@ -388,6 +391,61 @@ TEST_CASE_TEMPLATE("stable mode: an eye point whose products E.w Q are subnormal
             }
         }
     }
+}
+
+TEST_CASE_TEMPLATE("stable mode: eye points and positions at every scale stay within the well-conditioned bound", T, float, double)
+{
+    // Inputs no bound was fitted to: eye, point and light position scaled together by 2^k, k drawn
+    // over T's whole exponent range (subnormal to near max), the eye's w at any scale of its own,
+    // against the reference model. Scene ambient and ka keep every channel away from 0, and points
+    // within 1e-6 of the two-sided flip n.v = 0 are left out (the model's discontinuity). Held to
+    // the published well_conditioned max_rel, scalar and batch. Before 2026-11-25: up to 1.98
+    // relative in double (E.xyz and Q subnormal, E.w normal).
+    constexpr features F{.specular_gate = false, .lights = light_kind::any, .two_sided = facing::view,
+                         .view = view_model::eye_point, .mode = evaluation::stable, .precision = stable_precision::twofold};
+    constexpr bool is_double = std::is_same_v<T, double>;
+    using vec3 = glm::vec<3, T>;
+    const double bound = accuracy::of<evaluation::stable, T, stable_precision::twofold>(accuracy::input_class::well_conditioned).max_rel;
+    std::mt19937_64 rng(20261125);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::uniform_int_distribution<int> exponent(is_double ? -1074 : -149, is_double ? 1000 : 110), w_exponent(-40, 40);
+    const material<T> mat{.ka = vec3(T(0.25)), .kd = vec3(T(0.5)), .ks = vec3(T(0.5)), .shininess = T(50)};
+    environment<T> env{};
+    env.ambient = vec3(T(1));
+    std::array<light<T>, 1> lights{};
+    const auto scaled = [](double x, int k) { return T(std::ldexp(x, k)); }; // x rounded to T at 2^k
+    int compared = 0;
+    for (int round = 0; round < 300; ++round) {
+        const int k = exponent(rng);
+        env.eye = {scaled(u(rng), k), scaled(u(rng), k), scaled(u(rng), k), scaled(std::abs(u(rng)), w_exponent(rng) / (is_double ? 1 : 2))};
+        lights[0].position = {T(u(rng)), T(u(rng)), T(1 + u(rng)), T(0)};
+        soa_scene<T> pts;
+        std::vector<wcolor> expected;
+        std::vector<bool> keep;
+        for (int i = 0; i < 20; ++i) {
+            const vec3 q(scaled(u(rng), k), scaled(u(rng), k), scaled(u(rng) - 1.5, k)), n(T(u(rng)), T(u(rng)), T(1));
+            pts.add(q, n);
+            expected.push_back(reference_shade(F, q, n, mat, std::span<const light<T>>(lights), env));
+            const wvec3 v = wvec3{wide(env.eye.x), wide(env.eye.y), wide(env.eye.z)} - widen(q) * wide(env.eye.w);
+            const wide nv = wdot(v, widen(n)), lengths = wsqrt(wdot(v, v) * wdot(widen(n), widen(n)));
+            keep.push_back(lengths > 0 && wabs(nv) > wide(1e-6) * lengths);
+        }
+        pts.template shade<F>(mat, lights, env);
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            if (!keep[i]) continue;
+            ++compared;
+            const vec3 q(pts.px[i], pts.py[i], pts.pz[i]), n(pts.nx[i], pts.ny[i], pts.nz[i]);
+            const auto scalar = shade<F>(q, n, mat, lights, env);
+            CAPTURE(k);
+            CAPTURE(env.eye.w);
+            CAPTURE(i);
+            for (int ch = 0; ch < 3; ++ch) {
+                CHECK(wabs(wide(scalar[ch]) - expected[i][ch]) <= wide(bound) * expected[i][ch]);
+                CHECK(wabs(wide(pts.color(i)[ch]) - expected[i][ch]) <= wide(bound) * expected[i][ch]);
+            }
+        }
+    }
+    CHECK(compared > 5000); // the flip's band leaves out few points
 }
 
 TEST_CASE_TEMPLATE("stable mode: an eye point that is zero, subnormal, huge or mixed gives finite colours, scalar and batch", T,
