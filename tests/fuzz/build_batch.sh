@@ -9,7 +9,7 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 out="${1:-$root/build/fuzz}"
 mkdir -p "$out"
-flags=(-std=c++20 -O1 -g -DNDEBUG -Wall -Wextra -Wpedantic -Werror
+flags=(-std=c++20 -O1 -gline-tables-only -DNDEBUG -Wall -Wextra -Wpedantic -Werror
        -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -I "$root/include")
 "${CXX:-clang++}" "${flags[@]}" "$root/tests/fuzz/fuzz_batch.cpp" -o "$out/fuzz_batch" &
 "${CXX:-clang++}" "${flags[@]}" -march=native "$root/tests/fuzz/fuzz_batch.cpp" -o "$out/fuzz_batch_native"
