@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -192,6 +193,41 @@ template <class T, features F> void check_long_call_equals_points_alone(std::uin
     }
 }
 
+/// The fast mode's light loop with a power-of-two shininess n = 2^K known at compile time
+/// (add_masked_lights without masks: K squarings in a row) against the same call with every light
+/// mask set (each_visible_light: fast::pow_integer's chain entered by a jump), bit for bit (NaN
+/// included: the bytes), for n = 1 to 64 and odd n (which both calls shade alike); and the
+/// specular term present at some points, so that the power is compared at all. The lights have
+/// no ambient term: a call without masks adds the sum of those once per call, a masked one per
+/// light (different roundings, about 2e-7 relative in float).
+template <class T, features F> void check_power_of_two_shininess(std::uint64_t seed)
+{
+    constexpr bool given = F.view == view_model::given;
+    scene_gen<T> gen(seed);
+    const std::size_t count = 3 * batch_width<T> + 5;
+    batch_case<T> c(gen, F, count, 4);
+    for (std::uint64_t& bits : c.masks) bits = ~std::uint64_t(0);
+    for (light<T>& L : c.base.lights) L.ambient = glm::vec<3, T>(0);
+    for (const T n : {T(1), T(2), T(4), T(8), T(16), T(32), T(64), T(3), T(33)}) {
+        material<T> mat = c.base.mat;
+        mat.shininess = n;
+        material<T> dull = mat; // no specular term: the difference below is the specular term
+        dull.ks = glm::vec<3, T>(0);
+        std::vector<color<F, T>> fixed(count), chained(count), diffuse_only(count);
+        shade_batch<F>(c.soa(given, false), mat, c.base.lights, std::span<color<F, T>>(fixed), c.base.env);
+        shade_batch<F>(c.soa(given, true), mat, c.base.lights, std::span<color<F, T>>(chained), c.base.env);
+        shade_batch<F>(c.soa(given, false), dull, c.base.lights, std::span<color<F, T>>(diffuse_only), c.base.env);
+        std::size_t same = 0, highlighted = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            same += std::memcmp(&fixed[i], &chained[i], sizeof(fixed[i])) == 0;
+            highlighted += std::memcmp(&fixed[i], &diffuse_only[i], sizeof(fixed[i])) != 0;
+        }
+        CAPTURE(n);
+        CHECK(same == count);
+        CHECK(highlighted > 0);
+    }
+}
+
 // Per-point views (view_model::given) in both modes, Phong and Blinn, diffuse only, per-light
 // ambient not attenuated (a masked light must not leave its ambient term), unit inputs, facing
 // flags with alpha; and the other view models with masks.
@@ -240,6 +276,14 @@ TEST_CASE_TEMPLATE("shade_batch: a long call equals each point shaded alone, bit
     check_long_call_equals_points_alone<T, presets::with_mode(presets::classic_phong, evaluation::fast)>(9006, true);
     check_long_call_equals_points_alone<T, presets::with_mode(presets::raytracer_phong, evaluation::stable)>(9004);
     check_long_call_equals_points_alone<T, input_feature_sets[2]>(9005); // Blinn, given views
+}
+
+TEST_CASE_TEMPLATE("shade_batch fast: a power-of-two shininess without masks gives the bits of the masked call", T, float, double)
+{
+    check_power_of_two_shininess<T, presets::with_mode(presets::classic_phong, evaluation::fast)>(9101);
+    check_power_of_two_shininess<T, presets::with_mode(presets::raytracer_phong, evaluation::fast)>(9102);
+    check_power_of_two_shininess<T, presets::with_mode(presets::glsl_ads, evaluation::fast)>(9104); // the benchmark's model
+    check_power_of_two_shininess<T, presets::with_mode(presets::blinn_phong_per_light_ambient, evaluation::fast)>(9103);
 }
 
 TEST_CASE_TEMPLATE("shade_batch: a masked light equals a removed light, bit for bit", T, float, double)

@@ -893,7 +893,8 @@ template <class Sums> inline constexpr glm::qualifier Q_of = sums_qualifier<Sums
 /// it is added and the lanes that do not see it get their sums back (select: exactly nothing
 /// from it, its ambient term included). Lights past the 64th are seen by no point. One call site
 /// of add_light for every case, masks or none: a masked light, a removed one (the same call with
-/// the light left out) and a call without masks run the same compiled code. Which lanes see a
+/// the light left out) and a call without masks run the same compiled code (but for the fast
+/// mode's Phong with a power-of-two shininess without masks, add_masked_lights: the same bits). Which lanes see a
 /// light: one bit test of the W masks per light (AVX-512: two vector tests, the result a k-mask
 /// used as is; AVX2: a shift and a movemask per four lanes).
 /// each_visible_light calls add_light(sums, j) for every light j (light_count of them) by these
@@ -935,6 +936,27 @@ PHONG_BATCH_ALWAYS_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V,
                 return exact::step_specular_of(m, s.sees_viewer);
             else return m;
         }();
+        if constexpr (std::is_same_v<Exponent, exact::integer_exponent<V>> && F.specular == specular_model::phong) {
+            // The fast mode's integer shininess n = 2^K (plan.chain = K + 1, K <= 6), no masks: the
+            // light loop with K known, its power K squarings with no jump per pair; the same bits.
+            // Measured (phong_batch_ratio fast, AVX-512): Phong 2 % faster at 16 lights, 6 % at 1;
+            // Blinn 1 to 8 % slower, so it keeps the jump.
+            if (!bits) {
+                const auto each_light = [&](const auto& fixed) {
+                    for (std::size_t j = 0; j < lights.size(); ++j) detail::add_light<F>(sums, s, lights[j], fixed);
+                };
+                switch (m.plan.chain) {
+                case 1: return each_light(m.template with_squarings<0>());
+                case 2: return each_light(m.template with_squarings<1>());
+                case 3: return each_light(m.template with_squarings<2>());
+                case 4: return each_light(m.template with_squarings<3>());
+                case 5: return each_light(m.template with_squarings<4>());
+                case 6: return each_light(m.template with_squarings<5>());
+                case 7: return each_light(m.template with_squarings<6>());
+                default: break;
+                }
+            }
+        }
         each_visible_light<V, T>(sums, lights.size(), bits, count,
                                  [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], step_m); });
     }
