@@ -894,9 +894,9 @@ template <class Sums> inline constexpr glm::qualifier Q_of = sums_qualifier<Sums
 /// from it, its ambient term included). Lights past the 64th are seen by no point. One call site
 /// of add_light for every case, masks or none: a masked light, a removed one (the same call with
 /// the light left out) and a call without masks run the same compiled code (but for the fast
-/// mode's Phong with a power-of-two shininess without masks, add_masked_lights: the same bits). Which lanes see a
-/// light: one bit test of the W masks per light (AVX-512: two vector tests, the result a k-mask
-/// used as is; AVX2: a shift and a movemask per four lanes).
+/// mode's Phong with a power-of-two shininess without masks, add_masked_lights: the same bits).
+/// Which lanes see a light: one bit test of the W masks per light (AVX-512: two vector tests, the
+/// result a k-mask used as is; AVX2: a shift and a movemask per four lanes).
 /// each_visible_light calls add_light(sums, j) for every light j (light_count of them) by these
 /// rules; the frame and the route are the caller's (add_masked_lights: detail::add_light).
 template <class V, class T, class Sums, class AddLight>

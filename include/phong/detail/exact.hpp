@@ -243,9 +243,10 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
 /// polynomials), within the fast power's bound (fast::pow_integer_max_rel <= fast::pow_unit_max_rel).
 /// n >= 1: the power of a base 0 is 0, so add_specular zeroes the base of the lanes that are off
 /// (or whose cosine is not positive) instead of selecting the power.
-/// Squarings: n = 2^Squarings known at compile time (shade_batch's light loop picks it per step
-/// from plan.chain, see with_power_of_two_exponent): x^n is that many squarings in a row, with no
-/// jump per pair into pow_integer's chain; the same products, so the same bits. Default: n at run time.
+/// Squarings: n = 2^Squarings known at compile time (batch.hpp's add_masked_lights picks it per
+/// step from plan.chain, fast Phong without light masks): x^n is that many squarings in a row,
+/// with no jump per pair into pow_integer's chain; the same products, so the same bits. Default
+/// (runtime_squarings): n known at run time only.
 inline constexpr unsigned runtime_squarings = ~0u;
 template <class T, unsigned Squarings = runtime_squarings> struct integer_exponent {
     fast::pow_integer_plan plan; ///< of the shininess n of every lane, n >= 1
