@@ -284,12 +284,6 @@ private:
 };
 template <class Exponent, class T> inline constexpr bool is_integer_exponent = false;
 template <class T, unsigned K> inline constexpr bool is_integer_exponent<integer_exponent<T, K>, T> = true;
-template <evaluation M, class T, unsigned K>
-PHONG_HD constexpr T route_cosine_power(T x, T scale, const integer_exponent<T, K>& m)
-{
-    static_assert(M == evaluation::fast, "integer_exponent: the fast mode's power");
-    return m.power(phong::clamp(x * scale, T(0), T(1)));
-}
 
 /// The shininess on SIMD lanes with m == 0 tested once (shade_batch: once per call, not per
 /// pair): the power of detail::cosine_power, the same bits. The cosine is clamped above only:
