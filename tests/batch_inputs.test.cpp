@@ -228,6 +228,43 @@ template <class T, features F> void check_power_of_two_shininess(std::uint64_t s
     }
 }
 
+/// Bad and extreme geometry through the fast mode's integer powers (n = 32: the loop with the
+/// squarings known; n = 33: pow_integer's loop): a zero normal, NaN and infinite coordinates, huge
+/// and tiny positions, a point at a light. Non-finite geometry gives NaN in every channel, the rest
+/// finite non-negative colours, and the unmasked call the bytes of the masked one.
+template <class T> void check_fast_integer_power_edges()
+{
+    constexpr features F = presets::with_mode(presets::glsl_ads, evaluation::fast);
+    const T inf = std::numeric_limits<T>::infinity(), nan = std::numeric_limits<T>::quiet_NaN();
+    const T huge = std::numeric_limits<T>::max() / 4, tiny = std::numeric_limits<T>::min();
+    std::vector<light<T>> lights(2);
+    lights[0].position = glm::vec<4, T>(1, 2, 3, 1);
+    lights[1].position = glm::vec<4, T>(-2, 1, 1, 1);
+    using v3 = glm::vec<3, T>;
+    const std::vector<v3> P = {v3(0, 0, -2), v3(0, 0, -2), v3(nan, 0, -2), v3(0, inf, -2), v3(huge, huge, -huge),
+                               v3(tiny, tiny, -tiny), v3(1, 2, 3),          v3(0, 0, -1e-30f), v3(1e30f, 0, -1e30f)};
+    const std::vector<v3> N = {v3(0, 0, 1), v3(0, 0, 0),  v3(0, 0, 1), v3(0, 0, 1), v3(0, 0, 1),
+                               v3(0, 0, 1), v3(0, 0, 1), v3(0, 1, 1),  v3(1, 0, 1)};
+    const std::vector<std::uint64_t> all(P.size(), ~std::uint64_t(0));
+    for (const T n : {T(32), T(33)}) {
+        material<T> mat;
+        mat.shininess = n;
+        std::vector<v3> fixed(P.size()), chained(P.size());
+        shade_batch<F>(aos_points<T>{.positions = P, .normals = N}, mat, lights, std::span<v3>(fixed));
+        shade_batch<F>(aos_points<T>{.positions = P, .normals = N, .light_masks = all}, mat, lights, std::span<v3>(chained));
+        for (std::size_t i = 0; i < P.size(); ++i) {
+            CAPTURE(n);
+            CAPTURE(i);
+            CHECK(std::memcmp(&fixed[i], &chained[i], sizeof(v3)) == 0);
+            const bool finite = std::isfinite(P[i].x) && std::isfinite(P[i].y) && std::isfinite(P[i].z);
+            for (int c = 0; c < 3; ++c) {
+                if (finite) CHECK((std::isfinite(fixed[i][c]) && fixed[i][c] >= 0));
+                else CHECK(std::isnan(fixed[i][c]));
+            }
+        }
+    }
+}
+
 // Per-point views (view_model::given) in both modes, Phong and Blinn, diffuse only, per-light
 // ambient not attenuated (a masked light must not leave its ambient term), unit inputs, facing
 // flags with alpha; and the other view models with masks.
@@ -284,6 +321,11 @@ TEST_CASE_TEMPLATE("shade_batch fast: a power-of-two shininess without masks giv
     check_power_of_two_shininess<T, presets::with_mode(presets::raytracer_phong, evaluation::fast)>(9102);
     check_power_of_two_shininess<T, presets::with_mode(presets::glsl_ads, evaluation::fast)>(9104); // the benchmark's model
     check_power_of_two_shininess<T, presets::with_mode(presets::blinn_phong_per_light_ambient, evaluation::fast)>(9103);
+}
+
+TEST_CASE_TEMPLATE("shade_batch fast, integer shininess: bad and extreme geometry", T, float, double)
+{
+    check_fast_integer_power_edges<T>();
 }
 
 TEST_CASE_TEMPLATE("shade_batch: a masked light equals a removed light, bit for bit", T, float, double)
