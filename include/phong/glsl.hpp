@@ -1,0 +1,106 @@
+// phong: the GLSL twin's source for a C++ program: where phong.glsl is, its text, the #define
+// lines of a features value, and a shader assembled from them.
+// SPDX-License-Identifier: MIT
+//
+// GLSL has no #include: a program hands glShaderSource its #version line, the feature defines,
+// phong.glsl's text and its own shader, in that order (docs/glsl.md). The CMake target phong::phong
+// defines PHONG_GLSL_DIR (the source tree's include/phong/glsl, or the installed one), and
+// find_package(phong) sets the CMake variable of the same name.
+#pragma once
+
+#include "features.hpp"
+
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace phong::glsl {
+
+/// The directory that holds phong.glsl: the macro PHONG_GLSL_DIR (set by the CMake target
+/// phong::phong), or "" when it is not defined (a build without phong's CMake target: pass the
+/// directory to source(dir)).
+inline std::string directory()
+{
+#if defined(PHONG_GLSL_DIR)
+    return PHONG_GLSL_DIR;
+#else
+    return {};
+#endif
+}
+
+/// The text of phong.glsl in `dir` (default: directory()). Throws std::runtime_error naming the
+/// path when the file cannot be read (or when no directory is known).
+inline std::string source(const std::string& dir = directory())
+{
+    if (dir.empty())
+        throw std::runtime_error("phong::glsl::source: PHONG_GLSL_DIR is not defined (link phong::phong, or pass the directory)");
+    const std::string path = dir + "/phong.glsl";
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("phong::glsl::source: cannot read " + path);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// The #define lines that select F in phong.glsl (every field written out, so no preset define is
+/// needed), one per line, followed by PHONG_MAX_LIGHTS max_lights. Throws std::invalid_argument
+/// for the stable mode, which the twin does not have (GLSL has no double in ES, and the twofold
+/// route is C++ only).
+inline std::string defines(const features& F, int max_lights = 8)
+{
+    if (F.mode == evaluation::stable)
+        throw std::invalid_argument("phong::glsl::defines: features::mode = evaluation::stable has no GLSL twin (exact or fast)");
+    if (max_lights < 1) throw std::invalid_argument("phong::glsl::defines: max_lights must be at least 1");
+    const auto flag = [](bool b) { return b ? "1" : "0"; };
+    const char* specular[] = {"PHONG_SPECULAR_NONE", "PHONG_SPECULAR_PHONG", "PHONG_SPECULAR_BLINN"};
+    const char* lights[] = {"PHONG_LIGHTS_ANY", "PHONG_LIGHTS_POSITIONAL", "PHONG_LIGHTS_DIRECTIONAL"};
+    const char* attenuation[] = {"PHONG_ATTENUATION_NONE", "PHONG_ATTENUATION_POLYNOMIAL", "PHONG_ATTENUATION_WINDOWED"};
+    const char* spot[] = {"PHONG_SPOT_NONE", "PHONG_SPOT_OPENGL", "PHONG_SPOT_SMOOTH"};
+    const char* facing_names[] = {"PHONG_FACING_NONE", "PHONG_FACING_VIEW", "PHONG_FACING_FLAG"};
+    const char* view[] = {"PHONG_VIEW_EYE_AT_ORIGIN", "PHONG_VIEW_FIXED_DIRECTION", "PHONG_VIEW_EYE_POINT", "PHONG_VIEW_GIVEN"};
+    std::string s;
+    const auto line = [&](std::string_view name, std::string_view value) {
+        s += "#define ";
+        s += name;
+        s += ' ';
+        s += value;
+        s += '\n';
+    };
+    line("PHONG_SCENE_AMBIENT", flag(F.scene_ambient));
+    line("PHONG_LIGHT_AMBIENT", flag(F.light_ambient));
+    line("PHONG_DIFFUSE", flag(F.diffuse));
+    line("PHONG_SPECULAR", specular[static_cast<int>(F.specular)]);
+    line("PHONG_SPECULAR_GATE", flag(F.specular_gate));
+    line("PHONG_LIGHTS", lights[static_cast<int>(F.lights)]);
+    line("PHONG_ATTENUATION", attenuation[static_cast<int>(F.attenuation)]);
+    line("PHONG_SPOT", spot[static_cast<int>(F.spot)]);
+    line("PHONG_ATTENUATE_AMBIENT", flag(F.attenuate_ambient));
+    line("PHONG_TWO_SIDED", facing_names[static_cast<int>(F.two_sided)]);
+    line("PHONG_VIEW", view[static_cast<int>(F.view)]);
+    line("PHONG_EMISSION", flag(F.emission));
+    line("PHONG_ALPHA", flag(F.alpha));
+    line("PHONG_UNIT_INPUTS", flag(F.unit_inputs));
+    line("PHONG_MODE", F.mode == evaluation::fast ? "PHONG_MODE_FAST" : "PHONG_MODE_EXACT");
+    line("PHONG_MAX_LIGHTS", std::to_string(max_lights));
+    return s;
+}
+
+/// One shader's text: version_line ("#version 330 core", "#version 300 es"), a newline, the
+/// defines (e.g. defines(F), or "#define PHONG_PRESET_GLSL_ADS\n"), phong.glsl's text (twin), then
+/// the program's own shader (body). The #line directive before body restarts its line numbers at
+/// 1 (source string 1), so a driver's compile errors in body point at body's own lines.
+inline std::string shader(std::string_view version_line, std::string_view defines_text, std::string_view twin,
+                          std::string_view body)
+{
+    std::string s;
+    s.reserve(version_line.size() + defines_text.size() + twin.size() + body.size() + 32);
+    s += version_line;
+    s += '\n';
+    s += defines_text;
+    s += twin;
+    s += "\n#line 1 1\n";
+    s += body;
+    return s;
+}
+
+} // namespace phong::glsl

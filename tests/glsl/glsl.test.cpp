@@ -1,0 +1,639 @@
+// The GLSL twin (include/phong/glsl/phong.glsl) on a real OpenGL implementation: Mesa llvmpipe,
+// headless through EGL's surfaceless platform (tests/glsl/gl.hpp), in OpenGL 3.3 core (GLSL 330)
+// and OpenGL ES 3.0 (GLSL 300 es).
+//  * llvmpipe's own error: its sqrt, 1 / x, 1 / sqrt(x), inversesqrt and pow against a double
+//    reference, checked against the allowances below (published in docs/glsl.md);
+//  * agreement: for every preset, random and edge cases through the twin in a vertex shader (read
+//    back by transform feedback) against a long-double evaluation of the model written here from
+//    its formulas, within the exact mode's published bound (phong/accuracy.hpp's exact_bound, from
+//    each case's conditioning) widened by llvmpipe's allowances; phong::shade<F> in float exact
+//    mode held to the unwidened bound on the same cases, and the twin's distance to it reported;
+//    every channel of every case finite and non-negative;
+//  * seed 003's phong.vert, verbatim (tests/glsl/seed003_phong.vert), against the twin's
+//    phong_shade_vertex with presets::glsl_ads and against phong::shade_vertex;
+//  * phong::glsl::defines(F) against the preset defines, and phong::glsl::source().
+// No EGL display (no Mesa EGL): the test fails, naming what is missing, unless
+// PHONG_GLSL_ALLOW_SKIP=1 says a skip is fine.
+#include "gl.hpp"
+
+#include <doctest/doctest.h>
+#include <phong/accuracy.hpp>
+#include <phong/glsl.hpp>
+#include <phong/phong.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <random>
+#include <span>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using phong::features;
+using phong::specular_model;
+namespace acc = phong::accuracy;
+constexpr double u = 0x1p-24; // float's unit roundoff
+
+/// A context of the given API, or an empty optional where none can be made and a skip is allowed
+/// (PHONG_GLSL_ALLOW_SKIP=1); otherwise the failure is a test failure naming what is missing.
+std::unique_ptr<glt::context> open(glt::api a)
+{
+    try {
+        auto c = std::make_unique<glt::context>(a);
+        MESSAGE(glt::api_name(a) << ": " << c->renderer() << ", " << c->version());
+        return c;
+    } catch (const std::exception& e) {
+        if (glt::skip_allowed()) {
+            MESSAGE("SKIPPED (PHONG_GLSL_ALLOW_SKIP=1): " << e.what());
+            return nullptr;
+        }
+        FAIL(e.what(), " (set EGL_PLATFORM=surfaceless; Debian: libegl-mesa0 libgl1-mesa-dri; PHONG_GLSL_ALLOW_SKIP=1 to skip)");
+        return nullptr;
+    }
+}
+
+// ---- llvmpipe's own error -----------------------------------------------------------------
+
+/// The driver's error, in units of float's u: the largest relative error of sqrt(x), 1 / x and
+/// 1 / sqrt(x) (the exact mode's operations), of inversesqrt(x) (the fast mode's), and of pow(x, m)
+/// per unit of (1 + |m log2 x| + m): a pow through exp2(m log2 x) loses about |m log2 x| u to the
+/// rounding of the product, and m times log2's absolute error, which near x = 1 is not relative.
+struct driver_error {
+    double sqrt_u = 0, reciprocal_u = 0, rsqrt_u = 0, inversesqrt_u = 0, pow_per_y_u = 0;
+    double pow_worst_rel = 0, pow_worst_x = 0, pow_worst_m = 0;
+    bool flushes_subnormals = false; ///< a product in float's subnormal range comes out 0
+    int samples = 0;
+};
+
+/// The allowances the agreement tests use, published in docs/glsl.md: the measured error must stay
+/// within them (a driver that does worse fails here, with its figures).
+constexpr double allowed_operation_u = 2.0;   // sqrt, 1 / x: within 2 u; 1 / sqrt(x): within 4 u (two operations)
+constexpr double allowed_inversesqrt_u = 4.0; // the fast mode's inversesqrt
+constexpr double allowed_pow_per_y_u = 4.0;   // pow(x, m): within 4 (1 + |m log2 x| + m) u
+
+driver_error measure_driver(const glt::context& c)
+{
+    const std::string body = R"(
+uniform highp sampler2D inputs;
+out vec4 result;
+void main() {
+    vec4 a = texelFetch(inputs, ivec2(gl_VertexID % 1024, gl_VertexID / 1024), 0);
+    result = vec4(sqrt(a.x), 1.0 / a.x, 1.0 / sqrt(a.x), inversesqrt(a.x));
+    if (a.z > 0.5) result = vec4(pow(a.y, a.w), (a.y * 1e-20) * 1e-20, 0.0, 0.0);
+    gl_Position = vec4(0.0);
+}
+)";
+    const std::string text = std::string(glt::version_line(c.which())) + "\n" + body;
+    glt::feedback_program program(c, text, "result");
+    std::mt19937_64 rng(20261127);
+    constexpr int rows = 64, count = 1024 * rows;
+    std::vector<float> texels(std::size_t(count) * 4);
+    for (int i = 0; i < count; ++i) {
+        float* t = &texels[std::size_t(i) * 4];
+        const bool power = i % 2 == 1;
+        // x over float's normal range for the roots and reciprocals (log-uniform, 2^-120 .. 2^120),
+        // a base in (0, 1] and m in [0, 1000] (and [0, 10] for half of them) for pow.
+        t[0] = float(std::ldexp(1.0 + double(rng() >> 11) * 0x1p-53, int(rng() % 241) - 120));
+        const double x = std::ldexp(1.0 + double(rng() >> 11) * 0x1p-53, -int(rng() % 24)) / 2;
+        t[1] = float(std::min(x, 1.0));
+        t[2] = power ? 1.0f : 0.0f;
+        t[3] = float(double(rng() >> 11) * 0x1p-53 * ((i / 2) % 2 ? 1000 : 10));
+    }
+    glt::float_texture tex(c, 1024, rows, texels);
+    const std::vector<float> out = program.run(count, 4, [&] { c.gl().glUniform1i(program.uniform("inputs"), 0); });
+    driver_error e;
+    const auto rel = [](double computed, double exact) { return std::fabs(computed - exact) / std::fabs(exact) / u; };
+    for (int i = 0; i < count; ++i) {
+        const float* t = &texels[std::size_t(i) * 4];
+        const float* r = &out[std::size_t(i) * 4];
+        if (t[2] > 0.5f) {
+            const double x = t[1], m = t[3], exact = std::pow(x, m);
+            if (r[1] == 0.0f && x * 1e-40 > 0x1p-149) e.flushes_subnormals = true;
+            if (exact < 0x1p-120) continue; // beyond float's normal range: flushed to 0 by the driver, absolute error below 2^-120
+            const double y = std::fabs(m * std::log2(x));
+            const double err = rel(r[0], exact);
+            const double per_y = err / (1 + y + m);
+            if (per_y > e.pow_per_y_u) e.pow_per_y_u = per_y, e.pow_worst_rel = err * u, e.pow_worst_x = x, e.pow_worst_m = m;
+        } else {
+            const double x = t[0];
+            e.sqrt_u = std::max(e.sqrt_u, rel(r[0], std::sqrt(x)));
+            e.reciprocal_u = std::max(e.reciprocal_u, rel(r[1], 1 / x));
+            e.rsqrt_u = std::max(e.rsqrt_u, rel(r[2], 1 / std::sqrt(x)));
+            e.inversesqrt_u = std::max(e.inversesqrt_u, rel(r[3], 1 / std::sqrt(x)));
+        }
+        ++e.samples;
+    }
+    return e;
+}
+
+// ---- scenes and the long-double model ---------------------------------------------------------
+
+constexpr int max_lights = 4;
+
+struct scene {
+    glm::vec3 position, normal, view;
+    bool front_facing = true;
+    phong::material<float> material;
+    phong::environment<float> environment;
+    std::vector<phong::light<float>> lights;
+};
+
+using ld = long double;
+struct ld3 {
+    ld x = 0, y = 0, z = 0;
+};
+ld3 L3(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+ld3 operator+(ld3 a, ld3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+ld3 operator-(ld3 a, ld3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+ld3 operator*(ld3 a, ld s) { return {a.x * s, a.y * s, a.z * s}; }
+ld dot(ld3 a, ld3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+/// The model in long double, from its formulas (docs/models.md, features.hpp), with the exact
+/// mode's bound of each channel from each light's conditioning (acc::exact_*_bound<float>).
+/// widen: the driver's allowance (operations' factor, pow per unit of |m log2 c|) for the twin.
+struct reference {
+    std::array<ld, 4> color{};       // rgb(a)
+    std::array<double, 3> bound{};   // relative bound per channel (+inf: none)
+    std::array<double, 3> widened{}; // the same with the driver's allowance
+    double allowance = 0;            // absolute underflow allowance
+};
+
+/// Squared lengths below this have no relative bound on a driver that flushes subnormals: a
+/// product of their components may lose up to the smallest normal float, 2^-126 (phong's exact bound
+/// assumes gradual underflow). Above it, such a loss is below 2^-26 relative: ftz_extra covers it.
+constexpr double ftz_min_square = 0x1p-100;
+
+template <features F>
+reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, bool flushes = false)
+{
+    reference out;
+    const ld3 Q = L3(s.position), N = L3(s.normal);
+    const ld nn = dot(N, N);
+    ld3 n = nn > 0 ? N * (1 / std::sqrt(nn)) : ld3{};
+    ld3 e;
+    if constexpr (F.view == phong::view_model::eye_at_origin) e = Q * -1;
+    else if constexpr (F.view == phong::view_model::given) e = L3(s.view);
+    else if constexpr (F.view == phong::view_model::eye_point)
+        e = ld3{s.environment.eye.x, s.environment.eye.y, s.environment.eye.z} - Q * ld(s.environment.eye.w);
+    else e = ld3{s.environment.eye.x, s.environment.eye.y, s.environment.eye.z};
+    const ld ee = dot(e, e);
+    const ld3 v = ee > 0 ? e * (1 / std::sqrt(ee)) : ld3{};
+    bool two_sided_ambiguous = false;
+    if constexpr (F.two_sided == phong::facing::view) {
+        const ld nv0 = dot(n, v);
+        if (nv0 < 0) n = n * -1;
+        two_sided_ambiguous = std::fabs(double(nv0)) < 64 * u;
+    } else if constexpr (F.two_sided == phong::facing::flag) {
+        if (!s.front_facing) n = n * -1;
+    }
+    const ld nv = dot(n, v);
+    constexpr bool gated = F.specular_gate || F.specular == specular_model::none;
+    const bool view_in_range = F.view == phong::view_model::fixed_direction ? true : acc::exact_square_in_range<float>(ee);
+    std::array<ld, 3> ambient{}, diffuse{}, specular{};
+    std::array<double, 3> worst{}, worst_widened{};
+    double f_max = 0, k_max = 0;
+    const int K = int(s.lights.size());
+    for (const phong::light<float>& L : s.lights) {
+        const ld w = F.lights == phong::light_kind::positional ? 1 : F.lights == phong::light_kind::directional ? 0 : ld(L.position.w);
+        const ld3 d = ld3{L.position.x, L.position.y, L.position.z} - Q * w;
+        const ld dd = dot(d, d), len = std::sqrt(dd);
+        const ld3 l = dd > 0 ? d * (1 / len) : ld3{};
+        ld f = 1, den = 1;
+        const bool attenuated = F.attenuation == phong::attenuation_model::polynomial && w > 0;
+        if (attenuated) {
+            den = ld(L.attenuation.constant) + ld(L.attenuation.linear) * len + ld(L.attenuation.quadratic) * len * len;
+            f = 1 / std::max(den, ld(phong::attenuation_denominator_min<float>));
+        }
+        f_max = std::max(f_max, double(f));
+        for (int ch = 0; ch < 3; ++ch) {
+            k_max = std::max({k_max, double(L.diffuse[ch]), double(L.specular[ch]), double(L.ambient[ch])});
+            if constexpr (F.light_ambient) ambient[ch] += ld(L.ambient[ch]) * (F.attenuate_ambient ? f : 1);
+        }
+        const ld nl = dot(n, l);
+        const bool lit = nn > 0 && dd > 0 && (!gated || nl > 0);
+        // A driver that flushes subnormals: the smallest squared length this pair reads.
+        const double min_square = double(std::min({nn, dd, F.view == phong::view_model::fixed_direction ? ld(1) : ee}));
+        const bool ftz_out = flushes && min_square < ftz_min_square;
+        const double ftz_extra = flushes ? 8 * 0x1p-126 / std::max(min_square, 0x1p-126) : 0;
+        // conditioning (phong/accuracy.hpp)
+        acc::pair_conditioning k;
+        k.nl = double(nl);
+        k.nv = double(nv);
+        k.attenuated = attenuated;
+        k.in_range = acc::exact_square_in_range<float>(nn) && view_in_range && acc::exact_square_in_range<float>(dd) &&
+                     (!attenuated || acc::exact_denominator_in_range<float>(den));
+        k.m = s.material.shininess;
+        ld c = 0;
+        if constexpr (F.specular == specular_model::phong) {
+            c = dot(n * (2 * nl) - l, v);
+            k.specular = specular_model::phong;
+        } else if constexpr (F.specular == specular_model::blinn) {
+            const ld3 h = l + v;
+            const ld sigma = std::sqrt(dot(h, h));
+            c = sigma > 0 ? dot(n, h) / sigma : 0;
+            k.specular = specular_model::blinn;
+            k.blinn_sum = double(sigma);
+        } else {
+            k.specular = specular_model::none;
+        }
+        k.c = double(c);
+        if (!lit) {
+            continue; // both sides add no diffuse or specular (the ambient above has the factor's error only)
+        }
+        ld power = 0;
+        if (ee > 0) power = k.m == 0 ? 1 : (c > 0 ? std::pow(std::min(c, ld(1)), ld(k.m)) : 0);
+        double diffuse_bound = acc::exact_diffuse_bound<float>(k);
+        acc::pair_conditioning ks = k;
+        if (!gated) ks.nl = 1; // no gate: the specular term does not depend on n.l's sign (n.l enters E_c: 1 is the larger)
+        double specular_bound = F.specular == specular_model::none || !(ee > 0) ? 0 : acc::exact_specular_bound<float>(ks);
+        const double y = (c > 0 && k.m > 0) ? std::fabs(k.m * std::log2(double(std::min(c, ld(1))))) : 0;
+        double ambient_bound = 0;
+        if (F.light_ambient && attenuated) {
+            acc::pair_conditioning ka = k;
+            ka.nl = 1;
+            ambient_bound = acc::exact_diffuse_bound<float>(ka);
+        }
+        if (two_sided_ambiguous) diffuse_bound = specular_bound = std::numeric_limits<double>::infinity();
+        for (int ch = 0; ch < 3; ++ch) {
+            const ld kd = ld(s.material.kd[ch]) * ld(L.diffuse[ch]), kspec = ld(s.material.ks[ch]) * ld(L.specular[ch]);
+            if (F.diffuse) diffuse[ch] += ld(L.diffuse[ch]) * f * std::max(nl, ld(0));
+            if (F.specular != specular_model::none) specular[ch] += ld(L.specular[ch]) * f * power;
+            double term = 0, term_widened = 0;
+            if (F.diffuse && kd > 0) {
+                term = std::max(term, diffuse_bound);
+                term_widened = std::max(term_widened, diffuse_bound * operation_factor + ftz_extra);
+            }
+            if (F.specular != specular_model::none && kspec > 0) {
+                term = std::max(term, specular_bound);
+                const double pow_extra = k.m > 0 ? pow_per_y_u * (1 + y + k.m) * u : 0;
+                term_widened = std::max(term_widened, specular_bound * operation_factor + pow_extra + ftz_extra * (1 + k.m));
+            }
+            if (F.light_ambient && s.material.ka[ch] * L.ambient[ch] > 0) {
+                term = std::max(term, ambient_bound);
+                term_widened = std::max(term_widened, ambient_bound * operation_factor + ftz_extra);
+            }
+            if (ftz_out && term_widened > 0) term_widened = std::max(term_widened, 1.0); // the vector may be lost
+            worst[ch] = std::max(worst[ch], term);
+            worst_widened[ch] = std::max(worst_widened[ch], term_widened);
+        }
+    }
+    for (int ch = 0; ch < 3; ++ch) {
+        ld I = 0;
+        if constexpr (F.emission) I += s.material.emission[ch];
+        ld amb = 0;
+        if constexpr (F.scene_ambient) amb += s.environment.ambient[ch];
+        if constexpr (F.light_ambient) amb += ambient[ch];
+        I += ld(s.material.ka[ch]) * amb;
+        if constexpr (F.diffuse) I += ld(s.material.kd[ch]) * diffuse[ch];
+        if constexpr (F.specular != specular_model::none) I += ld(s.material.ks[ch]) * specular[ch];
+        out.color[std::size_t(ch)] = I;
+        out.bound[std::size_t(ch)] = acc::exact_bound<float>(worst[ch], K);
+        out.widened[std::size_t(ch)] =
+            acc::detail::compose(worst_widened[ch], acc::detail::g<float>(K + 5) * operation_factor);
+    }
+    out.color[3] = s.material.alpha;
+    out.allowance = acc::exact_absolute_allowance<float>(K, f_max, std::max({k_max, 1.0}));
+    return out;
+}
+
+// ---- the cases ------------------------------------------------------------------------------
+
+struct generator {
+    std::mt19937_64 rng;
+    explicit generator(std::uint64_t seed) : rng(seed) {}
+    float uniform(float lo, float hi) { return lo + (hi - lo) * float(double(rng() >> 11) * 0x1p-53); }
+    glm::vec3 box(float r) { return {uniform(-r, r), uniform(-r, r), uniform(-r, r)}; }
+    glm::vec3 colour(float hi = 1) { return {uniform(0, hi), uniform(0, hi), uniform(0, hi)}; }
+    glm::vec3 direction()
+    {
+        for (;;) {
+            const glm::vec3 v = box(1);
+            const float vv = glm::dot(v, v);
+            if (vv > 0.01f && vv <= 1) return v / std::sqrt(vv);
+        }
+    }
+};
+
+/// A random scene: a point in front of the eye, a normal of any length, 1-4 lights (positional or
+/// directional as F allows) with polynomial falloff, m in [0, 200] (some 0, some integers).
+template <features F>
+scene random_scene(generator& g)
+{
+    scene s;
+    s.position = g.box(4) + glm::vec3(0, 0, -6);
+    s.normal = g.direction() * g.uniform(0.2f, 3.0f);
+    s.view = g.direction() * g.uniform(0.5f, 2.0f);
+    s.front_facing = g.rng() % 4 != 0;
+    s.material.ka = g.colour();
+    s.material.kd = g.colour();
+    s.material.ks = g.colour();
+    s.material.emission = g.colour(0.2f);
+    const int kind = int(g.rng() % 8);
+    s.material.shininess = kind == 0 ? 0.0f : kind < 3 ? float(1 + g.rng() % 128) : g.uniform(0.5f, 200);
+    s.material.alpha = g.uniform(0, 1);
+    s.environment.ambient = g.colour(0.5f);
+    s.environment.eye = g.rng() % 3 == 0 ? glm::vec4(g.direction(), 0) : glm::vec4(g.box(2), 1);
+    const int K = 1 + int(g.rng() % max_lights);
+    for (int i = 0; i < K; ++i) {
+        phong::light<float> L;
+        const bool directional = F.lights == phong::light_kind::directional ||
+                                 (F.lights == phong::light_kind::any && g.rng() % 3 == 0);
+        L.position = directional ? glm::vec4(g.direction(), 0) : glm::vec4(g.box(8) + glm::vec3(0, 0, -4), 1);
+        L.ambient = g.colour(0.3f);
+        L.diffuse = g.colour();
+        L.specular = g.colour();
+        L.attenuation = {g.uniform(0.2f, 1), g.uniform(0, 0.3f), g.uniform(0, 0.05f), std::numeric_limits<float>::infinity()};
+        s.lights.push_back(L);
+    }
+    return s;
+}
+
+/// The edge cases of the model's policy, applied to a random scene (kind 0 .. edge_kinds - 1):
+/// a light at the point; a zero normal; Blinn's l = -v; the point at the eye (or a zero given v);
+/// m = 0; c0 = 0 with the light at the point (the attenuation cap); coordinates scaled by 1e18
+/// and by 1e-18; a directional light with xyz = 0; the normal facing away from the viewer.
+constexpr int edge_kinds = 10;
+template <features F>
+void make_edge(scene& s, int kind)
+{
+    phong::light<float>& L0 = s.lights[0];
+    const glm::vec3 eye3(s.environment.eye);
+    const auto view_dir = [&]() -> glm::vec3 { // from Q toward the viewer, unnormalized
+        if constexpr (F.view == phong::view_model::eye_at_origin) return -s.position;
+        else if constexpr (F.view == phong::view_model::given) return s.view;
+        else if constexpr (F.view == phong::view_model::eye_point) return eye3 - s.environment.eye.w * s.position;
+        else return eye3;
+    };
+    switch (kind) {
+    case 0: L0.position = glm::vec4(s.position, 1); break;
+    case 1: s.normal = glm::vec3(0); break;
+    case 2: { // l = -v: the light on the line from the viewer through Q, beyond Q
+        if (L0.position.w == 0) L0.position = glm::vec4(-view_dir(), 0);
+        else L0.position = glm::vec4(s.position - view_dir(), 1);
+        break;
+    }
+    case 3:
+        if constexpr (F.view == phong::view_model::eye_at_origin) s.position = glm::vec3(0);
+        else if constexpr (F.view == phong::view_model::given) s.view = glm::vec3(0);
+        else if constexpr (F.view == phong::view_model::eye_point) s.environment.eye = glm::vec4(s.position, 1);
+        break;
+    case 4: s.material.shininess = 0; break;
+    case 5:
+        L0.position = glm::vec4(s.position, 1);
+        L0.attenuation = {0, 0, 1, std::numeric_limits<float>::infinity()};
+        break;
+    case 6:
+    case 7: {
+        const float k = kind == 6 ? 1e18f : 1e-18f;
+        s.position *= k;
+        s.normal *= k;
+        s.environment.eye = glm::vec4(glm::vec3(s.environment.eye) * k, s.environment.eye.w);
+        for (auto& L : s.lights) L.position = glm::vec4(glm::vec3(L.position) * k, L.position.w);
+        break;
+    }
+    case 8:
+        if constexpr (F.lights == phong::light_kind::any) L0.position = glm::vec4(0, 0, 0, 0);
+        else L0.position = glm::vec4(s.position, 1);
+        break;
+    default: s.normal = -view_dir(); break;
+    }
+}
+
+/// Texels per case (RGBA32F, one row per case): the layout the test shader reads.
+constexpr int texels_per_case = 9 + 6 * max_lights;
+
+void pack(const scene& s, float* t)
+{
+    const auto put = [&](int i, glm::vec4 v) { t[4 * i] = v.x, t[4 * i + 1] = v.y, t[4 * i + 2] = v.z, t[4 * i + 3] = v.w; };
+    const phong::material<float>& m = s.material;
+    put(0, glm::vec4(s.position, s.front_facing ? 1.0f : 0.0f));
+    put(1, glm::vec4(s.normal, float(s.lights.size())));
+    put(2, glm::vec4(s.view, m.shininess));
+    put(3, glm::vec4(m.ka, m.alpha));
+    put(4, glm::vec4(m.kd, 0));
+    put(5, glm::vec4(m.ks, 0));
+    put(6, glm::vec4(m.emission, 0));
+    put(7, glm::vec4(s.environment.ambient, 0));
+    put(8, s.environment.eye);
+    for (std::size_t i = 0; i < s.lights.size(); ++i) {
+        const phong::light<float>& L = s.lights[i];
+        const int b = 9 + 6 * int(i);
+        put(b, L.position);
+        put(b + 1, glm::vec4(L.ambient, L.attenuation.range));
+        put(b + 2, glm::vec4(L.diffuse, L.attenuation.constant));
+        put(b + 3, glm::vec4(L.specular, L.attenuation.linear));
+        put(b + 4, glm::vec4(L.spot.direction, L.attenuation.quadratic));
+        put(b + 5, glm::vec4(L.spot.exponent, L.spot.cos_cutoff, L.spot.cos_inner, L.spot.cos_outer));
+    }
+}
+
+/// The test's vertex shader after the twin: case gl_VertexID read from the texture, shaded by
+/// phong_shade, the colour captured as `result` (alpha 0 without PHONG_ALPHA).
+const char* const case_shader = R"(
+uniform highp sampler2D cases;
+out vec4 result;
+vec4 at(int i) { return texelFetch(cases, ivec2(i, gl_VertexID), 0); }
+void main() {
+    phong_material mat;
+    mat.ka = at(3).xyz; mat.alpha = at(3).w; mat.kd = at(4).xyz; mat.ks = at(5).xyz; mat.emission = at(6).xyz;
+    mat.shininess = at(2).w;
+    phong_environment env;
+    env.ambient = at(7).xyz;
+    env.eye = at(8);
+    int count = int(at(1).w);
+    phong_light lights[PHONG_MAX_LIGHTS];
+    for (int i = 0; i < PHONG_MAX_LIGHTS; ++i) {
+        int b = 9 + 6 * i;
+        lights[i].position = at(b);
+        lights[i].ambient = at(b + 1).xyz; lights[i].attenuation.range = at(b + 1).w;
+        lights[i].diffuse = at(b + 2).xyz; lights[i].attenuation.constant = at(b + 2).w;
+        lights[i].specular = at(b + 3).xyz; lights[i].attenuation.linear = at(b + 3).w;
+        lights[i].spot.direction = at(b + 4).xyz; lights[i].attenuation.quadratic = at(b + 4).w;
+        lights[i].spot.exponent = at(b + 5).x; lights[i].spot.cos_cutoff = at(b + 5).y;
+        lights[i].spot.cos_inner = at(b + 5).z; lights[i].spot.cos_outer = at(b + 5).w;
+    }
+    phong_color c = phong_shade(at(0).xyz, at(1).xyz, at(2).xyz, mat, lights, count, env, at(0).w > 0.5);
+#if PHONG_ALPHA
+    result = c;
+#else
+    result = vec4(c, 0.0);
+#endif
+    gl_Position = vec4(0.0);
+}
+)";
+
+/// The twin's colours of `scenes` in context c with the given defines (chunks of 4096 cases).
+std::vector<float> run_twin(const glt::context& c, const std::string& defines, const std::vector<scene>& scenes)
+{
+    const std::string text = phong::glsl::shader(glt::version_line(c.which()), defines, phong::glsl::source(), case_shader);
+    glt::feedback_program program(c, text, "result");
+    std::vector<float> out;
+    constexpr std::size_t chunk = 4096;
+    for (std::size_t first = 0; first < scenes.size(); first += chunk) {
+        const std::size_t n = std::min(chunk, scenes.size() - first);
+        std::vector<float> texels(n * texels_per_case * 4, 0.0f);
+        for (std::size_t i = 0; i < n; ++i) pack(scenes[first + i], &texels[i * texels_per_case * 4]);
+        glt::float_texture tex(c, texels_per_case, int(n), texels);
+        const std::vector<float> r = program.run(int(n), 4, [&] { c.gl().glUniform1i(program.uniform("cases"), 0); });
+        out.insert(out.end(), r.begin(), r.end());
+    }
+    return out;
+}
+
+/// phong::shade<F> on the CPU, float, as rgba (alpha 0 without F.alpha).
+template <features F>
+glm::vec4 cpu_shade(const scene& s)
+{
+    const std::span<const phong::light<float>> lights(s.lights);
+    if constexpr (F.view == phong::view_model::given) {
+        const auto c = phong::shade<F>(s.position, s.normal, s.view, s.material, lights, s.environment, s.front_facing);
+        if constexpr (F.alpha) return c;
+        else return glm::vec4(c, 0);
+    } else {
+        const auto c = phong::shade<F>(s.position, s.normal, s.material, lights, s.environment, s.front_facing);
+        if constexpr (F.alpha) return c;
+        else return glm::vec4(c, 0);
+    }
+}
+
+/// What one preset's run measured.
+struct tally {
+    int cases = 0, edge_cases = 0, channels = 0, bounded = 0, unbounded = 0, failures = 0, non_finite = 0, cpu_failures = 0;
+    double worst_rel = 0, worst_rel_cpu = 0, worst_rel_twin_cpu = 0, worst_rel_edge = 0;
+    double worst_ratio = 0; // worst error / its widened bound
+};
+
+driver_error measured; // llvmpipe's error, measured once per process (the first context's)
+bool measured_once = false;
+
+template <features F>
+tally agree(const glt::context& c, const char* preset_define, int random_cases, std::uint64_t seed)
+{
+    if (!measured_once) {
+        measured = measure_driver(c);
+        measured_once = true;
+    }
+    const double factor = std::max({1.0, measured.sqrt_u, measured.reciprocal_u, measured.rsqrt_u / 2});
+    generator g(seed);
+    std::vector<scene> scenes;
+    const int edges = random_cases / 3;
+    for (int i = 0; i < random_cases + edges; ++i) {
+        scene s = random_scene<F>(g);
+        if (i >= random_cases) make_edge<F>(s, (i - random_cases) % edge_kinds);
+        scenes.push_back(s);
+    }
+    const std::string defines = std::string("#define ") + preset_define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n";
+    const std::vector<float> twin = run_twin(c, defines, scenes);
+    tally t;
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        const scene& s = scenes[i];
+        const bool edge = int(i) >= random_cases;
+        ++(edge ? t.edge_cases : t.cases);
+        const reference r = evaluate<F>(s, factor, measured.pow_per_y_u * 1.0001, measured.flushes_subnormals);
+        const glm::vec4 cpu = cpu_shade<F>(s);
+        for (int ch = 0; ch < (F.alpha ? 4 : 3); ++ch) {
+            const double gpu = twin[i * 4 + std::size_t(ch)];
+            ++t.channels;
+            if (!std::isfinite(gpu) || gpu < 0) {
+                ++t.non_finite;
+                ++t.failures;
+                MESSAGE("case " << i << " channel " << ch << ": " << gpu << " (not finite and >= 0)");
+                continue;
+            }
+            const double I = double(r.color[std::size_t(ch)]);
+            const double err = std::fabs(gpu - I), err_cpu = std::fabs(double(cpu[ch]) - I);
+            const double scale = std::max(std::fabs(I), 1e-30);
+            if (ch == 3) { // alpha: the material's, exactly
+                if (gpu != double(s.material.alpha)) {
+                    ++t.failures;
+                    MESSAGE("case " << i << ": alpha " << gpu);
+                }
+                continue;
+            }
+            const double bound = r.bound[std::size_t(ch)], widened = r.widened[std::size_t(ch)];
+            if (!(widened < std::numeric_limits<double>::infinity())) {
+                ++t.unbounded;
+                continue;
+            }
+            ++t.bounded;
+            const double allowed = widened * std::fabs(I) + r.allowance;
+            const double rel = err / scale;
+            if (edge) t.worst_rel_edge = std::max(t.worst_rel_edge, std::min(rel, 1.0));
+            else t.worst_rel = std::max(t.worst_rel, rel);
+            if (allowed > 0) t.worst_ratio = std::max(t.worst_ratio, err / allowed);
+            if (!edge) t.worst_rel_twin_cpu = std::max(t.worst_rel_twin_cpu, std::fabs(gpu - double(cpu[ch])) / scale);
+            if (!edge) t.worst_rel_cpu = std::max(t.worst_rel_cpu, err_cpu / scale);
+            if (err > allowed) {
+                ++t.failures;
+                if (t.failures <= 5)
+                    MESSAGE("case " << i << " (" << (edge ? "edge" : "random") << ") channel " << ch << ": twin " << gpu << ", model "
+                                    << I << ", cpu " << cpu[ch] << ", error " << err << " > allowed " << allowed);
+            }
+            if (err_cpu > bound * std::fabs(I) + r.allowance) ++t.cpu_failures;
+        }
+    }
+    return t;
+}
+
+template <features F>
+void check_preset(glt::api a, const char* name, const char* define, std::uint64_t seed)
+{
+    const auto c = open(a);
+    if (!c) return;
+    const tally t = agree<F>(*c, define, 3000, seed);
+    MESSAGE(glt::api_name(a) << ", " << std::string(name) << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
+                             << " channels (" << t.bounded << " with a bound, " << t.unbounded
+                             << " without: a gate or a two-sided flip within rounding); worst relative error against the model: twin "
+                             << t.worst_rel << " (random), " << t.worst_rel_edge << " (edge, capped at 1), phong::shade float "
+                             << t.worst_rel_cpu << "; twin against phong::shade " << t.worst_rel_twin_cpu
+                             << "; worst error / widened bound " << t.worst_ratio);
+    CHECK(t.non_finite == 0);
+    CHECK(t.failures == 0);
+    CHECK(t.cpu_failures == 0); // the reference written here agrees with phong::shade within the published bound
+    CHECK(t.bounded > t.channels / 2);
+}
+
+} // namespace
+
+TEST_CASE("llvmpipe's own error: sqrt, 1/x, 1/sqrt, inversesqrt and pow against a double reference")
+{
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30}) {
+        const auto c = open(a);
+        if (!c) return;
+        const driver_error e = measure_driver(*c);
+        MESSAGE(glt::api_name(a) << ", " << e.samples << " samples: sqrt " << e.sqrt_u << " u, 1/x " << e.reciprocal_u << " u, 1/sqrt(x) "
+                                 << e.rsqrt_u << " u, inversesqrt " << e.inversesqrt_u << " u, pow " << e.pow_per_y_u
+                                 << " (1 + |m log2 x| + m) u (worst relative " << e.pow_worst_rel << " at x = " << e.pow_worst_x
+                                 << ", m = " << e.pow_worst_m << "); subnormal products "
+                                 << std::string(e.flushes_subnormals ? "flushed to 0" : "kept"));
+        CHECK(e.samples > 40000);
+        CHECK(e.sqrt_u <= allowed_operation_u);
+        CHECK(e.reciprocal_u <= allowed_operation_u);
+        CHECK(e.rsqrt_u <= 2 * allowed_operation_u);
+        CHECK(e.inversesqrt_u <= allowed_inversesqrt_u);
+        CHECK(e.pow_per_y_u <= allowed_pow_per_y_u);
+    }
+}
+
+/// Every preset through the twin in context API a (seeds per API: different cases in each).
+void check_presets(glt::api a, std::uint64_t seed)
+{
+    check_preset<phong::presets::classic_phong>(a, "classic_phong", "PHONG_PRESET_CLASSIC_PHONG", seed * 10 + 1);
+    check_preset<phong::presets::blinn_phong_per_light_ambient>(a, "blinn_phong_per_light_ambient",
+                                                                "PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT", seed * 10 + 2);
+    check_preset<phong::presets::raytracer_phong>(a, "raytracer_phong", "PHONG_PRESET_RAYTRACER_PHONG", seed * 10 + 3);
+    check_preset<phong::presets::glsl_ads>(a, "glsl_ads", "PHONG_PRESET_GLSL_ADS", seed * 10 + 4);
+    check_preset<phong::presets::diffuse_only>(a, "diffuse_only", "PHONG_PRESET_DIFFUSE_ONLY", seed * 10 + 5);
+}
+
+TEST_CASE("the twin agrees with the model, every preset, GLSL 330 core") { check_presets(glt::api::gl33_core, 1); }
+TEST_CASE("the twin agrees with the model, every preset, GLSL 300 es") { check_presets(glt::api::gles30, 2); }
