@@ -15,8 +15,10 @@
 // No EGL display (no Mesa EGL): the test fails, naming what is missing, unless
 // PHONG_GLSL_ALLOW_SKIP=1 says a skip is fine.
 #include "gl.hpp"
+#include "seed003.hpp"
 
 #include <doctest/doctest.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <phong/accuracy.hpp>
 #include <phong/glsl.hpp>
 #include <phong/phong.hpp>
@@ -637,3 +639,116 @@ void check_presets(glt::api a, std::uint64_t seed)
 
 TEST_CASE("the twin agrees with the model, every preset, GLSL 330 core") { check_presets(glt::api::gl33_core, 1); }
 TEST_CASE("the twin agrees with the model, every preset, GLSL 300 es") { check_presets(glt::api::gles30, 2); }
+
+TEST_CASE("seed 003's phong.vert, verbatim, against the twin's phong_shade_vertex and phong::shade_vertex (GLSL 410)")
+{
+    const auto c = open(glt::api::gl41_core);
+    if (!c) return;
+    if (!measured_once) measured = measure_driver(*c), measured_once = true;
+    const double factor = std::max({1.0, measured.sqrt_u, measured.reciprocal_u, measured.rsqrt_u / 2});
+    constexpr features F = phong::presets::glsl_ads;
+    glt::feedback_program seed(*c, glt::seed003_source(PHONG_SEED003_VERT), "LightIntensity");
+    glt::feedback_program twin(*c, glt::twin_ads_source(), "LightIntensity");
+    generator g(3003);
+    constexpr int sets = 16, per_set = 256;
+    int cases = 0, failures_twin = 0, failures_seed = 0, non_finite = 0;
+    double worst_twin = 0, worst_seed = 0, worst_seed_twin = 0, worst_cpu_twin = 0;
+    for (int k = 0; k < sets; ++k) {
+        glt::ads_uniforms uni;
+        const glm::vec3 axis = g.direction();
+        uni.model_view = glm::translate(glm::mat4(1), glm::vec3(0, 0, -6) + g.box(1)) * glm::rotate(glm::mat4(1), g.uniform(0, 6.28f), axis) *
+                         glm::scale(glm::mat4(1), glm::vec3(g.uniform(0.5f, 2), g.uniform(0.5f, 2), g.uniform(0.5f, 2)));
+        uni.normal_matrix = phong::normal_matrix(uni.model_view);
+        uni.projection = glm::perspective(0.8f, 1.3f, 0.1f, 100.0f);
+        uni.light.position = glm::vec4(g.box(6) + glm::vec3(0, 0, -3), 1);
+        uni.light.ambient = g.colour(0.3f);
+        uni.light.diffuse = g.colour();
+        uni.light.specular = g.colour();
+        uni.material.ka = g.colour();
+        uni.material.kd = g.colour();
+        uni.material.ks = g.colour();
+        uni.material.shininess = k % 4 == 0 ? float(1 + g.rng() % 100) : g.uniform(1, 200); // the seed's range (f in 1..200)
+        std::vector<glm::vec3> positions, normals;
+        for (int i = 0; i < per_set; ++i) positions.push_back(g.box(1.5f)), normals.push_back(g.direction());
+        glt::vertex_buffers vb(*c, positions, normals);
+        const auto bind = [&](const glt::feedback_program& p, bool is_seed) {
+            return [&, is_seed] {
+                vb.attach();
+                glt::set_ads_uniforms(*c, p, uni, is_seed);
+            };
+        };
+        const std::vector<float> out_seed = seed.run(per_set, 3, bind(seed, true));
+        const std::vector<float> out_twin = twin.run(per_set, 3, bind(twin, false));
+        const std::array lights{uni.light};
+        for (int i = 0; i < per_set; ++i) {
+            ++cases;
+            const glm::vec3 cpu = phong::shade_vertex<F>(positions[std::size_t(i)], normals[std::size_t(i)], uni.model_view,
+                                                         uni.normal_matrix, uni.material, lights);
+            // The model at the eye coordinates the CPU computes (float, as the shaders do); the
+            // shaders' own rounding of ModelView * p and NormalMatrix * n (a few u of Q and n) is
+            // covered by doubling the bound.
+            scene s;
+            s.position = glm::vec3(uni.model_view * glm::vec4(positions[std::size_t(i)], 1));
+            s.normal = uni.normal_matrix * normals[std::size_t(i)];
+            s.material = uni.material;
+            s.lights = {uni.light};
+            const reference r = evaluate<F>(s, factor, measured.pow_per_y_u * 1.0001, measured.flushes_subnormals);
+            for (int ch = 0; ch < 3; ++ch) {
+                const double a = out_seed[std::size_t(i) * 3 + std::size_t(ch)], b = out_twin[std::size_t(i) * 3 + std::size_t(ch)];
+                if (!std::isfinite(a) || !std::isfinite(b)) {
+                    ++non_finite;
+                    continue;
+                }
+                const double I = double(r.color[std::size_t(ch)]), scale = std::max(std::fabs(I), 1e-30);
+                const double allowed = 2 * r.widened[std::size_t(ch)] * std::fabs(I) + r.allowance;
+                worst_twin = std::max(worst_twin, std::fabs(b - I) / scale);
+                worst_seed = std::max(worst_seed, std::fabs(a - I) / scale);
+                worst_seed_twin = std::max(worst_seed_twin, std::fabs(a - b) / scale);
+                worst_cpu_twin = std::max(worst_cpu_twin, std::fabs(double(cpu[ch]) - b) / scale);
+                if (!(std::fabs(b - I) <= allowed)) ++failures_twin;
+                if (!(std::fabs(a - I) <= allowed)) ++failures_seed;
+            }
+        }
+    }
+    MESSAGE("seed 003's phong.vert and the twin, " << cases << " vertices in " << sets
+                                                   << " uniform sets: worst relative error against the model: twin " << worst_twin
+                                                   << ", seed " << worst_seed << "; seed against twin " << worst_seed_twin
+                                                   << "; twin against phong::shade_vertex " << worst_cpu_twin << "; outside the bound: twin "
+                                                   << failures_twin << ", seed " << failures_seed);
+    CHECK(cases == sets * per_set);
+    CHECK(non_finite == 0);
+    CHECK(failures_twin == 0);
+    CHECK(failures_seed == 0);
+}
+
+TEST_CASE("phong::glsl::defines(F) selects the same model as the preset's define; source() reads phong.glsl")
+{
+    const std::string text = phong::glsl::source();
+    CHECK(text.find("phong_shade(") != std::string::npos);
+    CHECK(text.rfind("#version", 0) != 0); // no #version line: the including program's comes first
+    CHECK(text.find("\n#version") == std::string::npos);
+    CHECK_THROWS_AS(phong::glsl::source("/nonexistent"), std::runtime_error);
+    CHECK_THROWS_AS(phong::glsl::defines(phong::presets::with_mode(phong::presets::glsl_ads, phong::evaluation::stable)),
+                    std::invalid_argument);
+    const auto c = open(glt::api::gl33_core);
+    if (!c) return;
+    // A feature set no preset has (spot cones, windowed falloff, emission, two-sided by flag, any
+    // lights): the same colours bit for bit from defines(F) and from the same fields written by hand,
+    // and each preset's defines(F) against its preset define.
+    generator g(77);
+    std::vector<scene> scenes;
+    for (int i = 0; i < 512; ++i) scenes.push_back(random_scene<phong::presets::classic_phong>(g));
+    const auto same = [&](const std::string& a, const std::string& b) {
+        const std::vector<float> x = run_twin(*c, a, scenes), y = run_twin(*c, b, scenes);
+        return x == y;
+    };
+    const std::string max = "#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n";
+    CHECK(same(phong::glsl::defines(phong::presets::classic_phong, max_lights), "#define PHONG_PRESET_CLASSIC_PHONG\n" + max));
+    CHECK(same(phong::glsl::defines(phong::presets::blinn_phong_per_light_ambient, max_lights),
+               "#define PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT\n" + max));
+    CHECK(same(phong::glsl::defines(phong::presets::raytracer_phong, max_lights), "#define PHONG_PRESET_RAYTRACER_PHONG\n" + max));
+    CHECK(same(phong::glsl::defines(phong::presets::glsl_ads, max_lights), "#define PHONG_PRESET_GLSL_ADS\n" + max));
+    CHECK(same(phong::glsl::defines(phong::presets::diffuse_only, max_lights), "#define PHONG_PRESET_DIFFUSE_ONLY\n" + max));
+    CHECK(same(phong::glsl::defines(phong::features{}, max_lights), max));
+    CHECK_FALSE(same(phong::glsl::defines(phong::presets::glsl_ads, max_lights), "#define PHONG_PRESET_DIFFUSE_ONLY\n" + max));
+}
