@@ -471,22 +471,12 @@ struct phong_sums {
     vec3 specular;
 };
 
-/// detail::exact::prepare: the unit normal (two-sided: faced toward the viewer, or by
-/// front_facing), the view vector per PHONG_VIEW (given_view: read for PHONG_VIEW_GIVEN only),
-/// whether both exist, n.v. Edge: a zero normal gives defined = false (no diffuse, no specular);
-/// no view vector (q at the eye, a zero given v) gives sees_viewer = false (no specular).
-phong_frame phong_prepare(vec3 q, vec3 normal, vec3 given_view, phong_environment env, bool front_facing)
+/// phong_prepare with the unit normal n given (n_ok: it exists; n = 0 otherwise): the view
+/// vector, two-sided negation and n.v. phong_shade_vertex's normal is unit already.
+phong_frame phong_prepare_unit(vec3 q, vec3 n, bool n_ok, vec3 given_view, phong_environment env, bool front_facing)
 {
     phong_frame s;
     s.position = q;
-#if PHONG_UNIT_INPUTS
-    vec3 n = normal;
-    bool n_ok = true;
-#else
-    float n_inv = phong_exact_inverse_length(dot(normal, normal));
-    vec3 n = normal * n_inv;
-    bool n_ok = n_inv > 0.0;
-#endif
     vec3 v = vec3(0.0);
     bool v_ok = true;
 #if PHONG_VIEW == PHONG_VIEW_FIXED_DIRECTION
@@ -523,6 +513,20 @@ phong_frame phong_prepare(vec3 q, vec3 normal, vec3 given_view, phong_environmen
     s.sees_viewer = v_ok;
     s.nv = dot(n, v);
     return s;
+}
+
+/// detail::exact::prepare: the unit normal (two-sided: faced toward the viewer, or by
+/// front_facing), the view vector per PHONG_VIEW (given_view: read for PHONG_VIEW_GIVEN only),
+/// whether both exist, n.v. Edge: a zero normal gives defined = false (no diffuse, no specular);
+/// no view vector (q at the eye, a zero given v) gives sees_viewer = false (no specular).
+phong_frame phong_prepare(vec3 q, vec3 normal, vec3 given_view, phong_environment env, bool front_facing)
+{
+#if PHONG_UNIT_INPUTS
+    return phong_prepare_unit(q, normal, true, given_view, env, front_facing);
+#else
+    float n_inv = phong_exact_inverse_length(dot(normal, normal));
+    return phong_prepare_unit(q, normal * n_inv, n_inv > 0.0, given_view, env, front_facing);
+#endif
 }
 
 /// detail::light_factor: f_i = attenuation(distance) * spot(l) for one light; distance = |L.xyz
@@ -682,17 +686,10 @@ phong_color phong_total_of(phong_shading_terms t)
 #endif
 }
 
-/// phong::shade_terms<F>: the model's terms at the point q with normal n (any length; unit with
-/// PHONG_UNIT_INPUTS), view vector v (read only with PHONG_VIEW_GIVEN: from q toward the viewer,
-/// any length), the first `count` lights of `lights` (count <= PHONG_MAX_LIGHTS), the material,
-/// the environment, and front_facing (read only with PHONG_FACING_FLAG).
-/// Edges: those of phong::shade (a light at q adds its ambient only; n = 0: no diffuse or
-/// specular; no view vector: no specular; Blinn's l = -v: n.h = 0; m = 0: base^0 = 1; c0 = 0 and
-/// d = 0: f capped at 2^63); a squared length outside float's normal range drops its vector.
-phong_shading_terms phong_shade_terms(vec3 q, vec3 n, vec3 v, phong_material mat, phong_light lights[PHONG_MAX_LIGHTS],
-                                      int count, phong_environment env, bool front_facing)
+/// The terms at a prepared point: every light's terms added (the first `count`), then terms_of.
+phong_shading_terms phong_terms_at(phong_frame s, phong_material mat, phong_light lights[PHONG_MAX_LIGHTS], int count,
+                                   phong_environment env)
 {
-    phong_frame s = phong_prepare(q, n, v, env, front_facing);
     phong_sums sums;
     sums.ambient = vec3(0.0);
     sums.diffuse = vec3(0.0);
@@ -703,6 +700,20 @@ phong_shading_terms phong_shade_terms(vec3 q, vec3 n, vec3 v, phong_material mat
     }
     return phong_terms_of(sums, mat, env);
 }
+
+/// phong::shade_terms<F>: the model's terms at the point q with normal n (any length; unit with
+/// PHONG_UNIT_INPUTS), view vector v (read only with PHONG_VIEW_GIVEN: from q toward the viewer,
+/// any length), the first `count` lights of `lights` (count <= PHONG_MAX_LIGHTS), the material,
+/// the environment, and front_facing (read only with PHONG_FACING_FLAG).
+/// Edges: those of phong::shade (a light at q adds its ambient only; n = 0: no diffuse or
+/// specular; no view vector: no specular; Blinn's l = -v: n.h = 0; m = 0: base^0 = 1; c0 = 0 and
+/// d = 0: f capped at 2^63); a squared length outside float's normal range drops its vector.
+phong_shading_terms phong_shade_terms(vec3 q, vec3 n, vec3 v, phong_material mat, phong_light lights[PHONG_MAX_LIGHTS],
+                                      int count, phong_environment env, bool front_facing)
+{
+    return phong_terms_at(phong_prepare(q, n, v, env, front_facing), mat, lights, count, env);
+}
+
 
 /// phong::shade<F>: the full local model at q,
 ///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0) + ks sum_i f_i Ls_i s_i,
@@ -720,5 +731,7 @@ phong_color phong_shade_vertex(vec3 p, vec3 n, mat4 model_view, mat3 normal_matr
                                phong_light lights[PHONG_MAX_LIGHTS], int count, phong_environment env)
 {
     vec4 eye = model_view * vec4(p, 1.0);
-    return phong_shade(eye.xyz, phong_transform_normal(normal_matrix, n), vec3(0.0), mat, lights, count, env, true);
+    vec3 unit = phong_transform_normal(normal_matrix, n); // unit, or 0: not normalized a second time
+    phong_frame s = phong_prepare_unit(eye.xyz, unit, dot(unit, unit) > 0.0, vec3(0.0), env, true);
+    return phong_total_of(phong_terms_at(s, mat, lights, count, env));
 }
