@@ -41,7 +41,8 @@ namespace glt {
     X(glBindFramebuffer, PFNGLBINDFRAMEBUFFERPROC) X(glGenRenderbuffers, PFNGLGENRENDERBUFFERSPROC)                              \
     X(glBindRenderbuffer, PFNGLBINDRENDERBUFFERPROC) X(glRenderbufferStorage, PFNGLRENDERBUFFERSTORAGEPROC)                      \
     X(glFramebufferRenderbuffer, PFNGLFRAMEBUFFERRENDERBUFFERPROC) X(glDeleteFramebuffers, PFNGLDELETEFRAMEBUFFERSPROC)          \
-    X(glDeleteRenderbuffers, PFNGLDELETERENDERBUFFERSPROC)
+    X(glDeleteRenderbuffers, PFNGLDELETERENDERBUFFERSPROC) X(glReadPixels, PFNGLREADPIXELSPROC) X(glViewport, PFNGLVIEWPORTPROC) \
+    X(glClear, PFNGLCLEARPROC) X(glClearColor, PFNGLCLEARCOLORPROC)
 
 struct functions {
 #define GLT_MEMBER(name, type) type name = nullptr;
@@ -141,15 +142,18 @@ private:
 /// transform feedback, and a fragment shader that does nothing (ES needs one).
 class feedback_program {
 public:
-    feedback_program(const context& c, const std::string& vertex_source, const char* varying) : c_(c)
+    /// varying: the vertex shader's output to capture (nullptr: none, for a program that draws).
+    /// fragment_source: "" for one that does nothing.
+    feedback_program(const context& c, const std::string& vertex_source, const char* varying, std::string fragment_source = "") : c_(c)
     {
         const functions& gl = c.gl();
-        const std::string fragment = std::string(version_line(c.which())) + "\nprecision highp float;\nout vec4 o;\nvoid main() { o = vec4(0.0); }\n";
-        const GLuint vs = compile(GL_VERTEX_SHADER, vertex_source), fs = compile(GL_FRAGMENT_SHADER, fragment);
+        if (fragment_source.empty())
+            fragment_source = std::string(version_line(c.which())) + "\nprecision highp float;\nout vec4 o;\nvoid main() { o = vec4(0.0); }\n";
+        const GLuint vs = compile(GL_VERTEX_SHADER, vertex_source), fs = compile(GL_FRAGMENT_SHADER, fragment_source);
         program_ = gl.glCreateProgram();
         gl.glAttachShader(program_, vs);
         gl.glAttachShader(program_, fs);
-        gl.glTransformFeedbackVaryings(program_, 1, &varying, GL_INTERLEAVED_ATTRIBS);
+        if (varying) gl.glTransformFeedbackVaryings(program_, 1, &varying, GL_INTERLEAVED_ATTRIBS);
         gl.glLinkProgram(program_);
         gl.glDeleteShader(vs);
         gl.glDeleteShader(fs);

@@ -752,3 +752,82 @@ TEST_CASE("phong::glsl::defines(F) selects the same model as the preset's define
     CHECK(same(phong::glsl::defines(phong::features{}, max_lights), max));
     CHECK_FALSE(same(phong::glsl::defines(phong::presets::glsl_ads, max_lights), "#define PHONG_PRESET_DIFFUSE_ONLY\n" + max));
 }
+
+namespace {
+/// The recipe's fragment shader (tests/glsl/recipe.frag = docs/glsl.md's block, checked by
+/// .ci/steps/55-glsl.sh) on one pixel: a point at the centre of the 1x1 framebuffer, its eye-space
+/// position and normal from uniforms; the pixel (RGBA8) against phong::shade<classic_phong>.
+int recipe_failures(const glt::context& c, int scenes, double& worst)
+{
+    const glt::functions& gl = c.gl();
+    const std::string version = glt::version_line(c.which());
+    const std::string vertex = version + R"(
+uniform vec3 q;
+uniform vec3 n;
+out vec3 ec_position;
+out vec3 ec_normal;
+void main() { ec_position = q; ec_normal = n; gl_Position = vec4(0.0, 0.0, 0.0, 1.0); gl_PointSize = 1.0; }
+)";
+    const std::string fragment = phong::glsl::shader(version, "#define PHONG_PRESET_CLASSIC_PHONG\n", phong::glsl::source(),
+                                                     glt::seed003_source(PHONG_RECIPE_FRAG));
+    glt::feedback_program p(c, vertex, nullptr, fragment);
+    constexpr features F = phong::presets::classic_phong;
+    generator g(4242);
+    int failures = 0;
+    for (int k = 0; k < scenes; ++k) {
+        scene s = random_scene<F>(g);
+        // Colours within [0, 1] (the pixel is 8-bit): small coefficients.
+        s.material.ka *= 0.2f, s.material.kd *= 0.2f, s.material.ks *= 0.2f, s.environment.ambient *= 0.5f;
+        gl.glUseProgram(p.id());
+        const auto v3 = [&](const std::string& name, const glm::vec3& v) { gl.glUniform3fv(p.uniform(name.c_str()), 1, &v.x); };
+        const auto f1 = [&](const std::string& name, float v) { gl.glUniform1f(p.uniform(name.c_str()), v); };
+        v3("q", s.position);
+        v3("n", s.normal);
+        v3("material.ka", s.material.ka), v3("material.kd", s.material.kd), v3("material.ks", s.material.ks);
+        v3("material.emission", s.material.emission);
+        f1("material.shininess", s.material.shininess), f1("material.alpha", s.material.alpha);
+        v3("environment.ambient", s.environment.ambient);
+        gl.glUniform4fv(p.uniform("environment.eye"), 1, &s.environment.eye.x);
+        gl.glUniform1i(p.uniform("light_count"), int(s.lights.size()));
+        for (std::size_t i = 0; i < s.lights.size(); ++i) {
+            const std::string L = "lights[" + std::to_string(i) + "].";
+            const phong::light<float>& l = s.lights[i];
+            gl.glUniform4fv(p.uniform((L + "position").c_str()), 1, &l.position.x);
+            v3(L + "ambient", l.ambient), v3(L + "diffuse", l.diffuse), v3(L + "specular", l.specular);
+            f1(L + "attenuation.constant", l.attenuation.constant), f1(L + "attenuation.linear", l.attenuation.linear);
+            f1(L + "attenuation.quadratic", l.attenuation.quadratic);
+        }
+        GLuint vao = 0;
+        gl.glGenVertexArrays(1, &vao);
+        gl.glBindVertexArray(vao);
+        gl.glViewport(0, 0, 1, 1);
+        gl.glClearColor(0, 0, 0, 0);
+        gl.glClear(GL_COLOR_BUFFER_BIT);
+        gl.glDrawArrays(GL_POINTS, 0, 1);
+        unsigned char pixel[4] = {0, 0, 0, 0};
+        gl.glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+        gl.glBindVertexArray(0);
+        gl.glDeleteVertexArrays(1, &vao);
+        const glm::vec4 cpu = cpu_shade<F>(s);
+        for (int ch = 0; ch < 4; ++ch) {
+            const double expected = std::clamp(double(cpu[ch]), 0.0, 1.0), got = pixel[ch] / 255.0;
+            worst = std::max(worst, std::fabs(got - expected));
+            if (std::fabs(got - expected) > 0.5 / 255 + 1e-4) ++failures;
+        }
+    }
+    if (gl.glGetError() != GL_NO_ERROR) ++failures;
+    return failures;
+}
+} // namespace
+
+TEST_CASE("docs/glsl.md's recipe: the fragment shader as written, one pixel per scene, against phong::shade (330 core, 300 es)")
+{
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30}) {
+        const auto c = open(a);
+        if (!c) return;
+        double worst = 0;
+        const int failures = recipe_failures(*c, 64, worst);
+        MESSAGE(glt::api_name(a) << ": recipe.frag, 64 scenes, worst |pixel - phong::shade| " << worst * 255 << " / 255");
+        CHECK(failures == 0);
+    }
+}

@@ -289,16 +289,18 @@ float phong_exact_inverse_length(float dd)
     return (dd >= phong_min_square && dd <= phong_largest) ? phong_rsqrt(dd) : 0.0;
 }
 
-/// phong::normalize: v / |v|, scaled first by its largest component so that huge and tiny
-/// vectors survive. Edge: normalize(0) = 0 (GLSL's normalize(0) is undefined).
+/// phong::normalize: v / |v|, scaled first by a power of two (exact) that brings its largest
+/// component into [1, 2), so that huge and tiny vectors survive. Edge: normalize(0) = 0 (GLSL's
+/// normalize(0) is undefined). Branch-free: SIMD shader compilers (llvmpipe's) run both sides of
+/// a branch whose lanes disagree.
 vec3 phong_normalize(vec3 v)
 {
-    float dd = dot(v, v);
-    if (dd >= phong_min_square && dd <= phong_largest) return v * phong_rsqrt(dd);
     float m = max(max(abs(v.x), abs(v.y)), abs(v.z));
-    if (!(m > 0.0) || m > phong_largest) return vec3(0.0);
-    vec3 s = v / m; // largest component 1: |s|^2 in [1, 3]
-    return s * phong_rsqrt(dot(s, s));
+    // 2^(127 - e) for m's biased exponent e (at least 2^-126, for m beyond 2^127): m * scale in [1, 4)
+    int e = int(floatBitsToUint(m) >> 23);
+    float scale = uintBitsToFloat(uint(max(254 - e, 1)) << 23);
+    vec3 s = v * scale;
+    return (m > 0.0 && m <= phong_largest) ? s * phong_rsqrt(dot(s, s)) : vec3(0.0);
 }
 
 /// phong::pow_unit: x^m for a base x in [0, 1] and m >= 0, with pow(0, 0) = 1 and 0^m = 0 for
@@ -727,11 +729,14 @@ phong_color phong_shade(vec3 q, vec3 n, vec3 v, phong_material mat, phong_light 
 /// phong::shade_vertex<F> (seed 003's phong.vert): eyeCoords = model_view * (p, 1),
 /// tnorm = normalize(normal_matrix * n), then phong_shade at (eyeCoords.xyz, tnorm) with lights in
 /// eye coordinates. Pre: model_view affine; PHONG_VIEW not PHONG_VIEW_GIVEN.
+/// Edge: normal_matrix * n is normalized once, by phong_shade: where its squared length is not a
+/// normal float (|N n| below about 1.1e-19 or above 1.8e19) the normal is dropped (no diffuse or
+/// specular), as phong_shade drops such a normal; C++ shade_vertex rescales it first
+/// (transform_normal). A shader compiler that runs both sides of every branch (llvmpipe) would
+/// otherwise pay for the rescaling on every vertex.
 phong_color phong_shade_vertex(vec3 p, vec3 n, mat4 model_view, mat3 normal_matrix, phong_material mat,
                                phong_light lights[PHONG_MAX_LIGHTS], int count, phong_environment env)
 {
     vec4 eye = model_view * vec4(p, 1.0);
-    vec3 unit = phong_transform_normal(normal_matrix, n); // unit, or 0: not normalized a second time
-    phong_frame s = phong_prepare_unit(eye.xyz, unit, dot(unit, unit) > 0.0, vec3(0.0), env, true);
-    return phong_total_of(phong_terms_at(s, mat, lights, count, env));
+    return phong_shade(eye.xyz, normal_matrix * n, vec3(0.0), mat, lights, count, env, true);
 }

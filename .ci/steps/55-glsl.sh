@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The GLSL twin (include/phong/glsl/phong.glsl; docs/glsl.md):
+#  1. glslangValidator compiles it for GLSL 330 core, 450 core and 300 es (tests/glsl/validate.sh);
+#  2. docs/glsl.md's recipe block is tests/glsl/recipe.frag, byte for byte (the test renders that file);
+#  3. phong_glsl_tests on Mesa llvmpipe, headless (EGL surfaceless): llvmpipe's own error, every preset
+#     in GLSL 330 core and 300 es against the model, seed 003's phong.vert verbatim, the recipe. Built
+#     by step 10 (gcc-debug) already; it must exist: no EGL headers here is a failure, not a skip, and
+#     PHONG_GLSL_ALLOW_SKIP is cleared so that a missing EGL display fails too;
+#  4. the throughput benchmark, short (the bench preset; docs/glsl.md has the full run's command).
+set -euo pipefail
+root="$PWD"
+tests/glsl/validate.sh
+block="$(awk 'index($0, "<!-- tests/glsl/recipe.frag:") == 1 { f = 1; next } f == 1 && /^```/ { f = 2; next }
+              f == 2 && /^```$/ { exit } f == 2 { print }' docs/glsl.md)"
+[[ -n "$block" ]] || { echo "55-glsl: docs/glsl.md has no block marked tests/glsl/recipe.frag"; exit 1; }
+diff -u <(printf '%s\n' "$block") tests/glsl/recipe.frag ||
+  { echo "55-glsl: tests/glsl/recipe.frag differs from docs/glsl.md's recipe block (above)"; exit 1; }
+echo "55-glsl: tests/glsl/recipe.frag is docs/glsl.md's recipe block"
+[[ -f build/gcc-debug/CMakeCache.txt ]] || cmake --preset gcc-debug >/dev/null
+cmake --build build/gcc-debug --target phong_glsl_tests -j2
+export EGL_PLATFORM=surfaceless LIBGL_ALWAYS_SOFTWARE=1
+unset PHONG_GLSL_ALLOW_SKIP
+build/gcc-debug/tests/glsl/phong_glsl_tests
+[[ -f build/bench/CMakeCache.txt ]] || cmake --preset bench >/dev/null
+cmake --build build/bench --target phong_glsl_bench -j2
+build/bench/benchmarks/glsl/phong_glsl_bench 131072 21
