@@ -517,14 +517,16 @@ struct tally {
 driver_error measured; // llvmpipe's error, measured once per process (the first context's)
 bool measured_once = false;
 
+/// extra: more defines after the preset's (PHONG_MODE_FAST: the fast mode, GLSL's inversesqrt; the
+/// CPU side stays F's exact mode, whose bound the widened bound starts from).
 template <features F>
-tally agree(const glt::context& c, const char* preset_define, int random_cases, std::uint64_t seed)
+tally agree(const glt::context& c, const char* preset_define, int random_cases, std::uint64_t seed, const std::string& extra = "")
 {
     if (!measured_once) {
         measured = measure_driver(c);
         measured_once = true;
     }
-    const double factor = std::max({1.0, measured.sqrt_u, measured.reciprocal_u, measured.rsqrt_u / 2});
+    const double factor = std::max({1.0, measured.sqrt_u, measured.reciprocal_u, measured.rsqrt_u / 2, measured.inversesqrt_u / 2});
     generator g(seed);
     std::vector<scene> scenes;
     const int edges = random_cases / 3;
@@ -533,7 +535,7 @@ tally agree(const glt::context& c, const char* preset_define, int random_cases, 
         if (i >= random_cases) make_edge<F>(s, (i - random_cases) % edge_kinds);
         scenes.push_back(s);
     }
-    const std::string defines = std::string("#define ") + preset_define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n";
+    const std::string defines = std::string("#define ") + preset_define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n" + extra;
     const std::vector<float> twin = run_twin(c, defines, scenes);
     tally t;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -587,12 +589,12 @@ tally agree(const glt::context& c, const char* preset_define, int random_cases, 
 }
 
 template <features F>
-void check_preset(glt::api a, const char* name, const char* define, std::uint64_t seed)
+void check_preset(glt::api a, const char* name, const char* define, std::uint64_t seed, const std::string& extra = "")
 {
     const auto c = open(a);
     if (!c) return;
-    const tally t = agree<F>(*c, define, 3000, seed);
-    MESSAGE(glt::api_name(a) << ", " << std::string(name) << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
+    const tally t = agree<F>(*c, define, 3000, seed, extra);
+    MESSAGE(glt::api_name(a) << ", " << std::string(name) << std::string(extra.empty() ? "" : ", fast mode") << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
                              << " channels (" << t.bounded << " with a bound, " << t.unbounded
                              << " without: a gate or a two-sided flip within rounding); worst relative error against the model: twin "
                              << t.worst_rel << " (random), " << t.worst_rel_edge << " (edge, capped at 1), phong::shade float "
@@ -639,6 +641,16 @@ void check_presets(glt::api a, std::uint64_t seed)
 
 TEST_CASE("the twin agrees with the model, every preset, GLSL 330 core") { check_presets(glt::api::gl33_core, 1); }
 TEST_CASE("the twin agrees with the model, every preset, GLSL 300 es") { check_presets(glt::api::gles30, 2); }
+TEST_CASE("the twin's fast mode (inversesqrt) agrees with the model: Phong and Blinn presets, GLSL 330 core and 300 es")
+{
+    const std::string fast = "#define PHONG_MODE PHONG_MODE_FAST\n";
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30}) {
+        const std::uint64_t seed = a == glt::api::gles30 ? 40 : 30;
+        check_preset<phong::presets::glsl_ads>(a, "glsl_ads", "PHONG_PRESET_GLSL_ADS", seed + 1, fast);
+        check_preset<phong::presets::blinn_phong_per_light_ambient>(a, "blinn_phong_per_light_ambient",
+                                                                    "PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT", seed + 2, fast);
+    }
+}
 
 TEST_CASE("seed 003's phong.vert, verbatim, against the twin's phong_shade_vertex and phong::shade_vertex (GLSL 410)")
 {
