@@ -215,6 +215,57 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
             den = ld(L.attenuation.constant) + ld(L.attenuation.linear) * len + ld(L.attenuation.quadratic) * len * len;
             f = 1 / std::max(den, ld(phong::attenuation_denominator_min<float>));
         }
+        // The window and the spot, beyond the exact bound's features: their own conditioning
+        // (shade.hpp: "a spot adds its own conditioning: the cone cosine's few eps of rounding times
+        // the spot's slope"), with the cone cosine's error E = 16 u (l: rho + 6 u, the axis
+        // normalized: 3 u, the dot product: 3 u, rounded up), and the window's ratio's 8 u. +inf where
+        // the cosine is within E of an edge of the cone, or the window within 2^-10 of closing.
+        double f_extra = 0;
+        const double inf = std::numeric_limits<double>::infinity();
+        if (F.attenuation == phong::attenuation_model::windowed && w > 0) {
+            const ld r = len / ld(L.attenuation.range), r4 = r * r * r * r;
+            const ld window = std::clamp(1 - r4, ld(0), ld(1));
+            f = window * window / std::max(len * len, ld(phong::attenuation_denominator_min<float>));
+            if (window > 0x1p-10) f_extra += double(8 * r4 / window) * 8 * u + 8 * u;
+            else if (r4 < 1 + 64 * u) f_extra = inf; // closing: no relative bound
+            // else beyond the range by more than the ratio's error: f = 0 on both sides
+        }
+        if constexpr (F.spot != phong::spot_model::none) {
+            const ld3 axis = L3(L.spot.direction);
+            const ld c = -dot(l, axis * (1 / std::sqrt(dot(axis, axis))));
+            const double E = 16 * u;
+            ld spot = 1;
+            if constexpr (F.spot == phong::spot_model::opengl) {
+                if (L.spot.cos_cutoff > -1) {
+                    spot = c >= L.spot.cos_cutoff ? (L.spot.exponent == 0 ? 1 : std::pow(std::clamp(c, ld(0), ld(1)), ld(L.spot.exponent))) : 0;
+                    if (std::fabs(double(c - L.spot.cos_cutoff)) <= E) f_extra = inf; // at the cone's edge
+                    else if (spot > 0 && L.spot.exponent > 0) {
+                        if (c <= E) f_extra = inf;
+                        else {
+                            const double y = std::fabs(L.spot.exponent * std::log2(double(c)));
+                            f_extra += L.spot.exponent * E / double(c) + pow_per_y_u * (1 + y + L.spot.exponent) * u;
+                        }
+                    }
+                }
+            } else {
+                const ld width = ld(L.spot.cos_inner) - ld(L.spot.cos_outer);
+                if (width > 0) {
+                    const ld t = std::clamp((c - L.spot.cos_outer) / width, ld(0), ld(1));
+                    spot = t * t * (3 - 2 * t);
+                    if (c < L.spot.cos_outer - 4 * E || c > L.spot.cos_inner + 4 * E) {
+                        // outside the outer cone (0) or inside the inner one (1), beyond the cosine's error: exact
+                    } else if (t * width <= ld(E) * 8) {
+                        f_extra = inf; // at the outer edge: no relative bound
+                    } else if (t < 1) {
+                        f_extra += double(6 * (1 - t) / (width * t * (3 - 2 * t))) * E * 2 + 16 * u;
+                    }
+                } else {
+                    spot = c >= L.spot.cos_outer ? 1 : 0;
+                    if (std::fabs(double(c - L.spot.cos_outer)) <= E) f_extra = inf;
+                }
+            }
+            f *= spot;
+        }
         f_max = std::max(f_max, double(f));
         for (int ch = 0; ch < 3; ++ch) {
             k_max = std::max({k_max, double(L.diffuse[ch]), double(L.specular[ch]), double(L.ambient[ch])});
@@ -248,9 +299,21 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
             k.specular = specular_model::none;
         }
         k.c = double(c);
-        if (!lit) {
-            continue; // both sides add no diffuse or specular (the ambient above has the factor's error only)
+        // The light's ambient term ka La_i f (attenuated): f's error, lit or not.
+        double ambient_bound = 0;
+        if (F.light_ambient && F.attenuate_ambient && (attenuated || f_extra > 0)) {
+            acc::pair_conditioning ka = k;
+            ka.nl = 1;
+            ka.specular = specular_model::none;
+            ka.in_range = true;
+            ambient_bound = acc::detail::compose(acc::exact_diffuse_bound<float>(ka), f_extra);
+            for (int ch = 0; ch < 3; ++ch)
+                if (s.material.ka[ch] * L.ambient[ch] > 0) {
+                    worst[ch] = std::max(worst[ch], ambient_bound);
+                    worst_widened[ch] = std::max(worst_widened[ch], ambient_bound * operation_factor);
+                }
         }
+        if (!lit) continue; // both sides add no diffuse or specular
         ld power = 0;
         if (ee > 0) power = k.m == 0 ? 1 : (c > 0 ? std::pow(std::min(c, ld(1)), ld(k.m)) : 0);
         double diffuse_bound = acc::exact_diffuse_bound<float>(k);
@@ -258,13 +321,11 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
         if (!gated) ks.nl = 1; // no gate: the specular term does not depend on n.l's sign (n.l enters E_c: 1 is the larger)
         double specular_bound = F.specular == specular_model::none || !(ee > 0) ? 0 : acc::exact_specular_bound<float>(ks);
         const double y = (c > 0 && k.m > 0) ? std::fabs(k.m * std::log2(double(std::min(c, ld(1))))) : 0;
-        double ambient_bound = 0;
-        if (F.light_ambient && attenuated) {
-            acc::pair_conditioning ka = k;
-            ka.nl = 1;
-            ambient_bound = acc::exact_diffuse_bound<float>(ka);
-        }
         if (two_sided_ambiguous) diffuse_bound = specular_bound = std::numeric_limits<double>::infinity();
+        if (f_extra > 0) { // the window's and the spot's own error, on every term the light scales
+            diffuse_bound = acc::detail::compose(diffuse_bound, f_extra);
+            specular_bound = acc::detail::compose(specular_bound, f_extra);
+        }
         for (int ch = 0; ch < 3; ++ch) {
             const ld kd = ld(s.material.kd[ch]) * ld(L.diffuse[ch]), kspec = ld(s.material.ks[ch]) * ld(L.specular[ch]);
             if (F.diffuse) diffuse[ch] += ld(L.diffuse[ch]) * f * std::max(nl, ld(0));
@@ -278,10 +339,6 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
                 term = std::max(term, specular_bound);
                 const double pow_extra = k.m > 0 ? pow_per_y_u * (1 + y + k.m) * u : 0;
                 term_widened = std::max(term_widened, specular_bound * operation_factor + pow_extra + ftz_extra * (1 + k.m));
-            }
-            if (F.light_ambient && s.material.ka[ch] * L.ambient[ch] > 0) {
-                term = std::max(term, ambient_bound);
-                term_widened = std::max(term_widened, ambient_bound * operation_factor + ftz_extra);
             }
             if (ftz_out && term_widened > 0) term_widened = std::max(term_widened, 1.0); // the vector may be lost
             worst[ch] = std::max(worst[ch], term);
@@ -344,6 +401,10 @@ scene random_scene(generator& g)
     s.material.alpha = g.uniform(0, 1);
     s.environment.ambient = g.colour(0.5f);
     s.environment.eye = g.rng() % 3 == 0 ? glm::vec4(g.direction(), 0) : glm::vec4(g.box(2), 1);
+    if constexpr (F.unit_inputs) { // the precondition: unit normal and view vector
+        s.normal = glm::normalize(s.normal);
+        s.view = glm::normalize(s.view);
+    }
     const int K = 1 + int(g.rng() % max_lights);
     for (int i = 0; i < K; ++i) {
         phong::light<float> L;
@@ -353,7 +414,20 @@ scene random_scene(generator& g)
         L.ambient = g.colour(0.3f);
         L.diffuse = g.colour();
         L.specular = g.colour();
-        L.attenuation = {g.uniform(0.2f, 1), g.uniform(0, 0.3f), g.uniform(0, 0.05f), std::numeric_limits<float>::infinity()};
+        L.attenuation = {g.uniform(0.2f, 1), g.uniform(0, 0.3f), g.uniform(0, 0.05f),
+                         g.rng() % 4 == 0 ? std::numeric_limits<float>::infinity() : g.uniform(4, 30)};
+        if constexpr (F.spot != phong::spot_model::none) {
+            // An axis roughly toward the point, so that the point is inside some cones and outside others.
+            const glm::vec3 toward_point = directional ? -glm::vec3(L.position) : s.position - glm::vec3(L.position);
+            const glm::vec3 axis = glm::normalize(glm::normalize(toward_point) + g.box(0.6f)) ;
+            if constexpr (F.spot == phong::spot_model::opengl)
+                L.spot = phong::spot_cone<float>::opengl(axis, g.rng() % 4 == 0 ? 0.0f : g.uniform(0, 64),
+                                                         g.rng() % 5 == 0 ? 180.0f : g.uniform(10, 90));
+            else {
+                const float inner = g.uniform(0, 40);
+                L.spot = phong::spot_cone<float>::smooth(axis, inner, g.rng() % 6 == 0 ? inner : inner + g.uniform(0, 40));
+            }
+        }
         s.lights.push_back(L);
     }
     return s;
@@ -375,6 +449,7 @@ void make_edge(scene& s, int kind)
         else if constexpr (F.view == phong::view_model::eye_point) return eye3 - s.environment.eye.w * s.position;
         else return eye3;
     };
+    if (F.unit_inputs && (kind == 1 || kind == 3 || kind == 6 || kind == 7)) kind = 4; // would break the unit precondition
     switch (kind) {
     case 0: L0.position = glm::vec4(s.position, 1); break;
     case 1: s.normal = glm::vec3(0); break;
@@ -406,7 +481,7 @@ void make_edge(scene& s, int kind)
         if constexpr (F.lights == phong::light_kind::any) L0.position = glm::vec4(0, 0, 0, 0);
         else L0.position = glm::vec4(s.position, 1);
         break;
-    default: s.normal = -view_dir(); break;
+    default: s.normal = F.unit_inputs ? glm::normalize(-view_dir()) : -view_dir(); break;
     }
 }
 
@@ -517,10 +592,10 @@ struct tally {
 driver_error measured; // llvmpipe's error, measured once per process (the first context's)
 bool measured_once = false;
 
-/// extra: more defines after the preset's (PHONG_MODE_FAST: the fast mode, GLSL's inversesqrt; the
-/// CPU side stays F's exact mode, whose bound the widened bound starts from).
+/// defines: the twin's feature defines (the CPU side is F, whose exact mode's bound the widened
+/// bound starts from, also for the twin's fast mode).
 template <features F>
-tally agree(const glt::context& c, const char* preset_define, int random_cases, std::uint64_t seed, const std::string& extra = "")
+tally agree(const glt::context& c, const std::string& defines, int random_cases, std::uint64_t seed)
 {
     if (!measured_once) {
         measured = measure_driver(c);
@@ -535,7 +610,6 @@ tally agree(const glt::context& c, const char* preset_define, int random_cases, 
         if (i >= random_cases) make_edge<F>(s, (i - random_cases) % edge_kinds);
         scenes.push_back(s);
     }
-    const std::string defines = std::string("#define ") + preset_define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n" + extra;
     const std::vector<float> twin = run_twin(c, defines, scenes);
     tally t;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
@@ -588,12 +662,16 @@ tally agree(const glt::context& c, const char* preset_define, int random_cases, 
     return t;
 }
 
+/// define: the preset's define (nullptr: every field of F, phong::glsl::defines(F)); extra: more
+/// defines after it (PHONG_MODE_FAST: the twin's fast mode, GLSL's inversesqrt).
 template <features F>
 void check_preset(glt::api a, const char* name, const char* define, std::uint64_t seed, const std::string& extra = "")
 {
     const auto c = open(a);
     if (!c) return;
-    const tally t = agree<F>(*c, define, 3000, seed, extra);
+    const std::string defines = define ? std::string("#define ") + define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n" + extra
+                                       : phong::glsl::defines(F, max_lights);
+    const tally t = agree<F>(*c, defines, 3000, seed);
     MESSAGE(glt::api_name(a) << ", " << std::string(name) << std::string(extra.empty() ? "" : ", fast mode") << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
                              << " channels (" << t.bounded << " with a bound, " << t.unbounded
                              << " without: a gate or a two-sided flip within rounding); worst relative error against the model: twin "
@@ -641,6 +719,41 @@ void check_presets(glt::api a, std::uint64_t seed)
 
 TEST_CASE("the twin agrees with the model, every preset, GLSL 330 core") { check_presets(glt::api::gl33_core, 1); }
 TEST_CASE("the twin agrees with the model, every preset, GLSL 300 es") { check_presets(glt::api::gles30, 2); }
+/// Feature sets no preset has, to run every branch of the twin: spot cones (OpenGL and smooth),
+/// windowed falloff, emission, per-light ambient with and without attenuation, lights of any kind
+/// and directional, every view model, two-sided by flag and by view, ungated Phong, unit inputs.
+constexpr features spot_windowed_blinn{.scene_ambient = true, .light_ambient = true, .diffuse = true,
+                                       .specular = specular_model::blinn, .specular_gate = true, .lights = phong::light_kind::any,
+                                       .attenuation = phong::attenuation_model::windowed, .spot = phong::spot_model::opengl,
+                                       .attenuate_ambient = true, .two_sided = phong::facing::flag,
+                                       .view = phong::view_model::fixed_direction, .emission = true, .alpha = false};
+constexpr features smooth_spot_phong{.scene_ambient = false, .light_ambient = true, .diffuse = true,
+                                     .specular = specular_model::phong, .specular_gate = false, .lights = phong::light_kind::positional,
+                                     .attenuation = phong::attenuation_model::polynomial, .spot = phong::spot_model::smooth,
+                                     .attenuate_ambient = false, .two_sided = phong::facing::view,
+                                     .view = phong::view_model::eye_point, .emission = false, .alpha = true};
+constexpr features directional_spot_diffuse{.scene_ambient = true, .light_ambient = false, .diffuse = true,
+                                            .specular = specular_model::none, .specular_gate = true,
+                                            .lights = phong::light_kind::directional, .attenuation = phong::attenuation_model::none,
+                                            .spot = phong::spot_model::opengl, .attenuate_ambient = true,
+                                            .two_sided = phong::facing::none, .view = phong::view_model::eye_at_origin};
+constexpr features raytracer_unit_inputs = [] {
+    features f = phong::presets::raytracer_phong;
+    f.unit_inputs = true;
+    return f;
+}();
+
+TEST_CASE("the twin agrees with the model beyond the presets: spots, windowed falloff, every view model, unit inputs (330, 300 es)")
+{
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30}) {
+        const std::uint64_t seed = a == glt::api::gles30 ? 60 : 50;
+        check_preset<spot_windowed_blinn>(a, "OpenGL spot, windowed, Blinn, fixed direction, two-sided flag", nullptr, seed + 1);
+        check_preset<smooth_spot_phong>(a, "smooth spot, polynomial, ungated Phong, eye point, two-sided view", nullptr, seed + 2);
+        check_preset<directional_spot_diffuse>(a, "directional, OpenGL spot, diffuse only", nullptr, seed + 3);
+        check_preset<raytracer_unit_inputs>(a, "raytracer_phong with unit_inputs", nullptr, seed + 4);
+    }
+}
+
 TEST_CASE("the twin's fast mode (inversesqrt) agrees with the model: Phong and Blinn presets, GLSL 330 core and 300 es")
 {
     const std::string fast = "#define PHONG_MODE PHONG_MODE_FAST\n";
