@@ -51,8 +51,8 @@ void main() { LightIntensity = VertexNormal; gl_Position = MVP * vec4(VertexPosi
         std::uniform_real_distribution<float> box(-1.5f, 1.5f);
         std::vector<glm::vec3> positions(static_cast<std::size_t>(vertices)), normals(static_cast<std::size_t>(vertices));
         for (int i = 0; i < vertices; ++i) {
-            positions[std::size_t(i)] = glm::vec3(box(rng), box(rng), box(rng));
-            normals[std::size_t(i)] = glm::normalize(glm::vec3(box(rng), box(rng), box(rng)) + glm::vec3(0, 0, 0.01f));
+            positions[std::size_t(i)] = glm::vec3{box(rng), box(rng), box(rng)}; // braces: drawn in order
+            normals[std::size_t(i)] = glm::normalize(glm::vec3{box(rng), box(rng), box(rng)} + glm::vec3(0, 0, 0.01f));
         }
         glt::vertex_buffers vb(c, positions, normals);
         glt::ads_uniforms u;

@@ -104,8 +104,13 @@ void main() {
         const bool power = i % 2 == 1;
         // x over float's normal range for the roots and reciprocals (log-uniform, 2^-120 .. 2^120),
         // a base in (0, 1] and m in [0, 1000] (and [0, 10] for half of them) for pow.
-        t[0] = float(std::ldexp(1.0 + double(rng() >> 11) * 0x1p-53, int(rng() % 241) - 120));
-        const double x = std::ldexp(1.0 + double(rng() >> 11) * 0x1p-53, -int(rng() % 24)) / 2;
+        // (one draw per statement: the same samples whatever order a compiler evaluates arguments in)
+        const double mantissa0 = 1.0 + double(rng() >> 11) * 0x1p-53;
+        const int exponent0 = int(rng() % 241) - 120;
+        t[0] = float(std::ldexp(mantissa0, exponent0));
+        const double mantissa1 = 1.0 + double(rng() >> 11) * 0x1p-53;
+        const int exponent1 = -int(rng() % 24);
+        const double x = std::ldexp(mantissa1, exponent1) / 2;
         t[1] = float(std::min(x, 1.0));
         t[2] = power ? 1.0f : 0.0f;
         t[3] = float(double(rng() >> 11) * 0x1p-53 * ((i / 2) % 2 ? 1000 : 10));
@@ -276,7 +281,9 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
         // A driver that flushes subnormals: the smallest squared length this pair reads.
         const double min_square = double(std::min({nn, dd, F.view == phong::view_model::fixed_direction ? ld(1) : ee}));
         const bool ftz_out = flushes && min_square < ftz_min_square;
-        const double ftz_extra = flushes ? 8 * 0x1p-126 / std::max(min_square, 0x1p-126) : 0;
+        // The flushed part of a product, relative, times the slope of what the light's f reads
+        // (a spot's cone cosine: f_extra / u bounds that slope times 16).
+        const double ftz_extra = flushes ? 8 * 0x1p-126 / std::max(min_square, 0x1p-126) * (1 + f_extra / u) : 0;
         // conditioning (phong/accuracy.hpp)
         acc::pair_conditioning k;
         k.nl = double(nl);
@@ -310,7 +317,9 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
             for (int ch = 0; ch < 3; ++ch)
                 if (s.material.ka[ch] * L.ambient[ch] > 0) {
                     worst[ch] = std::max(worst[ch], ambient_bound);
-                    worst_widened[ch] = std::max(worst_widened[ch], ambient_bound * operation_factor);
+                    double widened = ambient_bound * operation_factor + ftz_extra;
+                    if (ftz_out && f_extra > 0) widened = std::max(widened, 1.0); // l (the spot's) may be lost to flushing
+                    worst_widened[ch] = std::max(worst_widened[ch], widened);
                 }
         }
         if (!lit) continue; // both sides add no diffuse or specular
@@ -389,8 +398,12 @@ scene random_scene(generator& g)
 {
     scene s;
     s.position = g.box(4) + glm::vec3(0, 0, -6);
-    s.normal = g.direction() * g.uniform(0.2f, 3.0f);
-    s.view = g.direction() * g.uniform(0.5f, 2.0f);
+    // One draw per statement (argument and operand order is the compiler's): the same cases with
+    // every compiler.
+    s.normal = g.direction();
+    s.normal *= g.uniform(0.2f, 3.0f);
+    s.view = g.direction();
+    s.view *= g.uniform(0.5f, 2.0f);
     s.front_facing = g.rng() % 4 != 0;
     s.material.ka = g.colour();
     s.material.kd = g.colour();
@@ -420,10 +433,11 @@ scene random_scene(generator& g)
             // An axis roughly toward the point, so that the point is inside some cones and outside others.
             const glm::vec3 toward_point = directional ? -glm::vec3(L.position) : s.position - glm::vec3(L.position);
             const glm::vec3 axis = glm::normalize(glm::normalize(toward_point) + g.box(0.6f)) ;
-            if constexpr (F.spot == phong::spot_model::opengl)
-                L.spot = phong::spot_cone<float>::opengl(axis, g.rng() % 4 == 0 ? 0.0f : g.uniform(0, 64),
-                                                         g.rng() % 5 == 0 ? 180.0f : g.uniform(10, 90));
-            else {
+            if constexpr (F.spot == phong::spot_model::opengl) {
+                const float exponent = g.rng() % 4 == 0 ? 0.0f : g.uniform(0, 64);
+                const float cutoff = g.rng() % 5 == 0 ? 180.0f : g.uniform(10, 90);
+                L.spot = phong::spot_cone<float>::opengl(axis, exponent, cutoff);
+            } else {
                 const float inner = g.uniform(0, 40);
                 L.spot = phong::spot_cone<float>::smooth(axis, inner, g.rng() % 6 == 0 ? inner : inner + g.uniform(0, 40));
             }
@@ -781,8 +795,11 @@ TEST_CASE("seed 003's phong.vert, verbatim, against the twin's phong_shade_verte
     for (int k = 0; k < sets; ++k) {
         glt::ads_uniforms uni;
         const glm::vec3 axis = g.direction();
-        uni.model_view = glm::translate(glm::mat4(1), glm::vec3(0, 0, -6) + g.box(1)) * glm::rotate(glm::mat4(1), g.uniform(0, 6.28f), axis) *
-                         glm::scale(glm::mat4(1), glm::vec3(g.uniform(0.5f, 2), g.uniform(0.5f, 2), g.uniform(0.5f, 2)));
+        const glm::vec3 offset = g.box(1);
+        const float angle = g.uniform(0, 6.28f);
+        const glm::vec3 scale = g.box(0.75f) + glm::vec3(1.25f); // in [0.5, 2]
+        uni.model_view = glm::translate(glm::mat4(1), glm::vec3(0, 0, -6) + offset) * glm::rotate(glm::mat4(1), angle, axis) *
+                         glm::scale(glm::mat4(1), scale);
         uni.normal_matrix = phong::normal_matrix(uni.model_view);
         uni.projection = glm::perspective(0.8f, 1.3f, 0.1f, 100.0f);
         uni.light.position = glm::vec4(g.box(6) + glm::vec3(0, 0, -3), 1);
