@@ -9,8 +9,8 @@
 // Names: the C++ function phong::x is phong_x here, its struct phong::y is phong_y, with the
 // same fields; the features fields are the PHONG_* defines below. The formulas are those of the
 // C++ exact mode (detail/exact.hpp), step by step, so that a shader's colour agrees with
-// phong::shade<F> on float within the exact mode's bound plus the driver's own error of
-// inversesqrt and pow (tests/glsl/ measure both on Mesa llvmpipe; docs/glsl.md).
+// phong::shade<F> on float within the exact mode's bound plus the driver's own error of sqrt,
+// division, inversesqrt and pow (tests/glsl/ measures them on Mesa llvmpipe; docs/glsl.md).
 //
 // Edge policy, as in C++: no NaN or inf from finite input in range (a light at the point, a zero
 // normal, Blinn's l = -v, the point at the eye, m = 0, c0 = 0 with d = 0): each function says
@@ -290,13 +290,13 @@ float phong_exact_inverse_length(float dd)
 }
 
 /// phong::normalize: v / |v|, scaled first by a power of two (exact) that brings its largest
-/// component into [1, 2), so that huge and tiny vectors survive. Edge: normalize(0) = 0 (GLSL's
+/// component into [1, 2) ([2, 4) beyond 2^127), so that huge and tiny vectors survive. Edge: normalize(0) = 0 (GLSL's
 /// normalize(0) is undefined). Branch-free: SIMD shader compilers (llvmpipe's) run both sides of
 /// a branch whose lanes disagree.
 vec3 phong_normalize(vec3 v)
 {
     float m = max(max(abs(v.x), abs(v.y)), abs(v.z));
-    // 2^(127 - e) for m's biased exponent e (at least 2^-126, for m beyond 2^127): m * scale in [1, 4)
+    // 2^(127 - e) for m's biased exponent e, at least 2^-126 (for m beyond 2^127)
     int e = int(floatBitsToUint(m) >> 23);
     float scale = uintBitsToFloat(uint(max(254 - e, 1)) << 23);
     vec3 s = v * scale;
@@ -474,7 +474,8 @@ struct phong_sums {
 };
 
 /// phong_prepare with the unit normal n given (n_ok: it exists; n = 0 otherwise): the view
-/// vector, two-sided negation and n.v. phong_shade_vertex's normal is unit already.
+/// vector, two-sided negation and n.v (for a shader whose normal is unit already, e.g. from
+/// phong_transform_normal: no second normalization).
 phong_frame phong_prepare_unit(vec3 q, vec3 n, bool n_ok, vec3 given_view, phong_environment env, bool front_facing)
 {
     phong_frame s;
