@@ -55,10 +55,12 @@ std::unique_ptr<glt::context> open(glt::api a)
         return c;
     } catch (const std::exception& e) {
         if (glt::skip_allowed()) {
-            MESSAGE("SKIPPED (PHONG_GLSL_ALLOW_SKIP=1): " << e.what());
+            MESSAGE("SKIPPED (PHONG_GLSL_ALLOW_SKIP=1): " << std::string(e.what()));
             return nullptr;
         }
-        FAIL(e.what(), " (set EGL_PLATFORM=surfaceless; Debian: libegl-mesa0 libgl1-mesa-dri; PHONG_GLSL_ALLOW_SKIP=1 to skip)");
+        const std::string what = std::string(e.what()) +
+                                 " (set EGL_PLATFORM=surfaceless; Debian: libegl-mesa0 libgl1-mesa-dri; PHONG_GLSL_ALLOW_SKIP=1 to skip)";
+        FAIL(what);
         return nullptr;
     }
 }
