@@ -118,6 +118,15 @@ struct features {
     bool unit_inputs = false;
 };
 
+/// A feature set as a type, for templating a CUDA kernel on it: nvcc 13 rejects a class-type
+/// non-type parameter on a __global__ template (`template <phong::features F> __global__`: its
+/// host stub names the argument as an undeclared identifier), and takes
+/// `template <class Set> __global__ void k(...)` calling shade<Set::value>, launched as
+/// k<phong::feature_set<F>><<<...>>>(...). Any other code may use it too (docs/cuda.md).
+template <features F> struct feature_set {
+    static constexpr features value = F;
+};
+
 /// Ready-made feature sets, named for the model they compute. docs/models.md maps each source
 /// document and each of its terms to them.
 namespace presets {
