@@ -14,6 +14,7 @@
 // beside its exact twin.
 #pragma once
 
+#include "fast_sfu.hpp"
 #include "math.hpp"
 
 #include <bit>
@@ -135,10 +136,16 @@ inline constexpr double pow_unit_max_rel = 8e-6;
 /// results below T's smallest normal number are flushed to 0. Outside the domain: never NaN or
 /// inf (NaN x gives 1 for m = 0, else 0; x > 1 is treated as 1 only up to P's accuracy, so clamp x).
 /// Exact twin: phong::pow_unit (math.hpp). Branch-free: scalars and SIMD lanes alike.
+/// Float in CUDA device code: 2^min(m lg2(x), 0) on the GPU's special-function units instead,
+/// relative error pow_unit_sfu_max_rel(m) (phong/fast_sfu.hpp; the same edges).
 template <class V>
 PHONG_HD constexpr V pow_unit(V x, V m)
 {
     using S = scalar_t<V>;
+#if defined(__CUDA_ARCH__) // float in CUDA device code: the SFU's lg2/ex2, bound pow_unit_sfu_max_rel(m) (fast_sfu.hpp)
+    if constexpr (std::is_same_v<V, float>)
+        if (!std::is_constant_evaluated()) return detail::pow_unit_sfu(x, m);
+#endif
     const V y = m * detail::log2_positive(x);
     const V p = detail::exp2_nonpositive(phong::min(y, V(S(0))));
     const auto positive = x > V(S(0));
@@ -253,7 +260,8 @@ template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7
 /// Fast 1/sqrt(x) for a positive normal x: a hardware estimate refined by one Newton step,
 ///   r1 = r0 (3/2 - x/2 r0^2),
 /// relative error rsqrt_max_rel<T>. Float scalars on x86 (SSE): rsqrtss. Double scalars and other
-/// targets: the exact 1/sqrt(x) (no faster estimate is worth it there). SIMD batches: see
+/// targets: the exact 1/sqrt(x) (no faster estimate is worth it there). Float in CUDA device code:
+/// rsqrtf (rsqrt.approx.f32, rsqrt_sfu_max_rel; a subnormal x gives inf under -ftz). SIMD batches: see
 /// detail/fast_lanes.hpp. Edge: x = 0 gives inf, x = inf gives 0 (the estimate, unrefined);
 /// x < 0 or NaN: NaN; a subnormal x gives inf with rsqrtss (it reads the input as 0), the exact
 /// 1/sqrt(x) elsewhere (shade's fast mode never passes one: it drops such vectors first).
@@ -264,6 +272,10 @@ PHONG_HD constexpr V rsqrt(V x)
     if constexpr (requires { lanes<V>::rsqrt(x); }) {
         return lanes<V>::rsqrt(x); // SIMD batches
     } else {
+#if defined(__CUDA_ARCH__) // float in CUDA device code: rsqrtf, bound rsqrt_sfu_max_rel (fast_sfu.hpp)
+        if constexpr (std::is_same_v<V, float>)
+            if (!std::is_constant_evaluated()) return rsqrtf(x);
+#endif
 #if PHONG_FAST_X86_RSQRT
         if constexpr (std::is_same_v<V, float>) {
             if (!std::is_constant_evaluated()) {

@@ -74,10 +74,12 @@ enum class evaluation : unsigned char { exact, stable, fast };
 /// `wider`: float is evaluated in double with the exact mode's formulas and rounded once. Every
 /// float input is exact in double, no square of a float overflows or underflows there, and double
 /// carries 29 more bits than float, so the colour is float's correct rounding of the model but for
-/// near-ties (about 0.5 ulp). The default: on CPUs it is the fastest and most accurate choice.
+/// near-ties (about 0.5 ulp). The default: on CPUs it is the fastest and most accurate choice, and
+/// on GPUs whose double runs at half float's rate (data-centre GPUs; docs/cuda.md has the figures).
 /// T without a wider hardware type (double, double SIMD batches) takes `twofold`. `twofold`: T
 /// arithmetic with power-of-two rescaled vectors and twofold unit vectors, n.l and chords
-/// (detail/twofold.hpp); for GPU code, where double runs at a fraction of float's rate. Float SIMD
+/// (detail/twofold.hpp); for GPUs whose double runs at a small fraction of float's rate (consumer
+/// GPUs, 1/32 or 1/64: there it should be the faster one, not measured; docs/cuda.md). Float SIMD
 /// batches on x86 (shade_batch) read neither: their geometry runs in double lanes and the power
 /// in float (detail/stable_lanes.hpp), held to the twofold bounds; steps with a shininess above
 /// 2^20 in any lane take the twofold route.
@@ -116,6 +118,15 @@ struct features {
     /// Pre: unit length within 1e-3, finite. A zero or NaN vector breaks the precondition: the
     /// NaN policy (NaN in, NaN out) is then not kept.
     bool unit_inputs = false;
+};
+
+/// A feature set as a type, for templating a CUDA kernel on it: nvcc 13 rejects a class-type
+/// non-type parameter on a __global__ template (`template <phong::features F> __global__`: its
+/// host stub names the argument as an undeclared identifier), and takes
+/// `template <class Set> __global__ void k(...)` calling shade<Set::value>, launched as
+/// k<phong::feature_set<F>><<<...>>>(...). Any other code may use it too (docs/cuda.md).
+template <features F> struct feature_set {
+    static constexpr features value = F;
 };
 
 /// Ready-made feature sets, named for the model they compute. docs/models.md maps each source

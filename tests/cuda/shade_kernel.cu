@@ -1,5 +1,5 @@
 // Compile-only check that phong's headers work in CUDA device code (no GPU needed):
-//   nvcc -std=c++20 --expt-relaxed-constexpr -isystem /usr/include -I include -c tests/cuda/shade_kernel.cu
+//   nvcc -std=c++20 --expt-relaxed-constexpr -O3 -arch=sm_90 --use_fast_math -I include -c tests/cuda/shade_kernel.cu
 // (.ci/steps/50-cuda.sh). Every function reached from the kernels must be __host__ __device__
 // (PHONG_HD); a missing one is a compile error here.
 #include <phong/phong.hpp>
