@@ -230,11 +230,11 @@ struct math_traits<xsimd::batch<T, A>> {
         const auto big_a = xsimd::abs(a) > limit, big_b = xsimd::abs(b) > limit;
         const V as = xsimd::select(big_a, a * down, a), bs = xsimd::select(big_b, b * down, b);
         const V scale = xsimd::select(big_a, up, one) * xsimd::select(big_b, up, one);
-        const V ca = splitter * as, ah = ca - (ca - as), al = as - ah;
-        const V cb = splitter * bs, bh = cb - (cb - bs), bl = bs - bh;
+        const V ca = detail::ieee::opaque(splitter * as), ah = detail::ieee::opaque(ca - detail::ieee::opaque(ca - as)), al = as - ah;
+        const V cb = detail::ieee::opaque(splitter * bs), bh = detail::ieee::opaque(cb - detail::ieee::opaque(cb - bs)), bl = bs - bh;
         const V ps = as * bs;
-        const V es = ((ah * bh - ps) + ah * bl + al * bh) + al * bl;
-        return (a * b + c) + es * scale;
+        const V es = detail::ieee::ordered_sum(ah * bh - ps, ah * bl, al * bh, al * bl);
+        return detail::ieee::opaque(a * b + c) + es * scale;
     }
     static V select(const mask& m, const V& a, const V& b) { return xsimd::select(m, a, b); }
     static bool any(const mask& m) { return xsimd::any(m); }
@@ -274,7 +274,7 @@ private:
     static V newton_rsqrt(const V& x, const V& estimate)
     {
         const V refined = newton_step(x, estimate);
-        const auto finite_nonzero = (estimate > V(T(0))) && (estimate < V(std::numeric_limits<T>::infinity()));
+        const auto finite_nonzero = phong::detail::ieee::positive_finite(estimate);
         return xsimd::select(finite_nonzero, refined, estimate);
     }
 };

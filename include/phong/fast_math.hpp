@@ -108,8 +108,8 @@ PHONG_HD constexpr V exp2_nonpositive(V y)
     using L = lanes<V>;
     using U = typename L::bits_t;
     const V yc = phong::max(y, V(S(-fmt::bias)));  // n >= -bias: n = -bias gives 2^n's bits 0, i.e. 0
-    const V shifted = yc + V(fmt::shift);           // low bits: n = round(y), two's complement
-    const V t = yc - (shifted - V(fmt::shift));     // exact
+    const auto [shifted, rounded] = phong::detail::ieee::round_by_shift(yc, V(fmt::shift)); // low bits: n = round(y)
+    const V t = yc - rounded;                       // exact
     const U n_biased = L::bits(shifted) - L::bits(V(fmt::shift)) + U(U(fmt::bias));
     const V scale = L::from_bits(n_biased << fmt::mantissa_bits); // 2^n, or 0 for n = -bias
     const auto c = [](int i) { return V(S(exp2_e[i])); };
@@ -275,7 +275,7 @@ PHONG_HD constexpr V rsqrt(V x)
                 __asm__("rsqrtss %0, %0" : "+x"(r0));
 #  endif
                 const float r1 = r0 * (1.5f - (0.5f * x) * (r0 * r0));
-                return (r0 > 0.0f && r0 < std::numeric_limits<float>::infinity()) ? r1 : r0;
+                return phong::detail::ieee::positive_finite(r0) ? r1 : r0;
             }
         }
 #endif

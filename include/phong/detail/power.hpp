@@ -22,6 +22,7 @@
 
 #include "config.hpp"
 #include "constexpr_math.hpp"
+#include "ieee.hpp"
 
 #include <array>
 #include <bit>
@@ -115,9 +116,9 @@ template <bool Short = false>
 PHONG_HD constexpr double exp2_nonpositive(double y)
 {
     constexpr double shift = 0x1.8p52 / (1 << exp_table_bits); // ulp 1/64 around it: y + shift rounds 64 y
-    const double shifted = y + shift;
+    const auto [shifted, rounded] = ieee::round_by_shift(y, shift);
     const u64 n = std::bit_cast<u64>(shifted); // low bits: round(64 y), two's complement
-    const double t = y - (shifted - shift);    // |t| <= 1/128
+    const double t = y - rounded;              // |t| <= 1/128
     const double scale = std::bit_cast<double>(exp2_table[n % (1u << exp_table_bits)] + (n << (52 - exp_table_bits)));
     if constexpr (Short) {
         return scale + scale * (t * (b1 + t * (b2 + t * b3)));
