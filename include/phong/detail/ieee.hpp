@@ -97,6 +97,20 @@ template <class V> PHONG_HD constexpr V ordered_sum(const V& a, const V& b, cons
     return opaque(opaque(opaque(a) + b) + c) + d;
 }
 
+/// False where the compiler may reassociate floating-point sums (PHONG_FP_BARRIER: -ffast-math,
+/// -fassociative-math), unless PHONG_ALLOW_REASSOCIATED_TWOFOLD is defined. The stable mode's
+/// twofold route (double, or features::precision = twofold) accumulates double-word sums over
+/// many steps; opaque() keeps each TwoSum exact, but not the accumulations around them (measured
+/// under g++ -O3 -ffast-math: 2.4e-13 relative at m = 1e5 against the published 3e-15), so that
+/// route refuses such builds (a static_assert naming the flag, tests/nan_policy/checks.cmake).
+template <class T>
+inline constexpr bool twofold_allowed =
+#if PHONG_FP_BARRIER && !defined(PHONG_ALLOW_REASSOCIATED_TWOFOLD)
+    false;
+#else
+    true;
+#endif
+
 /// The unsigned integer of T's width.
 template <class T> using bits_of = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
 /// The bits of +inf in T (all exponent bits set, mantissa 0).
