@@ -3,11 +3,13 @@
 #pragma once
 
 #include "detail/config.hpp"
+#include "detail/ieee.hpp"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <limits>
+#include <type_traits>
 
 namespace phong {
 
@@ -23,9 +25,11 @@ namespace detail {
 
 // Comparisons only: inf - inf (the usual x - x == 0 test) is not a constant expression, so that
 // test made validate() unusable in constant evaluation for infinite parameters. NaN compares false.
+// float and double by bits (ieee::is_finite), which -ffinite-math-only cannot fold to true.
 template <class T> PHONG_HD constexpr bool finite(T x)
 {
-    return x >= std::numeric_limits<T>::lowest() && x <= std::numeric_limits<T>::max();
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) return ieee::is_finite(x);
+    else return x >= std::numeric_limits<T>::lowest() && x <= std::numeric_limits<T>::max();
 }
 template <class T> PHONG_HD constexpr bool finite_non_negative(T x) { return finite(x) && x >= T(0); }
 template <glm::length_t L, class T, glm::qualifier Q>
