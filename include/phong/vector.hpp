@@ -13,14 +13,40 @@
 #include <glm/vec4.hpp>
 
 #include <limits>
+#include <type_traits>
 
 namespace phong {
 
+namespace detail {
+/// In constant evaluation, for float and double: +-inf where a product or a partial sum of dot(a, b)
+/// (in index order, as dot sums) leaves T's range, else 0. g++ rejects a finite operation whose
+/// result overflows as not a constant expression; dot returns this inf instead, the value the same
+/// operations give at run time. Evaluated in long double, whose range holds every such product.
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
+{
+    using W = long double;
+    constexpr W max = std::numeric_limits<T>::max();
+    W sum = 0;
+    for (glm::length_t k = 0; k < L; ++k) {
+        const W p = W(a[k]) * W(b[k]);
+        if (p > max || p < -max) return p > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+        sum = k == 0 ? W(T(p)) : W(T(sum + W(T(p)))); // rounded to T at each step, as at run time
+        if (sum > max || sum < -max) return sum > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+    }
+    return T(0);
+}
+} // namespace detail
+
 /// Dot product: dot(a, b) = sum_k a_k b_k, summed in index order (GLSL `dot`).
-/// Edge: overflows to inf when a product exceeds the range of T; NaN propagates.
+/// Edge: overflows to inf when a product exceeds the range of T (in constant evaluation too);
+/// NaN propagates.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
+        if (std::is_constant_evaluated())
+            if (const T overflow = detail::constant_dot_overflow(a, b); overflow != T(0)) return overflow;
     // Named components, not v[k] in a loop from k = 1: GLM's operator[] is a switch, and g++ 12
     // drops the probability of the case it prunes (k = 0), so every loop around a dot product was
     // estimated cold (feature_cost: constants reloaded in the light loop, the output spilled).
