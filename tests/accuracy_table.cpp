@@ -22,6 +22,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#if defined(__SSE__)
+#  include <xmmintrin.h>
+#endif
 
 namespace {
 
@@ -94,6 +97,17 @@ struct worst {
     }
 };
 
+/// Whether subnormal numbers are flushed (x86 MXCSR FTZ or DAZ): set at start-up by a program
+/// linked with -ffast-math (crtfastmath.o) or -mdaz-ftz.
+bool flushes_subnormals()
+{
+#if defined(__SSE__)
+    return (_mm_getcsr() & 0x8040u) != 0;
+#else
+    return false;
+#endif
+}
+
 template <evaluation M, class T>
 bool print_bound(input_class c, const worst& w)
 {
@@ -111,6 +125,13 @@ bool print_bound(input_class c, const worst& w)
                 M == evaluation::exact ? "exact" : M == evaluation::fast ? "fast" : "stable", sizeof(T) == 4 ? "float" : "double", phong::accuracy::name(c),
                 fmt(w.p99).c_str(), fmt(w.max_ulp).c_str(), fmt(w.max_rel).c_str(), w.non_finite, w.channels,
                 fmt(b.p99_ulp).c_str(), fmt(b.max_ulp).c_str(), fmt(b.max_rel).c_str(), ok ? "" : "  <-- ABOVE BOUND");
+    // Flushed subnormals (FTZ/DAZ, set by the -ffast-math link): a light within 1e-19 of the point
+    // in float (1e-154 in double) leaves bounds derived for IEEE gradual underflow
+    // (docs/compilers.md): the one class exempted there, as long as it stays finite.
+    if (!ok && c == input_class::attenuation_c0_zero && flushes_subnormals() && w.non_finite == 0) {
+        std::printf("        (attenuation_c0_zero with subnormals flushed, FTZ/DAZ: the documented exception, not a failure)\n");
+        return true;
+    }
     return ok;
 }
 
