@@ -177,11 +177,11 @@ template <class T> stiff_scene<T> near_peak(splitmix& g, double shininess)
         stiff_scene<T> s;
         const glm::dvec3 Q = random_point(g);
         const glm::dvec3 v = dnormalize(-Q);
-        const glm::dvec3 n = g.unit_around(v, 0.5);
-        const double theta = g.uniform(0, 3) / std::sqrt(shininess);
+        const glm::dvec3 n = g.unit_around(v, phong::accuracy::near_peak.min_nv);
+        const double theta = g.uniform(0, phong::accuracy::near_peak.max_angle_sqrt_m) / std::sqrt(shininess);
         const glm::dvec3 r = v * std::cos(theta) + g.perpendicular(v) * std::sin(theta);
         const glm::dvec3 l = n * (2 * ddot(n, r)) - r; // reflect(-r, n)
-        if (!(ddot(n, l) > 0.05)) continue;
+        if (!(ddot(n, l) > phong::accuracy::near_peak.min_nl)) continue;
         s.position = to<T>(Q);
         s.normal = to<T>(n * g.uniform(0.5, 2));
         s.material.ka = s.material.kd = glm::vec<3, T>(T(0));
