@@ -554,3 +554,10 @@ TEST_CASE("constexpr: coordinates around 1e30 (float) and 1e300 (double): consta
     CHECK(huge_float == huge_scene_color(scale_f));
     CHECK(huge_double == huge_scene_color(scale_d));
 }
+
+// dot's constant-evaluation overflow test at float's threshold: max + half an ulp rounds to inf,
+// just below it to max (round to nearest), as at run time.
+static_assert(phong::dot(glm::vec2(3.4028235e38f, 1e30f), glm::vec2(1.0f, 1.0f)) == 3.4028235e38f); // 1e30 < half an ulp (1e31)
+static_assert(phong::dot(glm::vec2(3.4028235e38f, 2.1e31f), glm::vec2(1.0f, 1.0f)) == std::numeric_limits<float>::infinity());
+static_assert(phong::dot(glm::vec2(2e19f, 2e19f), glm::vec2(2e19f, 2e19f)) == std::numeric_limits<float>::infinity()); // 4e38 + 4e38
+static_assert(is_nan(phong::dot(glm::vec2(2e19f, -2e19f), glm::vec2(2e19f, 2e19f))));                      // inf - inf, as at run time

@@ -18,23 +18,36 @@
 namespace phong {
 
 namespace detail {
-/// In constant evaluation, for float and double: +-inf where a product or a partial sum of dot(a, b)
-/// (in index order, as dot sums) leaves T's range, else 0. g++ rejects a finite operation whose
-/// result overflows as not a constant expression; dot returns this inf instead, the value the same
-/// operations give at run time. Evaluated in long double, whose range holds every such product.
+/// In constant evaluation, for float and double finite inputs: the value dot(a, b) takes at run
+/// time when a product or a partial sum (in index order, as dot sums) rounds to +-inf in T (+-inf,
+/// or NaN for inf - inf), else 0. g++ rejects a finite operation whose result overflows as not a
+/// constant expression, and clang inf - inf; dot returns this value instead. Evaluated in long
+/// double, whose range and precision hold every such product and the overflow threshold (the
+/// largest T plus half its ulp: from there on, round to nearest gives inf).
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
     using W = long double;
-    constexpr W max = std::numeric_limits<T>::max();
-    W sum = 0;
+    constexpr W max = std::numeric_limits<T>::max(), eps = std::numeric_limits<T>::epsilon();
+    constexpr W threshold = max + max / (W(2) - eps) * eps / 2; // max = (2 - eps) 2^(e-1), ulp = eps 2^(e-1)
+    const auto rounded = [](W x) { // x rounded to T, an overflow as +-1 (the sign of the inf)
+        return x >= threshold ? W(1) : x <= -threshold ? W(-1) : W(0);
+    };
+    W sum = 0, sum_inf = 0; // the partial sum, finite (in T's values), or its inf's sign
     for (glm::length_t k = 0; k < L; ++k) {
+        if (!(a[k] == a[k]) || !(b[k] == b[k])) return T(0); // NaN: propagates on the normal path
         const W p = W(a[k]) * W(b[k]);
-        if (p > max || p < -max) return p > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
-        sum = k == 0 ? W(T(p)) : W(T(sum + W(T(p)))); // rounded to T at each step, as at run time
-        if (sum > max || sum < -max) return sum > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+        const W p_inf = rounded(p);
+        if (sum_inf != 0 && p_inf != 0 && sum_inf != p_inf) return std::numeric_limits<T>::quiet_NaN(); // inf - inf
+        if (sum_inf != 0 || p_inf != 0) {
+            sum_inf = sum_inf != 0 ? sum_inf : p_inf;
+            continue;
+        }
+        const W s = k == 0 ? W(T(p)) : sum + W(T(p)); // rounded to T at each step, as at run time
+        sum_inf = rounded(s);
+        if (sum_inf == 0) sum = W(T(s));
     }
-    return T(0);
+    return sum_inf > 0 ? std::numeric_limits<T>::infinity() : sum_inf < 0 ? -std::numeric_limits<T>::infinity() : T(0);
 }
 } // namespace detail
 
