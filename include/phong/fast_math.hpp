@@ -89,7 +89,7 @@ PHONG_HD constexpr V log2_positive(V x)
     // k as a V without an integer conversion: the bits of shift + (k + bias), minus shift + bias
     // (opaque: g++ -ffast-math otherwise rewrites it on SSE2 lanes into a wrong k).
     const V k = phong::detail::ieee::opaque(L::from_bits(biased + L::bits(V(fmt::shift)))) - V(fmt::shift + S(fmt::bias));
-    const V r = f - V(S(1));
+    const V r = phong::detail::ieee::opaque(f - V(S(1))); // the reduced argument, not re-expanded as f P - P
     // Estrin's scheme: three dependent multiply-adds instead of Horner's seven (the power's latency
     // is what a light loop waits for; the same number of operations within two multiplications).
     const auto c = [](int i) { return V(S(log2_p[i])); };
@@ -110,7 +110,7 @@ PHONG_HD constexpr V exp2_nonpositive(V y)
     using U = typename L::bits_t;
     const V yc = phong::max(y, V(S(-fmt::bias)));  // n >= -bias: n = -bias gives 2^n's bits 0, i.e. 0
     const auto [shifted, rounded] = phong::detail::ieee::round_by_shift(yc, V(fmt::shift)); // low bits: n = round(y)
-    const V t = yc - rounded;                       // exact
+    const V t = phong::detail::ieee::opaque(yc - rounded); // exact; not re-expanded as yc E - rounded E
     const U n_biased = L::bits(shifted) - L::bits(V(fmt::shift)) + U(U(fmt::bias));
     const V scale = L::from_bits(n_biased << fmt::mantissa_bits); // 2^n, or 0 for n = -bias
     const auto c = [](int i) { return V(S(exp2_e[i])); };
