@@ -9,9 +9,10 @@
 //    return 0 instead of the rounding error. opaque(x) returns x through an empty inline asm the
 //    optimizer cannot see through, so the value it returns has no known relation to the operands
 //    it came from and nothing is folded; it costs no instruction (the value stays in its register).
-//    It is active where the compiler says it may reassociate (__FAST_MATH__, __ASSOCIATIVE_MATH__;
-//    clang's lone -fassociative-math defines neither: define PHONG_FP_BARRIER=1 there), or always
-//    with PHONG_FP_BARRIER=1; identity in IEEE builds and in constant evaluation.
+//    It is active where the compiler says it may reassociate (g++: __ASSOCIATIVE_MATH__, which
+//    follows -fassociative-math exactly; clang: __FAST_MATH__, dropped by -fno-associative-math, while
+//    its lone -fassociative-math defines nothing: define PHONG_FP_BARRIER=1 there), or always with
+//    PHONG_FP_BARRIER=1; identity in IEEE builds and in constant evaluation.
 //  * -ffinite-math-only: x != x, x < inf and std::isnan are folded to constants. The tests here
 //    read the bits instead (std::bit_cast), which no floating-point flag can change.
 #pragma once
@@ -23,7 +24,7 @@
 #include <type_traits>
 
 #if !defined(PHONG_FP_BARRIER)
-#  if defined(__FAST_MATH__) || defined(__ASSOCIATIVE_MATH__)
+#  if (defined(__GNUC__) && !defined(__clang__)) ? defined(__ASSOCIATIVE_MATH__) : defined(__FAST_MATH__)
 #    define PHONG_FP_BARRIER 1
 #  else
 #    define PHONG_FP_BARRIER 0
