@@ -22,6 +22,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#if defined(__SSE__)
+#  include <xmmintrin.h>
+#endif
 
 namespace {
 
@@ -37,6 +40,14 @@ struct row {
 bool twofold_columns = false; // --twofold
 bool fast_columns = false;    // --fast
 
+// Built with -ffast-math (-fassociative-math): the stable mode's twofold route refuses to compile
+// (phong/detail/ieee.hpp, docs/compilers.md), so the second columns of double, and of float with
+// --twofold, are the fast mode's; float's stable columns (precision = wider) stay.
+template <class T> bool second_is_fast()
+{
+    return fast_columns || (!phong::detail::ieee::twofold_allowed<T> && (sizeof(T) == 8 || twofold_columns));
+}
+
 template <class T, specular_model S>
 row measure_row(const std::vector<phong_test::stiff_scene<T>>& scenes)
 {
@@ -45,10 +56,16 @@ row measure_row(const std::vector<phong_test::stiff_scene<T>>& scenes)
     constexpr phong::features twofold = phong::accuracy::measured_features(evaluation::stable, S, phong::stable_precision::twofold);
     constexpr phong::features fast = phong::accuracy::measured_features(evaluation::fast, S);
     const std::vector<phong_test::wcolor> refs = phong_test::references(exact, scenes);
-    return {phong_test::measure<exact>(scenes, refs),
-            fast_columns      ? phong_test::measure<fast>(scenes, refs)
-            : twofold_columns ? phong_test::measure<twofold>(scenes, refs)
-                              : phong_test::measure<stable>(scenes, refs)};
+    if constexpr (!phong::detail::ieee::twofold_allowed<T>) {
+        if (second_is_fast<T>()) return {phong_test::measure<exact>(scenes, refs), phong_test::measure<fast>(scenes, refs)};
+        if constexpr (sizeof(T) == 4) return {phong_test::measure<exact>(scenes, refs), phong_test::measure<stable>(scenes, refs)};
+        return {};
+    } else {
+        return {phong_test::measure<exact>(scenes, refs),
+                fast_columns      ? phong_test::measure<fast>(scenes, refs)
+                : twofold_columns ? phong_test::measure<twofold>(scenes, refs)
+                                  : phong_test::measure<stable>(scenes, refs)};
+    }
 }
 
 std::string fmt(double x)
@@ -80,18 +97,41 @@ struct worst {
     }
 };
 
+/// Whether subnormal numbers are flushed (x86 MXCSR FTZ or DAZ): set at start-up by a program
+/// linked with -ffast-math (crtfastmath.o) or -mdaz-ftz.
+bool flushes_subnormals()
+{
+#if defined(__SSE__)
+    return (_mm_getcsr() & 0x8040u) != 0;
+#else
+    return false;
+#endif
+}
+
 template <evaluation M, class T>
 bool print_bound(input_class c, const worst& w)
 {
-    const phong::accuracy::bound b = twofold_columns ? phong::accuracy::of<M, T, phong::stable_precision::twofold>(c)
+    const phong::accuracy::bound b = twofold_columns && M == evaluation::stable ? phong::accuracy::of<M, T, phong::stable_precision::twofold>(c)
                                                      : phong::accuracy::of<M, T>(c);
     const bool nan_policy = c == input_class::non_finite;
+#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+    // -ffinite-math-only: NaN and inf inputs give unspecified values (docs/compilers.md), the
+    // documented exception to the NaN policy; only finite inputs are checked.
+    if (nan_policy) return true;
+#endif
     const bool ok = nan_policy ? w.non_finite == w.channels
                                : (w.non_finite == 0 && w.p99 <= b.p99_ulp && w.max_ulp <= b.max_ulp && w.max_rel <= b.max_rel);
     std::printf("%-7s %-6s %-20s measured p99 %-8s max %-8s rel %-8s nonfinite %zu/%zu | bound %s %s %s %s\n",
                 M == evaluation::exact ? "exact" : M == evaluation::fast ? "fast" : "stable", sizeof(T) == 4 ? "float" : "double", phong::accuracy::name(c),
                 fmt(w.p99).c_str(), fmt(w.max_ulp).c_str(), fmt(w.max_rel).c_str(), w.non_finite, w.channels,
                 fmt(b.p99_ulp).c_str(), fmt(b.max_ulp).c_str(), fmt(b.max_rel).c_str(), ok ? "" : "  <-- ABOVE BOUND");
+    // Flushed subnormals (FTZ/DAZ, set by the -ffast-math link): a light within 1e-19 of the point
+    // in float (1e-154 in double) leaves bounds derived for IEEE gradual underflow
+    // (docs/compilers.md): the one class exempted there, as long as it stays finite.
+    if (!ok && c == input_class::attenuation_c0_zero && flushes_subnormals() && w.non_finite == 0) {
+        std::printf("        (attenuation_c0_zero with subnormals flushed, FTZ/DAZ: the documented exception, not a failure)\n");
+        return true;
+    }
     return ok;
 }
 
@@ -127,7 +167,7 @@ bool run_type(input_class c, std::size_t n, std::uint64_t seed, bool bounds)
     }
     if (!bounds) return true;
     const bool ok_e = print_bound<evaluation::exact, T>(c, we);
-    const bool ok_s = fast_columns ? print_bound<evaluation::fast, T>(c, ws) : print_bound<evaluation::stable, T>(c, ws);
+    const bool ok_s = second_is_fast<T>() ? print_bound<evaluation::fast, T>(c, ws) : print_bound<evaluation::stable, T>(c, ws);
     return ok_e && ok_s;
 }
 

@@ -5,11 +5,13 @@
 #include "support/wide.hpp"
 
 #include <phong/attenuation.hpp>
+#include <phong/light.hpp>
 
 #include <doctest/doctest.h>
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 using namespace phong_test;
 
@@ -141,3 +143,52 @@ TEST_CASE_TEMPLATE("attenuation: spot_cone factories", T, float, double)
     CHECK(sm.cos_inner == T(1));
     CHECK(error_ulp(sm.cos_outer, wide(0.5)) <= 1.0);
 }
+
+namespace {
+/// validate(light) of a light carrying the given cone: the message, or "ok".
+template <class T> constexpr const char* cone_verdict(const phong::spot_cone<T>& cone)
+{
+    phong::light<T> L = phong::light<T>::with_strength({0, 0, 1, 1}, {1, 1, 1});
+    L.spot = cone;
+    return phong::validate(L).message();
+}
+template <class T> constexpr bool cone_rejected(const phong::spot_cone<T>& cone, const char* field)
+{
+    const char* m = cone_verdict(cone);
+    for (std::size_t i = 0; field[i] != '\0'; ++i)
+        if (m[i] != field[i]) return false;
+    return true;
+}
+} // namespace
+
+// validate keeps attenuation.hpp's word: an OpenGL cutoff outside [0, 90] other than 180, or a
+// smooth angle outside [0, 180], is rejected, although its cosine is that of an angle in range
+// (cos(-10) = cos(10), cos(270) = cos(90), cos(200) = cos(160)).
+TEST_CASE_TEMPLATE("attenuation: validate rejects spot cutoffs and smooth cones out of range", T, float, double)
+{
+    const vec3<T> axis(0, 0, -1);
+    using cone = phong::spot_cone<T>;
+    for (const T bad : {T(-10), T(-1e-3), T(90.5), T(179), T(181), T(270), T(-180), std::numeric_limits<T>::quiet_NaN()}) {
+        CAPTURE(bad);
+        CHECK(cone_rejected(cone::opengl(axis, T(2), bad), "light.spot.cos_cutoff"));
+    }
+    for (const T good : {T(0), T(10), T(90), T(180)}) {
+        CAPTURE(good);
+        CHECK(std::string(cone_verdict(cone::opengl(axis, T(2), good))) == "ok");
+    }
+    CHECK(cone_rejected(cone::smooth(axis, T(20), T(200)), "light.spot.cos_outer"));
+    CHECK(cone_rejected(cone::smooth(axis, T(-30), T(40)), "light.spot.cos_inner"));
+    CHECK(cone_rejected(cone::smooth(axis, T(-30), T(-20)), "light.spot.cos_inner"));
+    CHECK(cone_rejected(cone::smooth(axis, T(40), T(30)), "light.spot.cos_outer")); // inner beyond outer
+    CHECK(cone_rejected(cone::smooth(axis, T(10), T(190)), "light.spot.cos_outer"));
+    CHECK(std::string(cone_verdict(cone::smooth(axis, T(0), T(180)))) == "ok");
+    CHECK(std::string(cone_verdict(cone::smooth(axis, T(30), T(30)))) == "ok"); // a hard edge
+}
+
+// The same in constant evaluation.
+static_assert(cone_rejected(phong::spot_cone<float>::opengl({0, 0, -1}, 2.0f, -10.0f), "light.spot.cos_cutoff"));
+static_assert(cone_rejected(phong::spot_cone<double>::opengl({0, 0, -1}, 2.0, 270.0), "light.spot.cos_cutoff"));
+static_assert(cone_rejected(phong::spot_cone<float>::smooth({0, 0, -1}, 20.0f, 200.0f), "light.spot.cos_outer"));
+static_assert(cone_rejected(phong::spot_cone<double>::smooth({0, 0, -1}, -5.0, 40.0), "light.spot.cos_inner"));
+static_assert(cone_rejected(phong::spot_cone<double>::smooth({0, 0, -1}, 50.0, 40.0), "light.spot.cos_outer"));
+static_assert(cone_verdict(phong::spot_cone<float>::opengl({0, 0, -1}, 2.0f, 45.0f))[0] == 'o');

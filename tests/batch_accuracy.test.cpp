@@ -67,16 +67,20 @@ template <class T, specular_model S, evaluation M = evaluation::stable, bool int
         if constexpr (integer_shininess) round_small_shininess(scenes);
         std::size_t disagree = 0;
         const error_stats e = measure_batch<F>(scenes, disagree);
-        const phong::accuracy::bound bound = M == evaluation::fast ? phong::accuracy::of<evaluation::fast, T>(cls)
-                                                                    : phong::accuracy::of<M, T, phong::stable_precision::twofold>(cls);
+        const phong::accuracy::bound bound = M == evaluation::fast    ? phong::accuracy::of<evaluation::fast, T>(cls)
+                                             : M == evaluation::exact ? phong::accuracy::of<evaluation::exact, T>(cls)
+                                                                      : phong::accuracy::of<M, T, phong::stable_precision::twofold>(cls);
         CAPTURE(std::string(phong::accuracy::name(cls)));
         CAPTURE(e.p99_ulp);
         CAPTURE(e.max_ulp);
         CAPTURE(e.max_rel);
-        MESSAGE((std::string(M == evaluation::fast ? "fast " : "stable ") + (integer_shininess ? "(integer m) " : "") + phong::accuracy::name(cls) + (sizeof(T) == 4 ? " float " : " double ") + (S == specular_model::phong ? "phong" : "blinn"))
+        MESSAGE((std::string(M == evaluation::fast ? "fast " : M == evaluation::exact ? "exact " : "stable ") + (integer_shininess ? "(integer m) " : "") + phong::accuracy::name(cls) + (sizeof(T) == 4 ? " float " : " double ") + (S == specular_model::phong ? "phong" : "blinn"))
                 << ": p99 " << e.p99_ulp << " max " << e.max_ulp << " ulp, max rel " << e.max_rel << ", non-finite " << e.non_finite);
         CHECK(disagree == 0);
         if (cls == input_class::non_finite) {
+#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+            continue; // -ffinite-math-only: NaN and inf inputs give unspecified values (docs/compilers.md)
+#endif
             CHECK(e.non_finite == e.channels); // NaN in every channel
             continue;
         }
@@ -91,8 +95,18 @@ template <class T, specular_model S, evaluation M = evaluation::stable, bool int
 
 TEST_CASE_TEMPLATE("shade_batch stable: every stiff and extreme class within the published stable bound", T, float, double)
 {
-    check_batch_classes<T, specular_model::phong>();
-    check_batch_classes<T, specular_model::blinn>();
+    if constexpr (phong::detail::ieee::twofold_allowed<T>) { // -ffast-math: refused at compile time (docs/compilers.md)
+        check_batch_classes<T, specular_model::phong>();
+        check_batch_classes<T, specular_model::blinn>();
+    }
+}
+
+// The exact mode's lanes (xsimd's exp and log for double, detail/lanes_power.hpp for float) within
+// the exact bounds; with tests/support's scenes also in the -ffast-math build of .ci/steps/36-fast-math.sh.
+TEST_CASE_TEMPLATE("shade_batch exact: every stiff and extreme class within the published exact bound", T, float, double)
+{
+    check_batch_classes<T, specular_model::phong, evaluation::exact>();
+    check_batch_classes<T, specular_model::blinn, evaluation::exact>();
 }
 
 TEST_CASE_TEMPLATE("shade_batch fast: every stiff and extreme class within the published fast bound", T, float, double)
@@ -107,6 +121,7 @@ TEST_CASE_TEMPLATE("shade_batch fast, integer shininess (binary powering): every
     check_batch_classes<T, specular_model::blinn, evaluation::fast, true>();
 }
 
+#if !PHONG_FP_BARRIER || defined(PHONG_ALLOW_REASSOCIATED_TWOFOLD) // the batch stable mode refuses -ffast-math builds
 TEST_CASE("shade_batch stable, float: both sides of the double-lane route's shininess limit stay within the m = 1e5 bound")
 {
     // Float lanes run the geometry in double up to m = 2^20 (detail/stable_lanes.hpp) and the
@@ -163,3 +178,4 @@ TEST_CASE_TEMPLATE("shade_batch stable: a grazing light's specular cosine near 0
         CHECK(e.max_rel <= bound.max_rel);
     }
 }
+#endif

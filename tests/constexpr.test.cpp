@@ -526,3 +526,38 @@ TEST_CASE_TEMPLATE("constexpr: shade evaluated at compile time equals shade at r
     // The table holds real colours, not zeros: the lights reach the points.
     CHECK(ce_shade_table<three_light_features(specular_model::phong, spot_model::opengl, evaluation::exact), T>[1].r > T(0.3));
 }
+
+// Finite in-domain coordinates around 1e30 in float's exact mode evaluate in constant evaluation
+// with g++ too: the squared length 1e60 overflows float, which g++ rejects as "not a constant
+// expression" when a finite operation gives inf; dot() then returns the inf such an overflow gives
+// at run time (vector.hpp), and the scaled length takes over as it does at run time.
+namespace {
+template <class T> constexpr glm::vec<4, T> huge_scene_color(T scale)
+{
+    const std::array lights{phong::light<T>::with_strength({T(3) * scale, T(4) * scale, T(12) * scale, T(1)}, {T(1), T(1), T(1)})};
+    const phong::material<T> mat{.ka = glm::vec<3, T>(T(0.1)), .kd = glm::vec<3, T>(T(0.6)), .ks = glm::vec<3, T>(T(0.3)), .shininess = T(8)};
+    const phong::environment<T> env{.ambient = glm::vec<3, T>(T(0.5))};
+    return phong::shade<phong::presets::classic_phong>(glm::vec<3, T>(T(0), T(0), -scale), glm::vec<3, T>(T(0), T(0), T(1)), mat, lights, env);
+}
+constexpr glm::vec4 huge_float = huge_scene_color(1e30f);
+constexpr glm::dvec4 huge_double = huge_scene_color(1e300);
+// Finite: the exact mode drops the light, whose squared distance leaves T's range (vector.hpp's
+// normal_square, accuracy.hpp's "drops"), leaving the ambient term ka La = 0.1 * 0.5.
+static_assert(!is_nan(huge_float.x) && close(huge_float.x, 0.05f, 2) && huge_float.w == 1.0f);
+static_assert(!is_nan(huge_double.x) && close(huge_double.x, 0.05, 2) && huge_double.w == 1.0);
+} // namespace
+
+TEST_CASE("constexpr: coordinates around 1e30 (float) and 1e300 (double): constant evaluation equals run time")
+{
+    const float scale_f = 1e30f; // not constant-folded: run time
+    const double scale_d = 1e300;
+    CHECK(huge_float == huge_scene_color(scale_f));
+    CHECK(huge_double == huge_scene_color(scale_d));
+}
+
+// dot's constant-evaluation overflow test at float's threshold: max + half an ulp rounds to inf,
+// just below it to max (round to nearest), as at run time.
+static_assert(phong::dot(glm::vec2(3.4028235e38f, 1e30f), glm::vec2(1.0f, 1.0f)) == 3.4028235e38f); // 1e30 < half an ulp (1e31)
+static_assert(phong::dot(glm::vec2(3.4028235e38f, 2.1e31f), glm::vec2(1.0f, 1.0f)) == std::numeric_limits<float>::infinity());
+static_assert(phong::dot(glm::vec2(2e19f, 2e19f), glm::vec2(2e19f, 2e19f)) == std::numeric_limits<float>::infinity()); // 4e38 + 4e38
+static_assert(is_nan(phong::dot(glm::vec2(2e19f, -2e19f), glm::vec2(2e19f, 2e19f))));                      // inf - inf, as at run time

@@ -7,7 +7,7 @@
 # -ffp-contract=fast; the stable mode's error-free transformations must survive that).
 set -euo pipefail
 cmake --preset gcc-release >/dev/null
-cmake --build build/gcc-release --target phong_accuracy_table
+cmake --build build/gcc-release --target phong_accuracy_table phong_stable_p99
 check() { # binary seed [--twofold]
   local out
   out=$(mktemp)
@@ -19,6 +19,8 @@ check() { # binary seed [--twofold]
 }
 check build/gcc-release/tests/phong_accuracy_table 3
 check build/gcc-release/tests/phong_accuracy_table 5 --twofold # float's twofold route (GPU code, SIMD batches)
+# The stable mode's shininess classes on a second generator family (tests/stable_p99.cpp, ~15 s).
+build/gcc-release/tests/phong_stable_p99 20000 9
 if grep -qw fma /proc/cpuinfo; then
   g++ -std=gnu++20 -O2 -mfma -DNDEBUG -DPHONG_HAVE_QUADMATH=1 -Iinclude -Itests tests/accuracy_table.cpp \
       -o build/phong_accuracy_table_fma -lquadmath

@@ -70,25 +70,30 @@ struct spot_cone {
     T cos_outer = T(-1);   ///< smooth model: zero where cos(angle) <= cos_outer; cos_outer <= cos_inner
 
     /// OpenGL spot: axis (normalized here), exponent, cutoff in degrees (0..90, or 180 = no spot).
-    /// Edge: a zero axis or a cutoff outside that range makes a cone validate(light) rejects,
-    /// naming light.spot.direction or light.spot.cos_cutoff.
+    /// Edge: a zero axis or a cutoff outside that range (negative, above 90 other than 180, NaN)
+    /// makes a cone validate(light) rejects, naming light.spot.direction or light.spot.cos_cutoff
+    /// (the cosine alone cannot tell -10 from 10 degrees, so such a cutoff stores cos_cutoff = 2).
     PHONG_HD static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
     {
         spot_cone s;
         s.direction = phong::normalize(axis);
         s.exponent = exponent;
-        s.cos_cutoff = phong::cos_degrees(cutoff_degrees);
+        const bool in_range = (cutoff_degrees >= T(0) && cutoff_degrees <= T(90)) || cutoff_degrees == T(180);
+        s.cos_cutoff = in_range ? phong::cos_degrees(cutoff_degrees) : T(2);
         return s;
     }
     /// Smooth spot: full strength inside inner_degrees, none outside outer_degrees
-    /// (0 <= inner <= outer <= 180). Edge: a zero axis or inner > outer makes a cone validate(light)
-    /// rejects (light.spot.direction, light.spot.cos_outer); inner = outer: a hard edge.
+    /// (0 <= inner <= outer <= 180). Edge: a zero axis, an angle outside [0, 180] (or NaN) or
+    /// inner > outer makes a cone validate(light) rejects (light.spot.direction; light.spot.cos_inner
+    /// or light.spot.cos_outer, stored as 2 for an angle out of range; light.spot.cos_outer for
+    /// inner > outer); inner = outer: a hard edge.
     PHONG_HD static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
     {
         spot_cone s;
         s.direction = phong::normalize(axis);
-        s.cos_inner = phong::cos_degrees(inner_degrees);
-        s.cos_outer = phong::cos_degrees(outer_degrees);
+        const auto in_range = [](T a) { return a >= T(0) && a <= T(180); };
+        s.cos_inner = in_range(inner_degrees) ? phong::cos_degrees(inner_degrees) : T(2);
+        s.cos_outer = in_range(outer_degrees) ? phong::cos_degrees(outer_degrees) : T(2);
         return s;
     }
 };

@@ -230,11 +230,11 @@ struct math_traits<xsimd::batch<T, A>> {
         const auto big_a = xsimd::abs(a) > limit, big_b = xsimd::abs(b) > limit;
         const V as = xsimd::select(big_a, a * down, a), bs = xsimd::select(big_b, b * down, b);
         const V scale = xsimd::select(big_a, up, one) * xsimd::select(big_b, up, one);
-        const V ca = splitter * as, ah = ca - (ca - as), al = as - ah;
-        const V cb = splitter * bs, bh = cb - (cb - bs), bl = bs - bh;
+        const V ca = detail::ieee::opaque(splitter * as), ah = detail::ieee::opaque(ca - detail::ieee::opaque(ca - as)), al = as - ah;
+        const V cb = detail::ieee::opaque(splitter * bs), bh = detail::ieee::opaque(cb - detail::ieee::opaque(cb - bs)), bl = bs - bh;
         const V ps = as * bs;
-        const V es = ((ah * bh - ps) + ah * bl + al * bh) + al * bl;
-        return (a * b + c) + es * scale;
+        const V es = detail::ieee::ordered_sum(ah * bh - ps, ah * bl, al * bh, al * bl);
+        return detail::ieee::opaque(a * b + c) + es * scale;
     }
     static V select(const mask& m, const V& a, const V& b) { return xsimd::select(m, a, b); }
     static bool any(const mask& m) { return xsimd::any(m); }
@@ -274,7 +274,7 @@ private:
     static V newton_rsqrt(const V& x, const V& estimate)
     {
         const V refined = newton_step(x, estimate);
-        const auto finite_nonzero = (estimate > V(T(0))) && (estimate < V(std::numeric_limits<T>::infinity()));
+        const auto finite_nonzero = phong::detail::ieee::positive_finite(estimate);
         return xsimd::select(finite_nonzero, refined, estimate);
     }
 };
@@ -1444,61 +1444,102 @@ inline bool bytes_overlap(const void* p, std::size_t bytes, const void* q, std::
     return before(a, b + bytes_q) && before(b, a + bytes);
 }
 
-/// Memory that shade_batch reads while it writes: none for one shared material (copied into
-/// lanes first), the N materials when per point, a table's entries (gathered per step) and its N ids.
+/// Memory that shade_batch reads while it writes, with the span's name: none for one shared
+/// material (copied into lanes first), the N materials when per point, a table's entries
+/// (gathered per step) and its N ids.
 struct byte_range {
     const void* p = nullptr;
     std::size_t bytes = 0;
+    const char* name = "";
 };
 template <class T, glm::qualifier Q> std::array<byte_range, 2> material_reads(const material<T, Q>&, std::size_t) { return {}; }
 template <class T, glm::qualifier Q> std::array<byte_range, 2> material_reads(std::span<const material<T, Q>> m, std::size_t n)
 {
-    return {byte_range{m.data(), n * sizeof(material<T, Q>)}, byte_range{}};
+    return {byte_range{m.data(), n * sizeof(material<T, Q>), "materials"}, byte_range{}};
 }
 template <class T, glm::qualifier Q> std::array<byte_range, 2> material_reads(const material_table<T, Q>& t, std::size_t n)
 {
-    return {byte_range{t.materials.data(), t.materials.size() * sizeof(material<T, Q>)}, byte_range{t.ids.data(), n * sizeof(std::uint32_t)}};
+    return {byte_range{t.materials.data(), t.materials.size() * sizeof(material<T, Q>), "material_table.materials"},
+            byte_range{t.ids.data(), n * sizeof(std::uint32_t), "material_table.ids"}};
 }
 
-/// shade_batch's aliasing rule, checked in debug builds: the memory it writes (the first n
-/// elements of each output channel, or of the interleaved colours) overlaps no memory it reads
-/// point by point (the first n coordinates, materials when per point, front_facing flags), nor
-/// another output channel. One exception: an SoA output channel may be exactly an input
-/// coordinate span (same data(), whole length n), i.e. shading in place. That is safe because
-/// each step reads its points' coordinates (into lanes, or padded copies for the tail) before it
-/// stores their colours, and never stores to an element a later step reads. Lights, a shared
-/// material and the environment are copied into lanes before the first store: no constraint.
-template <int channels, class T, glm::qualifier Q, class Materials, class Output>
-bool output_overlaps_input(const soa3<T>& positions, const soa3<T>& normals, const Materials& materials,
-                           const Output& out, std::span<const bool> front_facing, std::size_t n)
+/// "shade_batch: an output span overlaps <an input span | another output span>: <written> over
+/// <read>", formatted into a per-thread buffer (on failure only; valid until the thread's next call).
+inline const char* overlap_message(const char* written, const char* read, bool input, bool coordinate) noexcept
 {
-    struct range {
-        const void* p;
-        std::size_t bytes;
-    };
-    constexpr bool soa = std::is_same_v<Output, soa_rgba<T>>;
-    range writes[4]{};
+    thread_local char buffer[256];
+    std::snprintf(buffer, sizeof buffer, "shade_batch: an output span overlaps %s: %s over %s%s",
+                  input ? "an input span" : "another output span", written, read,
+                  coordinate ? " (only an output channel equal to an input coordinate span, the same data() and size(), may alias it)" : "");
+    return buffer;
+}
+
+/// shade_batch's aliasing rule, checked in every build (O(1): at most 4 written and 16 read
+/// ranges): the memory it writes (the first n elements of each output channel, or of the
+/// interleaved colours) overlaps no memory it reads point by point (the first n coordinates of
+/// positions, normals and views, materials when per point, a table and its ids, front_facing
+/// flags, light masks), nor another output channel. Returns nullptr, or the message naming both
+/// spans. One exception: an SoA output channel may be exactly an SoA input coordinate span (same
+/// data(), whole length n), i.e. shading in place. That is safe because each step reads its
+/// points' coordinates (into lanes, or padded copies for the tail) before it stores their colours,
+/// and never stores to an element a later step reads. Lights, a shared material and the
+/// environment are copied into lanes before the first store: no constraint.
+template <int channels, class T, glm::qualifier Q, class Points, class Materials, class Output>
+const char* output_overlap(const Points& points, const Materials& materials, const Output& out, std::size_t n)
+{
+    constexpr bool soa_out = std::is_same_v<Output, soa_rgba<T>>;
+    constexpr bool soa_in = std::is_same_v<Points, soa_points<T>>;
+    byte_range writes[4]{};
     int write_count = 0;
-    if constexpr (soa) {
+    if constexpr (soa_out) {
         const std::span<T> channel[4] = {out.r, out.g, out.b, out.a};
-        for (int k = 0; k < channels; ++k) writes[write_count++] = {channel[k].data(), n * sizeof(T)};
+        constexpr const char* names[4] = {"out.r", "out.g", "out.b", "out.a"};
+        for (int k = 0; k < channels; ++k) writes[write_count++] = {channel[k].data(), n * sizeof(T), names[k]};
     } else {
-        writes[write_count++] = {out.data(), n * sizeof(typename Output::value_type)};
+        writes[write_count++] = {out.data(), n * sizeof(typename Output::value_type), "the output"};
     }
-    const std::span<const T> coords[6] = {positions.x, positions.y, positions.z, normals.x, normals.y, normals.z};
+    byte_range reads[16]{};
+    int read_count = 0;
+    int coordinate_reads = 0; // reads[0, coordinate_reads): SoA coordinates, which an output channel may equal
+    if constexpr (soa_in) {
+        const soa3<T>* vectors[3] = {&points.positions, &points.normals, &points.views};
+        constexpr const char* names[9] = {".positions.x", ".positions.y", ".positions.z", ".normals.x", ".normals.y",
+                                          ".normals.z",   ".views.x",     ".views.y",     ".views.z"};
+        for (int a = 0; a < 3; ++a) {
+            const std::span<const T> c[3] = {vectors[a]->x, vectors[a]->y, vectors[a]->z};
+            for (int k = 0; k < 3; ++k) reads[read_count++] = {c[k].data(), std::min(n, c[k].size()) * sizeof(T), names[3 * a + k]};
+        }
+        coordinate_reads = read_count;
+    } else {
+        reads[read_count++] = {points.positions.data(), points.positions.size() * sizeof(glm::vec<3, T, Q>), ".positions"};
+        reads[read_count++] = {points.normals.data(), points.normals.size() * sizeof(glm::vec<3, T, Q>), ".normals"};
+        reads[read_count++] = {points.views.data(), points.views.size() * sizeof(glm::vec<3, T, Q>), ".views"};
+    }
+    for (const byte_range& m : material_reads(materials, n)) reads[read_count++] = m;
+    reads[read_count++] = {points.front_facing.data(), points.front_facing.size() * sizeof(bool), ".front_facing"};
+    reads[read_count++] = {points.light_masks.data(), points.light_masks.size() * sizeof(std::uint64_t), ".light_masks"};
     for (int w = 0; w < write_count; ++w) {
-        for (const std::span<const T>& c : coords)
-            if (bytes_overlap(writes[w].p, writes[w].bytes, c.data(), n * sizeof(T)) &&
-                !(soa && writes[w].p == static_cast<const void*>(c.data())))
-                return true;
-        for (const byte_range& m : material_reads(materials, n))
-            if (bytes_overlap(writes[w].p, writes[w].bytes, m.p, m.bytes)) return true;
-        if (!front_facing.empty() && bytes_overlap(writes[w].p, writes[w].bytes, front_facing.data(), n * sizeof(bool)))
-            return true;
+        for (int r = 0; r < read_count; ++r) {
+            const bool in_place = soa_out && r < coordinate_reads && writes[w].p == reads[r].p && reads[r].bytes == writes[w].bytes;
+            if (!in_place && bytes_overlap(writes[w].p, writes[w].bytes, reads[r].p, reads[r].bytes))
+                return overlap_message(writes[w].name, reads[r].name, true, soa_out && r < coordinate_reads);
+        }
         for (int other = 0; other < w; ++other)
-            if (bytes_overlap(writes[w].p, writes[w].bytes, writes[other].p, writes[other].bytes)) return true;
+            if (bytes_overlap(writes[w].p, writes[w].bytes, writes[other].p, writes[other].bytes))
+                return overlap_message(writes[w].name, writes[other].name, false, false);
     }
-    return false;
+    return nullptr;
+}
+
+/// A memory-safety precondition of shade_batch (span lengths, overlap): O(1), checked in every
+/// build, NDEBUG included (as hardened standard libraries check std::span), through the
+/// precondition handler (default: print the message and abort). Returns ok: when a handler
+/// returns, shade_batch writes nothing.
+inline bool memory_safe(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
+                        int line = PHONG_DETAIL_CALLER_LINE) noexcept
+{
+    if (!ok) precondition_failed(message, file, line);
+    return ok;
 }
 
 /// Number of vectors in an SoA or AoS input (SoA: the three spans' common length, or a length
@@ -1519,10 +1560,11 @@ inline const char* entry_message(const char* span, std::size_t index, const char
     return buffer;
 }
 
-/// shade_batch's preconditions, checked in debug builds through the precondition handler (span
-/// lengths, each message naming the span; no aliasing; valid materials, lights and environment, a
-/// span's entry named by its index). Returns whether to shade: not when a length
-/// is off (a handler that returns must not lead to reads or writes past a span), nor, in every
+/// shade_batch's preconditions, through the precondition handler. In every build: the span
+/// lengths (each message naming the span) and the aliasing rule (naming both spans), O(1) checks
+/// that keep memory safe; shade nothing when one fails (a handler that returns leads to no read or
+/// write past a span). Debug builds only: valid materials, lights and environment, a span's entry
+/// named by its index. Returns whether to shade: not after a failed memory check, nor, in every
 /// build, with an empty material table (nothing to read).
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
 bool check_batch_inputs(const Points& points, const Materials& materials, [[maybe_unused]] std::span<const light<T, Q>> lights,
@@ -1530,53 +1572,32 @@ bool check_batch_inputs(const Points& points, const Materials& materials, [[mayb
 {
     constexpr bool shared_material = std::is_same_v<Materials, material<T, Q>>;
     constexpr bool table = std::is_same_v<Materials, material_table<T, Q>>;
-    [[maybe_unused]] std::size_t out_size = 0;
+    std::size_t out_size = 0;
     if constexpr (std::is_same_v<Output, soa_rgba<T>>)
         out_size = std::min({out.r.size(), out.g.size(), out.b.size(), F.alpha ? out.a.size() : out.r.size()});
     else
         out_size = out.size();
-    const bool positions_ok = vec3_count(points.positions) != std::size_t(-1); // else n is no count: one report
-    PHONG_ASSERT(positions_ok, "shade_batch: .positions: x, y and z of different lengths");
-    PHONG_ASSERT(!positions_ok || vec3_count(points.normals) == n, "shade_batch: .normals: not one normal per point");
-    PHONG_ASSERT(!positions_ok || out_size >= n, "shade_batch: the output is shorter than the points (N entries per channel)");
-    [[maybe_unused]] bool lengths_ok = positions_ok && vec3_count(points.normals) == n && out_size >= n;
-    if constexpr (F.view == view_model::given) {
-        PHONG_ASSERT(vec3_count(points.views) == n, "shade_batch: view_model::given needs one view vector per point (.views)");
-        lengths_ok = lengths_ok && vec3_count(points.views) == n;
-    } else {
-        PHONG_ASSERT(vec3_count(points.views) == 0, "shade_batch: .views is read only with features::view = view_model::given");
-    }
-    PHONG_ASSERT(points.front_facing.empty() || points.front_facing.size() == n, "shade_batch: front_facing length");
-    PHONG_ASSERT(points.light_masks.empty() || points.light_masks.size() == n, "shade_batch: light_masks length");
-    lengths_ok = lengths_ok && (points.front_facing.empty() || points.front_facing.size() == n) &&
-                 (points.light_masks.empty() || points.light_masks.size() == n);
+    // n is no count when x, y and z differ: one report then.
+    if (!memory_safe(vec3_count(points.positions) != std::size_t(-1), "shade_batch: .positions: x, y and z of different lengths")) return false;
+    bool lengths_ok = memory_safe(vec3_count(points.normals) == n, "shade_batch: .normals: not one normal per point");
+    lengths_ok = memory_safe(out_size >= n, "shade_batch: the output is shorter than the points (N entries per channel)") && lengths_ok;
+    if constexpr (F.view == view_model::given)
+        lengths_ok = memory_safe(vec3_count(points.views) == n, "shade_batch: view_model::given needs one view vector per point (.views)") && lengths_ok;
+    else
+        lengths_ok = memory_safe(vec3_count(points.views) == 0, "shade_batch: .views is read only with features::view = view_model::given") && lengths_ok;
+    lengths_ok = memory_safe(points.front_facing.empty() || points.front_facing.size() == n, "shade_batch: front_facing length") && lengths_ok;
+    lengths_ok = memory_safe(points.light_masks.empty() || points.light_masks.size() == n, "shade_batch: light_masks length") && lengths_ok;
     if constexpr (table) {
-        PHONG_ASSERT(materials.ids.size() == n, "shade_batch: material_table needs one id per point (.ids)");
-        PHONG_ASSERT(n == 0 || !materials.materials.empty(), "shade_batch: material_table without materials");
-        lengths_ok = lengths_ok && materials.ids.size() == n;
-        // Checked in every build: with no entry there is nothing to read (an id is clamped to the last entry).
-        if (n != 0 && materials.materials.empty()) return false;
+        lengths_ok = memory_safe(materials.ids.size() == n, "shade_batch: material_table needs one id per point (.ids)") && lengths_ok;
+        // With no entry there is nothing to read (an id is clamped to the last entry).
+        lengths_ok = memory_safe(n == 0 || !materials.materials.empty(), "shade_batch: material_table without materials") && lengths_ok;
     } else if constexpr (!shared_material) {
-        PHONG_ASSERT(materials.size() == n, "shade_batch: one material per point");
-        lengths_ok = lengths_ok && materials.size() == n;
+        lengths_ok = memory_safe(materials.size() == n, "shade_batch: one material per point") && lengths_ok;
     }
-#if !defined(NDEBUG)
     if (!lengths_ok) return false;
-    if constexpr (std::is_same_v<Points, soa_points<T>>) {
-        PHONG_ASSERT((!output_overlaps_input<F.alpha ? 4 : 3, T, Q>(points.positions, points.normals, materials, out, points.front_facing, n)),
-                     "shade_batch: an output span overlaps an input span (only an output channel equal to an input "
-                     "coordinate span, the same data() and size(), may alias it)");
-    } else { // AoS: the output overlaps none of the point arrays nor the materials
-        const void* out_data = nullptr;
-        std::size_t out_bytes = 0;
-        if constexpr (std::is_same_v<Output, soa_rgba<T>>) out_data = out.r.data(), out_bytes = n * sizeof(T);
-        else out_data = out.data(), out_bytes = n * sizeof(typename Output::value_type);
-        bool overlap = false;
-        const std::span<const glm::vec<3, T, Q>> arrays[3] = {points.positions, points.normals, points.views};
-        for (const auto& a : arrays) overlap = overlap || bytes_overlap(out_data, out_bytes, a.data(), a.size() * sizeof(glm::vec<3, T, Q>));
-        for (const byte_range& m : material_reads(materials, n)) overlap = overlap || bytes_overlap(out_data, out_bytes, m.p, m.bytes);
-        PHONG_ASSERT(!overlap, "shade_batch: the output overlaps the input points");
-    }
+    const char* overlap = output_overlap<F.alpha ? 4 : 3, T, Q>(points, materials, out, n);
+    if (!memory_safe(overlap == nullptr, overlap)) return false;
+#if !defined(NDEBUG)
     if constexpr (table) {
         for (std::size_t j = 0; j < materials.materials.size(); ++j) {
             const validation valid = validate(materials.materials[j]);
@@ -1731,10 +1752,12 @@ void shade_batch_impl(const soa3<T>& positions, const soa3<T>& normals, const Ma
 ///   front_facing: N flags, read only for facing::flag; empty means all front-facing.
 /// Per-point view vectors (view_model::given: a compile error here), per-point light masks and
 /// AoS glm::vec3 inputs: the soa_points / aos_points overloads below.
-/// Pre (checked in debug builds through the precondition handler, detail/config.hpp): spans of
-/// length N (out may be longer; only its first N elements are written); validate(material) and
-/// validate(L); no aliasing: the N output elements overlap neither the inputs read per point
-/// (the N coordinates, the N materials when per point, front_facing) nor each other, except that
+/// Pre (checked through the precondition handler, detail/config.hpp; the span lengths and the
+/// aliasing rule in every build, NDEBUG included, and nothing is shaded when one fails; the values
+/// in debug builds): spans of length N (out may be longer; only its first N elements are
+/// written); validate(material) and validate(L); no aliasing: the N output elements overlap
+/// neither the inputs read per point (the N coordinates and views, the N materials when per point
+/// or a table and its ids, front_facing, light masks) nor each other, except that
 /// an SoA output channel may be exactly one of the coordinate spans (same data(), in-place
 /// shading: each point is read before its colour is stored). An output shifted against an input
 /// would otherwise overwrite points before they are read. Lights, a shared material and env are

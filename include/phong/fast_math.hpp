@@ -87,9 +87,10 @@ PHONG_HD constexpr V log2_positive(V x)
     // nonnegative for every positive normal x, so a logical shift (unsigned) does.
     const U biased = (u - U(fmt::sqrt_half_bits) + U(fmt::one_bits)) >> fmt::mantissa_bits;
     const V f = L::from_bits(u - (biased << fmt::mantissa_bits) + U(fmt::one_bits)); // x / 2^k in [sqrt(1/2), sqrt(2))
-    // k as a V without an integer conversion: the bits of shift + (k + bias), minus shift + bias.
-    const V k = L::from_bits(biased + L::bits(V(fmt::shift))) - V(fmt::shift + S(fmt::bias));
-    const V r = f - V(S(1));
+    // k as a V without an integer conversion: the bits of shift + (k + bias), minus shift + bias
+    // (opaque: g++ -ffast-math otherwise rewrites it on SSE2 lanes into a wrong k).
+    const V k = phong::detail::ieee::opaque(L::from_bits(biased + L::bits(V(fmt::shift)))) - V(fmt::shift + S(fmt::bias));
+    const V r = phong::detail::ieee::opaque(f - V(S(1))); // the reduced argument, not re-expanded as f P - P
     // Estrin's scheme: three dependent multiply-adds instead of Horner's seven (the power's latency
     // is what a light loop waits for; the same number of operations within two multiplications).
     const auto c = [](int i) { return V(S(log2_p[i])); };
@@ -109,8 +110,8 @@ PHONG_HD constexpr V exp2_nonpositive(V y)
     using L = lanes<V>;
     using U = typename L::bits_t;
     const V yc = phong::max(y, V(S(-fmt::bias)));  // n >= -bias: n = -bias gives 2^n's bits 0, i.e. 0
-    const V shifted = yc + V(fmt::shift);           // low bits: n = round(y), two's complement
-    const V t = yc - (shifted - V(fmt::shift));     // exact
+    const auto [shifted, rounded] = phong::detail::ieee::round_by_shift(yc, V(fmt::shift)); // low bits: n = round(y)
+    const V t = phong::detail::ieee::opaque(yc - rounded); // exact; not re-expanded as yc E - rounded E
     const U n_biased = L::bits(shifted) - L::bits(V(fmt::shift)) + U(U(fmt::bias));
     const V scale = L::from_bits(n_biased << fmt::mantissa_bits); // 2^n, or 0 for n = -bias
     const auto c = [](int i) { return V(S(exp2_e[i])); };
@@ -287,7 +288,7 @@ PHONG_HD constexpr V rsqrt(V x)
                 __asm__("rsqrtss %0, %0" : "+x"(r0));
 #  endif
                 const float r1 = r0 * (1.5f - (0.5f * x) * (r0 * r0));
-                return (r0 > 0.0f && r0 < std::numeric_limits<float>::infinity()) ? r1 : r0;
+                return phong::detail::ieee::positive_finite(r0) ? r1 : r0;
             }
         }
 #endif

@@ -174,16 +174,16 @@ PHONG_HD constexpr validation validate(const light<T, Q>& L)
     if (!finite_non_negative(a.quadratic)) return {"light.attenuation.quadratic: must be finite and >= 0"};
     if (a.constant + a.linear + a.quadratic <= T(0))
         return {"light.attenuation: constant + linear + quadratic must be > 0 (all zero: f = 1 / 0)"};
-    if (!(a.range > T(0))) return {"light.attenuation.range: must be > 0 (inf for no window)"};
+    if (!(detail::not_nan(a.range) && a.range > T(0))) return {"light.attenuation.range: must be > 0 (inf for no window)"};
     const spot_cone<T, Q>& s = L.spot;
     if (!finite_non_negative(s.exponent)) return {"light.spot.exponent: must be finite and >= 0"};
-    if (!(s.cos_cutoff == T(-1) || (s.cos_cutoff >= T(0) && s.cos_cutoff <= T(1))))
+    if (!(finite(s.cos_cutoff) && (s.cos_cutoff == T(-1) || (s.cos_cutoff >= T(0) && s.cos_cutoff <= T(1)))))
         return {"light.spot.cos_cutoff: cutoff must be in [0, 90] degrees or 180"};
-    if (!(s.cos_inner >= T(-1) && s.cos_inner <= T(1))) return {"light.spot.cos_inner: must be in [-1, 1]"};
-    if (!(s.cos_outer >= T(-1) && s.cos_outer <= T(1))) return {"light.spot.cos_outer: must be in [-1, 1]"};
+    if (!(finite(s.cos_inner) && s.cos_inner >= T(-1) && s.cos_inner <= T(1))) return {"light.spot.cos_inner: must be in [-1, 1] (inner angle in [0, 180] degrees)"};
+    if (!(finite(s.cos_outer) && s.cos_outer >= T(-1) && s.cos_outer <= T(1))) return {"light.spot.cos_outer: must be in [-1, 1] (outer angle in [0, 180] degrees)"};
     if (s.cos_outer > s.cos_inner) return {"light.spot.cos_outer: must be <= cos_inner (outer cone narrower than inner)"};
     const T axis2 = s.direction.x * s.direction.x + s.direction.y * s.direction.y + s.direction.z * s.direction.z;
-    if (!(axis2 > T(0.998) && axis2 < T(1.002))) return {"light.spot.direction: must be unit length"};
+    if (!(finite(axis2) && axis2 > T(0.998) && axis2 < T(1.002))) return {"light.spot.direction: must be unit length"};
     return {};
 }
 

@@ -31,7 +31,7 @@ PHONG_HD constexpr validation validate(const material<T, Q>& m)
     if (!finite_non_negative(m.ks)) return {"material.ks: negative, NaN or inf"};
     if (!finite_non_negative(m.emission)) return {"material.emission: negative, NaN or inf"};
     if (!finite_non_negative(m.shininess)) return {"material.shininess: must be finite and >= 0"};
-    if (!(m.alpha >= T(0) && m.alpha <= T(1))) return {"material.alpha: must be in [0, 1]"};
+    if (!(detail::finite_non_negative(m.alpha) && m.alpha <= T(1))) return {"material.alpha: must be in [0, 1]"};
     return {};
 }
 

@@ -51,11 +51,11 @@ template <class V, class S = V>
 PHONG_HD constexpr V dekker_fma(const V& a, const V& b, const V& c)
 {
     const V split = V(S((1ull << ((std::numeric_limits<S>::digits + 1) / 2)) + 1));
-    const V ca = split * a, ah = ca - (ca - a), al = a - ah;
-    const V cb = split * b, bh = cb - (cb - b), bl = b - bh;
+    const V ca = ieee::opaque(split * a), ah = ieee::opaque(ca - ieee::opaque(ca - a)), al = a - ah;
+    const V cb = ieee::opaque(split * b), bh = ieee::opaque(cb - ieee::opaque(cb - b)), bl = b - bh;
     const V p = a * b;
-    const V e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-    return (p + c) + e;
+    const V e = ieee::ordered_sum(ah * bh - p, ah * bl, al * bh, al * bl);
+    return ieee::opaque(p + c) + e;
 }
 
 } // namespace detail

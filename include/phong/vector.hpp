@@ -13,14 +13,53 @@
 #include <glm/vec4.hpp>
 
 #include <limits>
+#include <type_traits>
 
 namespace phong {
 
+namespace detail {
+/// In constant evaluation, for float and double finite inputs: the value dot(a, b) takes at run
+/// time when a product or a partial sum (in index order, as dot sums) rounds to +-inf in T (+-inf,
+/// or NaN for inf - inf), else 0. g++ rejects a finite operation whose result overflows as not a
+/// constant expression, and clang inf - inf; dot returns this value instead. Evaluated in long
+/// double, whose range and precision hold every such product and the overflow threshold (the
+/// largest T plus half its ulp: from there on, round to nearest gives inf).
+template <glm::length_t L, class T, glm::qualifier Q>
+PHONG_HD constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
+{
+    using W = long double;
+    constexpr W max = std::numeric_limits<T>::max(), eps = std::numeric_limits<T>::epsilon();
+    constexpr W threshold = max + max / (W(2) - eps) * eps / 2; // max = (2 - eps) 2^(e-1), ulp = eps 2^(e-1)
+    const auto rounded = [](W x) { // x rounded to T, an overflow as +-1 (the sign of the inf)
+        return x >= threshold ? W(1) : x <= -threshold ? W(-1) : W(0);
+    };
+    W sum = 0, sum_inf = 0; // the partial sum, finite (in T's values), or its inf's sign
+    for (glm::length_t k = 0; k < L; ++k) {
+        if (!(a[k] == a[k]) || !(b[k] == b[k])) return T(0); // NaN: propagates on the normal path
+        const W p = W(a[k]) * W(b[k]);
+        const W p_inf = rounded(p);
+        if (sum_inf != 0 && p_inf != 0 && sum_inf != p_inf) return std::numeric_limits<T>::quiet_NaN(); // inf - inf
+        if (sum_inf != 0 || p_inf != 0) {
+            sum_inf = sum_inf != 0 ? sum_inf : p_inf;
+            continue;
+        }
+        const W s = k == 0 ? W(T(p)) : sum + W(T(p)); // rounded to T at each step, as at run time
+        sum_inf = rounded(s);
+        if (sum_inf == 0) sum = W(T(s));
+    }
+    return sum_inf > 0 ? std::numeric_limits<T>::infinity() : sum_inf < 0 ? -std::numeric_limits<T>::infinity() : T(0);
+}
+} // namespace detail
+
 /// Dot product: dot(a, b) = sum_k a_k b_k, summed in index order (GLSL `dot`).
-/// Edge: overflows to inf when a product exceeds the range of T; NaN propagates.
+/// Edge: overflows to inf when a product exceeds the range of T (in constant evaluation too);
+/// NaN propagates.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
+    if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
+        if (std::is_constant_evaluated())
+            if (const T overflow = detail::constant_dot_overflow(a, b); overflow != T(0)) return overflow;
     // Named components, not v[k] in a loop from k = 1: GLM's operator[] is a switch, and g++ 12
     // drops the probability of the case it prunes (k = 0), so every loop around a dot product was
     // estimated cold (feature_cost: constants reloaded in the light loop, the output spilled).
@@ -43,9 +82,8 @@ PHONG_HD constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<
     for (glm::length_t k = 1; k < L; ++k) {
         const T h = a[k] * b[k];
         const T r = phong::fma(a[k], b[k], -h);
-        const T s = p + h; // TwoSum(p, h) = s + q exactly
-        const T bp = s - p;
-        const T q = (p - (s - bp)) + (h - bp);
+        const T s = p + h;
+        const T q = detail::ieee::two_sum_error(p, h, s); // TwoSum(p, h) = s + q exactly
         p = s;
         err += q + r;
     }

@@ -68,3 +68,16 @@ foreach(case RANGE 0 1)
       PASS_REGULAR_EXPRESSION "phong::light_traits specialization")
   endif()
 endforeach()
+
+# 5. -ffast-math: the stable mode's twofold route (double; float with precision = twofold) is a
+#    compile error naming the flag and the alternative (phong/detail/ieee.hpp); the exact, fast and
+#    float's wider stable mode compile (case 0).
+foreach(case RANGE 0 2)
+  add_test(NAME fast_math_reject_${case}
+           COMMAND ${CMAKE_CXX_COMPILER} -std=c++20 -fsyntax-only -ffast-math -Wall -Wextra -Wpedantic -Werror
+                   ${phong_reject_includes} -DPHONG_REJECT_CASE=${case} ${CMAKE_CURRENT_LIST_DIR}/fast_math_reject.cpp)
+  if(NOT case EQUAL 0)
+    set_tests_properties(fast_math_reject_${case} PROPERTIES
+      PASS_REGULAR_EXPRESSION "-ffast-math \\(-fassociative-math\\) reorders them: build this translation unit with -fno-associative-math")
+  endif()
+endforeach()

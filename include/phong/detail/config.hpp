@@ -42,8 +42,9 @@ inline std::atomic<precondition_handler> current_precondition_handler{&default_p
 
 } // namespace detail
 
-/// Installs the handler that debug-build precondition checks (PHONG_ASSERT: shade's validate()
-/// of every parameter, shade_batch's span checks) call when they fail, and returns the previous
+/// Installs the handler that precondition checks (PHONG_ASSERT in debug builds: shade's validate()
+/// of every parameter; in every build: shade_batch's span-length and overlap checks, which keep
+/// memory safe) call when they fail, and returns the previous
 /// one; nullptr restores the default (print "phong: precondition failed: <message> (file:line)" to
 /// stderr, then std::abort()). Thread-safe (an atomic pointer); process-wide.
 /// A handler may return (e.g. a test recording the message; throwing terminates, the checks are in
@@ -51,7 +52,8 @@ inline std::atomic<precondition_handler> current_precondition_handler{&default_p
 /// build would, with the result unspecified but no undefined behaviour (shade on out-of-domain
 /// parameters gives some value, possibly NaN; shade_batch with spans of wrong lengths writes
 /// nothing). Not consulted in constant evaluation (a compile error instead) nor in CUDA device
-/// code (plain assert there), nor under NDEBUG (no check at all).
+/// code (plain assert there), nor under NDEBUG for the value checks (shade_batch's memory checks
+/// call it in every build).
 inline precondition_handler set_precondition_handler(precondition_handler handler) noexcept
 {
     return detail::current_precondition_handler.exchange(handler ? handler : &detail::default_precondition_handler);

@@ -36,7 +36,7 @@ struct lanes<xsimd::batch<T, A>> {
             const V half_x = V(0.5) * x;
             const V r1 = r0 * math_traits<V>::fma(-half_x, r0 * r0, V(1.5));
             const V r2 = r1 * math_traits<V>::fma(-half_x, r1 * r1, V(1.5));
-            return xsimd::select((r0 > V(0.0)) && (r0 < V(std::numeric_limits<double>::infinity())), r2, r0);
+            return xsimd::select(phong::detail::ieee::positive_finite(r0), r2, r0);
         }
 #  endif
         return math_traits<V>::rsqrt(x);

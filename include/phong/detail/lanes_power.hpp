@@ -71,7 +71,7 @@ template <class V> PHONG_LANES_POWER_INLINE V split_exponent(const V& x, V& e)
     const IV bits = xsimd::bitwise_cast<IV>(x);
     const IV ei = (bits - IV(0x3f3504f3)) >> 23;
     e = xsimd::to_float(ei);
-    return xsimd::bitwise_cast<V>(bits - (ei << 23)) - V(1.0f);
+    return ieee::opaque(xsimd::bitwise_cast<V>(bits - (ei << 23)) - V(1.0f)); // -ffast-math: kept as one value
 }
 
 /// e + log2(1 + t) = e + t P(t) for t in [sqrt(1/2) - 1, sqrt(2) - 1].
@@ -99,7 +99,7 @@ template <class V, bool Finite = false> PHONG_LANES_POWER_INLINE V exp2_nonposit
     V y = y_in;
     if constexpr (!(Finite && scalef)) y = xsimd::max(y_in, V(y_min));
     const V k = xsimd::nearbyint(y);
-    const V r = y - k;
+    const V r = ieee::opaque(y - k); // -ffast-math: not re-expanded as y R - k R
     V q(exp2_coefficients[0]);
     for (int j = 1; j < 6; ++j) q = fused(q, r, V(exp2_coefficients[j]));
     const V mantissa = fused(r, q, V(1.0f));

@@ -22,6 +22,7 @@
 
 #include "config.hpp"
 #include "constexpr_math.hpp"
+#include "ieee.hpp"
 
 #include <array>
 #include <bit>
@@ -101,7 +102,7 @@ PHONG_HD constexpr double log2_normal(double x)
     const int i = static_cast<int>((tmp >> (52 - log_table_bits)) % (1u << log_table_bits));
     const double k = static_cast<double>(static_cast<std::int64_t>(tmp) >> 52); // arithmetic shift (C++20)
     const double z = std::bit_cast<double>(u - (tmp & (u64(0xfff) << 52)));
-    const double r = z * log2_table[i].inv_c - 1.0; // exact for the interval holding 1 (inv_c = 1)
+    const double r = ieee::opaque(z * log2_table[i].inv_c - 1.0); // exact for the interval holding 1 (inv_c = 1)
     const double r2 = r * r;
     double p;
     if constexpr (Short) p = r * (a1 + r * a2) + r2 * r * (a3 + r * a4 + r2 * a5);
@@ -115,9 +116,9 @@ template <bool Short = false>
 PHONG_HD constexpr double exp2_nonpositive(double y)
 {
     constexpr double shift = 0x1.8p52 / (1 << exp_table_bits); // ulp 1/64 around it: y + shift rounds 64 y
-    const double shifted = y + shift;
+    const auto [shifted, rounded] = ieee::round_by_shift(y, shift);
     const u64 n = std::bit_cast<u64>(shifted); // low bits: round(64 y), two's complement
-    const double t = y - (shifted - shift);    // |t| <= 1/128
+    const double t = ieee::opaque(y - rounded); // |t| <= 1/128
     const double scale = std::bit_cast<double>(exp2_table[n % (1u << exp_table_bits)] + (n << (52 - exp_table_bits)));
     if constexpr (Short) {
         return scale + scale * (t * (b1 + t * (b2 + t * b3)));

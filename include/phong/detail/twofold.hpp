@@ -30,24 +30,27 @@ namespace phong::detail {
 template <class T> PHONG_HD constexpr T rounded_product(T a, T b)
 {
 #if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
-    return phong::fma(a, b, T(0));
+    return ieee::opaque(phong::fma(a, b, T(0)));
 #else
-    return a * b;
+    return ieee::opaque(a * b);
 #endif
 }
 
 /// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b).
 template <class T> PHONG_HD constexpr T two_sum_error(T a, T b, T hi)
 {
-    const T bb = hi - a;
-    return (a - (hi - bb)) + (b - bb);
+    static_assert(ieee::twofold_allowed<T>,
+                  "phong: the stable mode's twofold arithmetic (double, or features::precision = twofold) needs IEEE "
+                  "additions, and -ffast-math (-fassociative-math) reorders them: build this translation unit with "
+                  "-fno-associative-math (or -fno-fast-math), or use evaluation::exact or fast, or float's stable "
+                  "mode with precision = wider");
+    return ieee::two_sum_error(a, b, hi);
 }
 
 /// a - b = hi + lo exactly (TwoSum on a + (-b)); returns lo for hi = fl(a - b).
 template <class T> PHONG_HD constexpr T difference_error(T a, T b, T hi)
 {
-    const T bb = hi - a;
-    return (a - (hi - bb)) - (b + bb);
+    return two_sum_error(a, -b, hi);
 }
 
 /// A unit vector carried twofold: hi + lo = d / |d| with an error of a few eps^2 per component.

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# -ffast-math builds (docs/compilers.md, "-ffast-math"): g++ and clang++, -O3 -march=native
+# -ffast-math, scalar and batch. What each flag does to each mode is in docs/compilers.md; here:
+#  1. the accuracy table (scalar): the exact and fast modes, and float's stable mode (precision =
+#     wider), within their published bounds in every class, no NaN/inf for finite input. Linked with
+#     -ffast-math, i.e. with FTZ/DAZ: the one documented exception is attenuation_c0_zero (a light
+#     within 1e-19 of the point in float, 1e-154 in double), which the table reports and exempts;
+#     the non_finite class is not checked (NaN and inf inputs give unspecified values there);
+#  2. shade_batch's exact and fast lanes on every class (tests/batch_accuracy.test.cpp) and the
+#     NaN-policy tests (tests/nan_policy.test.cpp) but those of NaN/inf inputs and outputs (the
+#     documented -ffinite-math-only exception), compiled with -ffast-math and linked without it
+#     (IEEE subnormals: FTZ/DAZ is item 1's exception);
+#  3. the stable mode's twofold route (double; float with precision = twofold) refuses to compile,
+#     naming the flag (tests/nan_policy/fast_math_reject.cpp).
+# clang++ uses the long-double reference (Debian's clang++ 14 has no quadmath.h).
+set -euo pipefail
+mkdir -p build/fast-math
+for cxx in g++ clang++; do
+  flags=(-std=gnu++20 -O3 -march=native -ffast-math -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests)
+  libs=()
+  if [ "$cxx" = g++ ]; then flags+=(-DPHONG_HAVE_QUADMATH=1); libs=(-lquadmath); fi
+  out=build/fast-math/$cxx
+  "$cxx" "${flags[@]}" tests/accuracy_table.cpp -o "$out-table" "${libs[@]}" &
+  "$cxx" "${flags[@]}" -c tests/batch_accuracy.test.cpp -o "$out-batch.o" &
+  wait
+  "$cxx" "${flags[@]}" -c tests/main.cpp -o "$out-main.o" &
+  "$cxx" "${flags[@]}" -c tests/nan_policy.test.cpp -o "$out-nan.o" &
+  wait
+  "$cxx" "$out-main.o" "$out-batch.o" "$out-nan.o" -o "$out-tests" "${libs[@]}"
+  for args in "5000 3" "5000 4 --fast"; do
+    # shellcheck disable=SC2086
+    if ! "$out-table" $args --bounds >"$out-table.txt"; then grep "ABOVE BOUND" "$out-table.txt"; exit 1; fi
+    echo "$cxx -ffast-math: accuracy table ($args): every class within its published bound"
+  done
+  "$out-tests" --no-intro -tce="*NaN or inf*,*overflowing light sum*" | tail -n 2
+  for case in 1 2; do
+    if "$cxx" -std=c++20 -fsyntax-only -ffast-math -Iinclude -DPHONG_REJECT_CASE=$case tests/nan_policy/fast_math_reject.cpp 2>"$out-reject.txt"; then
+      echo "$cxx -ffast-math: the twofold route compiled (case $case)"; exit 1
+    fi
+    grep -q -- "-fno-associative-math" "$out-reject.txt"
+  done
+  echo "$cxx -ffast-math: the stable mode's twofold route refuses the build, naming -fno-associative-math"
+done
