@@ -27,6 +27,11 @@ namespace detail {
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_HD constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
+#if defined(__CUDA_ARCH__) // no long double in device code: constant evaluation happens on the host
+    (void)a;
+    (void)b;
+    return T(0);
+#else
     using W = long double;
     constexpr W max = std::numeric_limits<T>::max(), eps = std::numeric_limits<T>::epsilon();
     constexpr W threshold = max + max / (W(2) - eps) * eps / 2; // max = (2 - eps) 2^(e-1), ulp = eps 2^(e-1)
@@ -48,6 +53,7 @@ PHONG_HD constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const glm
         if (sum_inf == 0) sum = W(T(s));
     }
     return sum_inf > 0 ? std::numeric_limits<T>::infinity() : sum_inf < 0 ? -std::numeric_limits<T>::infinity() : T(0);
+#endif
 }
 } // namespace detail
 
