@@ -1,6 +1,5 @@
 // phong: the stable mode on float SIMD lanes (shade_batch<F> with F.mode = evaluation::stable and
 // float points on x86): the geometry of every pair in double lanes, the power and the sums in float.
-// Included by phong/batch.hpp once xsimd is in.
 // SPDX-License-Identifier: MIT
 //
 // Why double, and why only the geometry: float inputs fit double with room to spare. |d|^2 of a
@@ -21,21 +20,25 @@
 // route's (accuracy::bounds<stable, float, twofold>), tests/batch_accuracy.test.cpp.
 #pragma once
 
-#include "../direction.hpp"
-#include "../specular.hpp"
-#include "light_terms.hpp"
-#include "twofold.hpp"
+#include "backend.hpp"
+#include "lanes_power.hpp"
+#include "math_traits.hpp"
+#include "../../direction.hpp"
+#include "../../specular.hpp"
+#include "../light_terms.hpp"
+#include "../twofold.hpp"
 
 #include <limits>
 #include <type_traits>
 
 #if PHONG_HAS_XSIMD && defined(__SSE2__)
 #  include <immintrin.h>
-#  include "lanes_power.hpp"
 #  define PHONG_STABLE_LANES 1
 #else
 #  define PHONG_STABLE_LANES 0
 #endif
+
+#include "diagnostics_push.hpp"
 
 namespace phong::detail::stable_lanes {
 
@@ -324,3 +327,5 @@ inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const ligh
 #endif
 
 } // namespace phong::detail::stable_lanes
+
+#include "diagnostics_pop.hpp"
