@@ -33,7 +33,7 @@
 // included, but for grazing_specular: a specular term far from its peak that outweighs a diffuse
 // term at n.l ~ 1e-6 carries the power's own error, about |m log2 c| u (c: its cosine), measured
 // p99 <= 9.3 and max <= 40 ulp (bound 20 / 90 ulp, 6e-6 in float). Float SIMD batches on x86
-// run the geometry in double lanes (detail/stable_lanes.hpp) and are held to the same twofold
+// run the geometry in double lanes (detail/simd/stable_lanes.hpp) and are held to the same twofold
 // bounds (tests/batch_accuracy.test.cpp).
 #pragma once
 
@@ -197,7 +197,7 @@ struct pair_conditioning {
 };
 
 /// Which x^m the exact mode runs: shade<F>'s scalar kernel (detail/power.hpp), or shade_batch's
-/// SIMD lanes (float: detail/lanes_power.hpp's polynomial, whose error grows with |m log2 x|).
+/// SIMD lanes (float: detail/simd/lanes_power.hpp's polynomial, whose error grows with |m log2 x|).
 /// The rest of the derivation holds for both: the lanes' reciprocal square roots (AVX-512's
 /// estimate and one Newton step, 1.6 u; baseline SSE2 and double lanes: 1 / sqrt) are within the
 /// scalar path's two roundings of a square root and a division. AVX2 float lanes (estimate error
@@ -231,7 +231,7 @@ constexpr double rho_of(const pair_conditioning& k) { return 1 + 2 * k.w_ratio; 
 template <class T> constexpr double nl_absolute(const pair_conditioning& k) { return g<T>(10 + rho_of(k)); }
 template <class T> constexpr double attenuation_error(const pair_conditioning& k) { return k.attenuated ? g<T>(2 * rho_of(k) + 15) : 0; }
 /// The relative error of the power kernel for base >= lo: the scalar kernel's documented bound
-/// (detail/power.hpp), or for float SIMD lanes (shade_batch) detail/lanes_power.hpp's
+/// (detail/power.hpp), or for float SIMD lanes (shade_batch) detail/simd/lanes_power.hpp's
 /// (3.5 |y| + 2.5) u with y = m log2(base) capped at 150 (below 2^-150 the term is 0 in float and
 /// the absolute allowance covers it). Double lanes (xsimd's exp(m log x)) are held to the scalar
 /// kernel's bound, which tests/lanes_power.test.cpp checks for them.

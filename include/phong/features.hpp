@@ -79,7 +79,7 @@ enum class evaluation : unsigned char { exact, stable, fast };
 /// arithmetic with power-of-two rescaled vectors and twofold unit vectors, n.l and chords
 /// (detail/twofold.hpp); for GPU code, where double runs at a fraction of float's rate. Float SIMD
 /// batches on x86 (shade_batch) read neither: their geometry runs in double lanes and the power
-/// in float (detail/stable_lanes.hpp), held to the twofold bounds; steps with a shininess above
+/// in float (detail/simd/stable_lanes.hpp), held to the twofold bounds; steps with a shininess above
 /// 2^20 in any lane take the twofold route.
 enum class stable_precision : unsigned char { wider, twofold };
 

@@ -227,7 +227,7 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 /// The specular power of add_specular: detail::cosine_power, or in the fast mode fast::pow_unit of
 /// the same clamped cosine (SIMD lanes with one integer shininess m <= fast::pow_integer_max_exponent:
 /// fast::pow_integer, within the same bound). Float SIMD lanes keep cosine_power: the exact mode's power there already
-/// is a polynomial kernel of the same cost (detail/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
+/// is a polynomial kernel of the same cost (detail/simd/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
 /// fast::pow_unit_max_rel where x^m >= 2^-24); measured, fast::pow_unit made the batch rows 5-15 % slower.
 template <evaluation M, class T>
 PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)

@@ -25,7 +25,7 @@
 
 namespace phong::detail {
 
-/// Whether shade_batch runs F on lanes V through detail/stable_lanes.hpp (the stable mode on
+/// Whether shade_batch runs F on lanes V through detail/simd/stable_lanes.hpp (the stable mode on
 /// float lanes of x86).
 template <features F, class V> inline constexpr bool stable_lanes_route =
 #if PHONG_STABLE_LANES
@@ -101,7 +101,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
     using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
 #if PHONG_STABLE_LANES
     if constexpr (stable_lanes_route<F, V>) {
-        // The stable mode's geometry in double lanes (detail/stable_lanes.hpp), unless a lane's
+        // The stable mode's geometry in double lanes (detail/simd/stable_lanes.hpp), unless a lane's
         // shininess is above that route's limit: then the twofold route below.
         if (!xsimd::any(mat.shininess > V(stable_lanes::max_shininess))) {
             for (std::size_t k = 0; k < steps; ++k) {

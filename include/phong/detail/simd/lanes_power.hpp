@@ -142,7 +142,7 @@ constexpr double pow_one_minus_lanes_error(double y)
 
 /// c^m = (1 - x)^m lane-wise from both forms of a cosine c in [0, 1]: its complement x = 1 - c and
 /// c itself, each a float of its own (the stable mode's r.v or n.h, computed in double and rounded
-/// twice: detail/stable_lanes.hpp), m >= 0 finite. As 2^(m log2 c): where c >= sqrt(1/2) the
+/// twice: detail/simd/stable_lanes.hpp), m >= 0 finite. As 2^(m log2 c): where c >= sqrt(1/2) the
 /// polynomial takes t = -x itself (log2(1 + t) = t P(t): no rounding of 1 - x, so a highlight's
 /// tiny x keeps its relative accuracy, as log1p does); below, c is split like pow_unit's base, so
 /// a small c keeps its relative accuracy too (1 - x rounded would leave it an absolute error of

@@ -115,7 +115,7 @@ struct math_traits<xsimd::batch<T, A>> {
         return xsimd::select(x > V(T(0)), p, xsimd::select(y == V(T(0)), V(T(1)), V(T(0))));
     }
     /// x^m for x in [0, 1], m >= 0 (the specular and spot powers of the exact mode). Float lanes:
-    /// detail/lanes_power.hpp's polynomial kernel, relative error <= (3.5 |m log2 x| + 2.5) u
+    /// detail/simd/lanes_power.hpp's polynomial kernel, relative error <= (3.5 |m log2 x| + 2.5) u
     /// (detail::lanes::pow_unit_lanes_error); double lanes: pow above.
     PHONG_LANES_INLINE static V pow_unit(const V& x, const V& m)
     {
@@ -130,13 +130,13 @@ struct math_traits<xsimd::batch<T, A>> {
         else return pow(x, m);
     }
     /// Float lanes: x^m for x in [0, 1] and 0 <= m <= 2^100 where x > 0 or m = 0; other lanes
-    /// unspecified (finite), for the caller to select away (detail/lanes_power.hpp's pow_unit_positive).
+    /// unspecified (finite), for the caller to select away (detail/simd/lanes_power.hpp's pow_unit_positive).
     template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
     PHONG_LANES_INLINE static V pow_unit_positive(const V& x, const V& m) { return detail::lanes::pow_unit_positive(x, m); }
     /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
     /// xsimd's kernels (exp clamped as above: m log1p(-x) reaches -1e30 and below for the
     /// shininess validate accepts); x >= 1 gives 0, and 1 for m = 0.
-    /// Float lanes: detail/lanes_power.hpp's polynomial kernel (log2(1 - x) from t = -x itself near
+    /// Float lanes: detail/simd/lanes_power.hpp's polynomial kernel (log2(1 - x) from t = -x itself near
     /// x = 0), relative error <= (6.5 |m log2(1 - x)| + 2.5) u (pow_one_minus_lanes_error).
     PHONG_LANES_INLINE static V pow_one_minus(const V& x, const V& m)
     {

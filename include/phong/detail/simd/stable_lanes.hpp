@@ -294,7 +294,7 @@ inline half_terms<D> half_light(const half_frame<D, Q>& s, const light<double, Q
 
 /// The specular power c^m of a step in float lanes: x and c rounded to float apiece (each keeps its
 /// relative accuracy where the kernel reads it: x near a highlight, c far from it), then
-/// detail/lanes_power.hpp's pow_cosine.
+/// detail/simd/lanes_power.hpp's pow_cosine.
 template <class V, class D> inline V power(const half_terms<D>& lo, const half_terms<D>& hi, const V& m)
 {
     return detail::lanes::pow_cosine(xsimd::max(join<V>(lo.x, hi.x), V(0.0f)), join<V>(lo.c, hi.c), m);
