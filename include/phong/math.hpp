@@ -58,6 +58,14 @@ PHONG_HD constexpr V dekker_fma(const V& a, const V& b, const V& c)
     return (p + c) + e;
 }
 
+/// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b). Any rounding to
+/// nearest, no condition on |a| and |b|.
+template <class T> PHONG_HD constexpr T two_sum_error(T a, T b, T hi)
+{
+    const T bb = hi - a;
+    return (a - (hi - bb)) + (b - bb);
+}
+
 } // namespace detail
 
 /// Customization point: how phong evaluates its scalar kernels on the number type V.

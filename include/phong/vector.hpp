@@ -43,9 +43,8 @@ PHONG_HD constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<
     for (glm::length_t k = 1; k < L; ++k) {
         const T h = a[k] * b[k];
         const T r = phong::fma(a[k], b[k], -h);
-        const T s = p + h; // TwoSum(p, h) = s + q exactly
-        const T bp = s - p;
-        const T q = (p - (s - bp)) + (h - bp);
+        const T s = p + h;
+        const T q = detail::two_sum_error(p, h, s); // p + h = s + q exactly
         p = s;
         err += q + r;
     }

@@ -36,12 +36,7 @@ template <class T> PHONG_HD constexpr T rounded_product(T a, T b)
 #endif
 }
 
-/// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b).
-template <class T> PHONG_HD constexpr T two_sum_error(T a, T b, T hi)
-{
-    const T bb = hi - a;
-    return (a - (hi - bb)) + (b - bb);
-}
+// two_sum_error(a, b, hi): math.hpp (TwoSum, shared with dot_compensated).
 
 /// a - b = hi + lo exactly (TwoSum on a + (-b)); returns lo for hi = fl(a - b).
 template <class T> PHONG_HD constexpr T difference_error(T a, T b, T hi)
