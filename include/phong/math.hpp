@@ -44,18 +44,26 @@ inline constexpr int constexpr_tolerance_ulp = 2;
 
 namespace detail {
 
+/// The error e of the product p = fl(a * b): a * b = p + e exactly (Veltkamp's split of a and b
+/// into halves of (digits + 1) / 2 bits, Dekker's product), for |a|, |b| below max / 2^((digits +
+/// 3) / 2) (the split overflows above) and e not subnormal. S is the lane type of V.
+template <class V, class S = V>
+PHONG_HD constexpr V dekker_product_error(const V& a, const V& b, const V& p)
+{
+    const V split = V(S((1ull << ((std::numeric_limits<S>::digits + 1) / 2)) + 1));
+    const V ca = split * a, ah = ca - (ca - a), al = a - ah;
+    const V cb = split * b, bh = cb - (cb - b), bl = b - bh;
+    return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
+
 /// a*b + c with the product exact (Veltkamp split, Dekker's product), then two additions: exact
 /// whenever c = -fl(a*b) (the error-free products phong relies on), else within 1 ulp. For
 /// constant evaluation and for SIMD targets without an FMA instruction. S is the lane type of V.
 template <class V, class S = V>
 PHONG_HD constexpr V dekker_fma(const V& a, const V& b, const V& c)
 {
-    const V split = V(S((1ull << ((std::numeric_limits<S>::digits + 1) / 2)) + 1));
-    const V ca = split * a, ah = ca - (ca - a), al = a - ah;
-    const V cb = split * b, bh = cb - (cb - b), bl = b - bh;
     const V p = a * b;
-    const V e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-    return (p + c) + e;
+    return (p + c) + dekker_product_error<V, S>(a, b, p);
 }
 
 /// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b). Any rounding to

@@ -77,8 +77,9 @@ template <class V> PHONG_LANES_INLINE V fma(const V& a, const V& b, const V& c)
     return split_fma(a, b, c);
 }
 
-/// Dekker's product a * b = p + e exactly, then (p + c) + e: exact whenever c = -fl(a * b)
-/// (the error-free products of the stable mode), else within 1 ulp. Veltkamp's split forms
+/// Dekker's product a * b = p + e exactly (detail::dekker_product_error, math.hpp), then
+/// (p + c) + e: exact whenever c = -fl(a * b) (the error-free products of the stable mode), else
+/// within 1 ulp. Veltkamp's split forms
 /// (2^h + 1) x (h = 12 for float, 27 for double), which overflows for |x| above
 /// max / 2^(h + 1) (8.3e34 in float, 1.1e300 in double): the error term would be inf - inf = NaN
 /// (the stable mode would lose the view vector of a point at |Q| = 1e38 in float, where the
@@ -90,15 +91,11 @@ template <class V> PHONG_LANES_INLINE V split_fma(const V& a, const V& b, const 
     using T = typename V::value_type;
     constexpr int h = (std::numeric_limits<T>::digits + 1) / 2;
     const V limit(std::numeric_limits<T>::max() / T(1ull << (h + 1)));
-    const V down(T(1) / T(1ull << (h + 1))), up(T(1ull << (h + 1))), one(T(1)), splitter(T((1ull << h) + 1));
+    const V down(T(1) / T(1ull << (h + 1))), up(T(1ull << (h + 1))), one(T(1));
     const auto big_a = xsimd::abs(a) > limit, big_b = xsimd::abs(b) > limit;
     const V as = xsimd::select(big_a, a * down, a), bs = xsimd::select(big_b, b * down, b);
     const V scale = xsimd::select(big_a, up, one) * xsimd::select(big_b, up, one);
-    const V ca = splitter * as, ah = ca - (ca - as), al = as - ah;
-    const V cb = splitter * bs, bh = cb - (cb - bs), bl = bs - bh;
-    const V ps = as * bs;
-    const V es = ((ah * bh - ps) + ah * bl + al * bh) + al * bl;
-    return (a * b + c) + es * scale;
+    return (a * b + c) + detail::dekker_product_error<V, T>(as, bs, as * bs) * scale;
 }
 
 } // namespace detail::simd
