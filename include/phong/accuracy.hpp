@@ -91,9 +91,9 @@ PHONG_HD constexpr const char* name(input_class c)
 /// Finite input never gives NaN or inf (except non_finite, whose policy is NaN in every channel;
 /// its bound is +inf).
 struct bound {
-    double p99_ulp;
-    double max_ulp;
-    double max_rel;
+    double p99_ulp; ///< 99th percentile of the error, in ulp of the exact value
+    double max_ulp; ///< the largest error in ulp
+    double max_rel; ///< the largest relative error (absolute where exact = 0)
 };
 
 /// The feature set the bounds are measured with: scene ambient, diffuse, the specular model S
@@ -349,10 +349,14 @@ template <class T> constexpr double exact_absolute_allowance(int lights, double 
 /// where n.v > 0), and kd = 0 where !diffuse, ks = 0 where !specular. `drops`: the class is built
 /// so that the exact mode drops a vector (bound 1); otherwise every squared length is in range.
 struct exact_limits {
-    bool drops = false;
-    int lights = 1;
-    double m = 200, nl = 0.05, nv = 0.05, c = 0.5;
-    bool diffuse = true, specular = true;
+    bool drops = false;  ///< the class makes the exact mode drop a vector (bound 1)
+    int lights = 1;      ///< at most this many lights
+    double m = 200;      ///< the largest shininess
+    double nl = 0.05;    ///< the least |n.l| of a lit pair
+    double nv = 0.05;    ///< the least |n.v|
+    double c = 0.5;      ///< the least specular cosine (or at most -c / 100)
+    bool diffuse = true; ///< kd may be nonzero
+    bool specular = true; ///< ks may be nonzero
     bool blinn_cancels = false; ///< Blinn's l = -v bit for bit (blinn_opposite): its term is 0
 };
 

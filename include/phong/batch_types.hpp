@@ -14,11 +14,16 @@ namespace phong {
 
 /// Three parallel arrays x, y, z of the same length (structure of arrays).
 template <class T> struct soa3 {
-    std::span<const T> x, y, z;
+    std::span<const T> x; ///< the x components
+    std::span<const T> y; ///< the y components
+    std::span<const T> z; ///< the z components
 };
 /// Output colour channels, structure of arrays. a is written only when F.alpha.
 template <class T> struct soa_rgba {
-    std::span<T> r, g, b, a;
+    std::span<T> r; ///< red
+    std::span<T> g; ///< green
+    std::span<T> b; ///< blue
+    std::span<T> a; ///< alpha (F.alpha only; else may be empty)
 };
 
 /// The points of one shade_batch call, structure of arrays: a renderer's per-point inputs in
@@ -32,22 +37,22 @@ template <class T> struct soa_rgba {
 ///          empty: every light visible everywhere. Lights past the 64th are seen by no point
 ///          when masks are given (as phong::masked).
 template <class T> struct soa_points {
-    soa3<T> positions;
-    soa3<T> normals;
-    soa3<T> views{};
-    std::span<const bool> front_facing{};
-    std::span<const std::uint64_t> light_masks{};
+    soa3<T> positions;                            ///< N points
+    soa3<T> normals;                              ///< their N normals
+    soa3<T> views{};                              ///< N view vectors (view_model::given only)
+    std::span<const bool> front_facing{};         ///< N flags (facing::flag only); empty: all front-facing
+    std::span<const std::uint64_t> light_masks{}; ///< N light masks; empty: every light visible
 };
 
 /// The same, array of structures: a ray tracer's hit records as glm vectors
 /// (std::vector<glm::vec3> converts), loaded into lanes per step with a small transpose, so
 /// nothing needs repacking. Fields as soa_points; N = positions.size().
 template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
-    std::span<const glm::vec<3, T, Q>> positions;
-    std::span<const glm::vec<3, T, Q>> normals;
-    std::span<const glm::vec<3, T, Q>> views{};
-    std::span<const bool> front_facing{};
-    std::span<const std::uint64_t> light_masks{};
+    std::span<const glm::vec<3, T, Q>> positions; ///< N points
+    std::span<const glm::vec<3, T, Q>> normals;   ///< their N normals
+    std::span<const glm::vec<3, T, Q>> views{};   ///< N view vectors (view_model::given only)
+    std::span<const bool> front_facing{};         ///< N flags (facing::flag only); empty: all front-facing
+    std::span<const std::uint64_t> light_masks{}; ///< N light masks; empty: every light visible
 };
 
 /// Materials as a renderer keeps them: a table (a scene's materials) and one index into it per
@@ -64,8 +69,8 @@ template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
 /// table. Edge: an id past the table takes its last entry (memory-safe in release builds);
 /// an empty table shades nothing (every build).
 template <class T, glm::qualifier Q = glm::defaultp> struct material_table {
-    std::span<const material<T, Q>> materials;
-    std::span<const std::uint32_t> ids;
+    std::span<const material<T, Q>> materials; ///< the table
+    std::span<const std::uint32_t> ids;        ///< one index into the table per point
 };
 
 } // namespace phong

@@ -37,9 +37,12 @@ namespace phong::fast {
 template <class V, class Enable = void>
 struct lanes {
     static_assert(std::is_same_v<V, float> || std::is_same_v<V, double>, "phong::fast: no lanes<V> for this type");
-    using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>;
+    using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>; ///< V's bits as an unsigned integer
+    /// The bits of x.
     PHONG_HD static constexpr bits_t bits(V x) { return std::bit_cast<bits_t>(x); }
+    /// The V whose bits are u.
     PHONG_HD static constexpr V from_bits(bits_t u) { return std::bit_cast<V>(u); }
+    /// a * b + c (contracted to an fma where the compiler does).
     PHONG_HD static constexpr V madd(V a, V b, V c) { return a * b + c; }
 };
 

@@ -82,9 +82,10 @@ template <class T> PHONG_HD constexpr T two_sum_error(T a, T b, T hi)
 template <class V, class Enable = void>
 struct math_traits {
     static_assert(std::is_floating_point_v<V>, "phong: no math_traits for this number type");
-    using scalar = V;
-    using mask = bool;
+    using scalar = V; ///< the type of one lane (V itself)
+    using mask = bool; ///< the result of a comparison of V
 
+    /// The correctly rounded square root (IEEE); constant evaluation: detail::ce::sqrt.
     PHONG_HD static constexpr V sqrt(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::sqrt(x));
@@ -116,21 +117,25 @@ struct math_traits {
         if (std::is_constant_evaluated() && x == V(0)) return std::numeric_limits<V>::infinity();
         return V(1) / sqrt(x);
     }
+    /// e^x (std::exp; constant evaluation: detail::ce::exp).
     PHONG_HD static constexpr V exp(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::exp(x));
         return std::exp(x);
     }
+    /// The natural logarithm (std::log; constant evaluation: detail::ce::log).
     PHONG_HD static constexpr V log(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log(x));
         return std::log(x);
     }
+    /// log(1 + x), accurate for small x (std::log1p; constant evaluation: detail::ce::log1p).
     PHONG_HD static constexpr V log1p(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log1p(x));
         return std::log1p(x);
     }
+    /// x^y (std::pow; constant evaluation: detail::ce::pow).
     PHONG_HD static constexpr V pow(V x, V y)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::pow(x, y));
@@ -162,12 +167,19 @@ struct math_traits {
         }
         return std::fma(a, b, c);
     }
+    /// a where m, else b.
     PHONG_HD static constexpr V select(bool m, V a, V b) { return m ? a : b; }
+    /// Whether any lane of m is set (one lane here).
     PHONG_HD static constexpr bool any(bool m) { return m; }
+    /// a and b, lane-wise.
     PHONG_HD static constexpr bool both(bool a, bool b) { return a && b; }
+    /// Whether every lane of m is set (one lane here).
     PHONG_HD static constexpr bool all(bool m) { return m; }
+    /// |x|, with abs(-0) = +0.
     PHONG_HD static constexpr V abs(V x) { return x < 0 ? -x : (x == 0 ? V(0) : x); }
+    /// The smaller of a and b (b where b < a: a NaN in a is returned, one in b is not).
     PHONG_HD static constexpr V min(V a, V b) { return b < a ? b : a; }
+    /// The larger of a and b (b where a < b: a NaN in a is returned, one in b is not).
     PHONG_HD static constexpr V max(V a, V b) { return a < b ? b : a; }
 
     /// A power of two 2^-e such that |x| * 2^-e lies in [1, 2) for normal x, clamped to stay a

@@ -40,11 +40,11 @@ using color = std::conditional_t<F.alpha, glm::vec<4, T, Q>, glm::vec<3, T, Q>>;
 /// s_i; alpha the material's alpha. For a point with NaN or inf input every term is NaN.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct shading_terms {
-    glm::vec<3, T, Q> emission;
-    glm::vec<3, T, Q> ambient;
-    glm::vec<3, T, Q> diffuse;
-    glm::vec<3, T, Q> specular;
-    T alpha;
+    glm::vec<3, T, Q> emission; ///< the material's emission
+    glm::vec<3, T, Q> ambient;  ///< ka (La + sum_i f_i La_i)
+    glm::vec<3, T, Q> diffuse;  ///< kd sum_i f_i Ld_i max(n.l_i, 0)
+    glm::vec<3, T, Q> specular; ///< ks sum_i f_i Ls_i s_i
+    T alpha;                    ///< the material's alpha
     /// emission + ambient + diffuse + specular, in that order.
     PHONG_HD constexpr glm::vec<3, T, Q> sum() const { return emission + ambient + diffuse + specular; }
 };
