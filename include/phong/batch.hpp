@@ -1,6 +1,6 @@
 // phong: batch shading, shade_batch<F>. The same templates as the scalar path (detail::prepare,
-// add_lights in detail/route.hpp, finish in shade.hpp), instantiated on a SIMD batch type, over
-// structure-of-arrays or array-of-structures points.
+// add_lights in detail/route.hpp, finish in shading_terms.hpp), instantiated on a SIMD batch type,
+// over structure-of-arrays or array-of-structures points.
 // SPDX-License-Identifier: MIT
 //
 // The layers, each including only the ones below it (docs/batch.md, "Source layout"):
