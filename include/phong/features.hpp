@@ -104,11 +104,10 @@ struct features {
     /// Stable mode with twofold precision only: 0 (the default) carries every pair twofold, the accuracy that
     /// phong/accuracy.hpp publishes. M > 0 rounds each component once for pairs with shininess
     /// m <= M (Blinn: unless l + v nearly cancels), less than half the cost, at an error that
-    /// grows like sqrt(m) eps. With M = 256, float, 2000 scenes per input class against __float128
-    /// (tests/stable_hybrid.test.cpp): well-conditioned p99 2.6 ulp, max 16 ulp; worst class max
-    /// 50 ulp, max relative 3.5e-6; every target of the stable mode met. Higher m stays twofold.
-    /// Not read by float SIMD batches on x86 (their double-lane route is faster and more accurate
-    /// than either depth) but for steps with m above 2^20, which take the twofold route.
+    /// grows like sqrt(m) eps (figures: docs/accuracy.md, tests/stable_hybrid.test.cpp); every
+    /// target of the stable mode is met. Higher m stays twofold.
+    /// Not read by float SIMD batches on x86 (their double-lane route is more accurate than
+    /// either depth) but for steps with m above 2^20, which take the twofold route.
     unsigned stable_twofold_above = 0;
     /// The normal (and, for view_model::given, the view vector) come at unit length: used as
     /// given, with no normalization and no length guards (checked in debug builds). For the

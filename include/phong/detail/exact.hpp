@@ -228,7 +228,7 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 /// the same clamped cosine (SIMD lanes with one integer shininess m <= fast::pow_integer_max_exponent:
 /// fast::pow_integer, within the same bound). Float SIMD lanes keep cosine_power: the exact mode's power there already
 /// is a polynomial kernel of the same cost (detail/simd/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
-/// fast::pow_unit_max_rel where x^m >= 2^-24); measured, fast::pow_unit made the batch rows 5-15 % slower.
+/// fast::pow_unit_max_rel where x^m >= 2^-24), and fast::pow_unit was slower there (docs/batch.md).
 template <evaluation M, class T>
 PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
 {
@@ -375,8 +375,8 @@ PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x,
         // The fast power x^n, n >= 1, of the base c zeroed where the lane is off or c <= 0 (then
         // its power is 0): the mask goes into the product that forms the base, and max(c, 0) in
         // place of a compare (on AVX-512 a compare takes a multiplier slot, a max does not) and of
-        // a skip of the steps with no c > 0: every step pays the power, measured 2 % faster at 16
-        // lights all the same (fast Phong, AVX-512). The sum gains +0 where it skipped: the same
+        // a skip of the steps with no c > 0: every step pays the power (faster all the same:
+        // docs/batch.md). The sum gains +0 where it skipped: the same
         // bits. The base is not clamped to 1: lanes that are on have unit n, d / |d| and v, so
         // c <= 1 up to its rounding error, which c^n amplifies by n with or without a clamp
         // (accuracy.hpp's fast bound), and c^n stays finite (|c| <= 3 |d| for unit vectors); c is
@@ -531,8 +531,8 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     // Scalars with separate sums (light_sums): the diffuse term is added after the specular one,
     // the same bits in either order, so that a light colour read for both terms (an adaptor
     // returning one field as diffuse and specular) is not held in registers across the power
-    // (g++ 12 then spilled: 6 % slower per point). SIMD lanes and one sum (folded_sums): diffuse
-    // first (SIMD lanes measured slower the other way: the ray tracer's batch, 1 light).
+    // (g++ 12 spills it). SIMD lanes and one sum (folded_sums): diffuse first (the faster order
+    // there; docs/batch.md).
     constexpr bool diffuse_last = std::is_floating_point_v<T> && std::is_same_v<Sums<T, Q>, light_sums<T, Q>>;
     if constexpr (F.diffuse && !diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
     // Phong with the fast integer power (n >= 1): a point without a view vector has v = 0, so its

@@ -138,7 +138,7 @@ PHONG_LANES_INLINE void each_visible_light(Sums& sums, std::size_t light_count, 
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     // Without masks every lane sees every light: the same loop (one call site of add_light, which
     // the compiler then inlines; with a second loop for this case g++ 12 kept add_light out of
-    // line: 9 % more instructions in shade_lanes with masks, AVX2, 1 light).
+    // line).
     const std::uint32_t live = count >= W ? std::uint32_t((std::uint64_t(1) << W) - 1) : std::uint32_t((1u << count) - 1);
     const lane_visibility<V, T> visibility(bits);
     const std::size_t n = bits ? std::min<std::size_t>(light_count, 64) : light_count;
@@ -171,8 +171,7 @@ PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s,
         if constexpr (std::is_same_v<Exponent, exact::integer_exponent<V>> && F.specular == specular_model::phong) {
             // The fast mode's integer shininess n = 2^K (plan.chain = K + 1, K <= 6), no masks: the
             // light loop with K known, its power K squarings with no jump per pair; the same bits.
-            // Measured (phong_batch_ratio fast, AVX-512): Phong 2 % faster at 16 lights, 6 % at 1;
-            // Blinn 1 to 8 % slower, so it keeps the jump.
+            // Phong only: Blinn was slower so (docs/batch.md).
             if (!bits) {
                 const auto each_light = [&](const auto& fixed) {
                     for (std::size_t j = 0; j < lights.size(); ++j) detail::add_light<F>(sums, s, lights[j], fixed);

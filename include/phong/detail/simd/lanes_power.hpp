@@ -2,9 +2,9 @@
 // of shade_batch's exact mode (math_traits<xsimd::batch<float>>::pow_unit, math_traits.hpp).
 // SPDX-License-Identifier: MIT
 //
-// Why not exp(m log x) with xsimd's kernels (what double lanes use): their log divides (vdivps: one
-// per 6 cycles on Zen 4), both handle special values the model never passes, and together they
-// were a third of the lit pair's instructions. This is straight-line code, no division, no table:
+// Why not exp(m log x) with xsimd's kernels (what double lanes use): their log divides, and both
+// handle special values the model never passes (their cost: docs/batch.md). This is straight-line
+// code, no division, no table:
 //   x = 2^e f, f in [sqrt(1/2), sqrt(2)), by integer arithmetic on the bits (exact);
 //   log2 x = e + t P(t), t = f - 1 (exact), P of degree 8 (a Chebyshev fit of log2(1 + t) / t,
 //     truncation 3.0e-8 = 0.5 u relative; u = 2^-24);

@@ -19,8 +19,7 @@ namespace phong {
 /// math_traits for xsimd batches: every kernel of math.hpp, lane-wise. exp, log and log1p are
 /// xsimd's (vectorized, within a few ulp); float rsqrt is the hardware estimate refined by one
 /// Newton step; fma is the fused instruction. pow is exp(y log x) restricted to x >= 0 with IEEE's
-/// pow(0, 0) = 1 (xsimd's own pow returns 0 there). Domain-specific cephes-style exp/log kernels
-/// were tried: fewer instructions, but twice the time in the shading loop on this CPU.
+/// pow(0, 0) = 1 (xsimd's own pow returns 0 there).
 template <class T, class A>
 struct math_traits<xsimd::batch<T, A>> {
     using V = xsimd::batch<T, A>;

@@ -151,7 +151,7 @@ template <class D> inline D inverse_length(const D& dd)
 /// least step over the longest float vector) and a nonzero component of l + v at least an ulp of
 /// that, 2^-331: a nonzero |l + v|^2 is above 2^-662, far inside double's normal range, and at
 /// most 4, so 1/|l + v| is inverse_length's, bit for bit, with one test instead of two and no
-/// select of the input (Blinn's stable lanes, K = 16: 5 % faster).
+/// select of the input.
 template <class D> inline D inverse_length_of_float_difference(const D& dd)
 {
     return xsimd::select(dd > D(0.0), rsqrt_normal(dd), D(0.0));
