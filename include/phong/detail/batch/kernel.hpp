@@ -62,113 +62,39 @@ inline constexpr bool in_place_steps = points_in_place<Points, V, T, Q> && colou
 template <features F, class Points, class Output, class V, class T, glm::qualifier Q>
 inline constexpr std::size_t call_steps = in_place_steps<F, Points, Output, V, T, Q> ? steps_per_call : block_steps_per_call;
 
-/// The loop over `steps` steps from step `first` of the stream: step k's lanes in, its colour
-/// (shade_step(lanes, step_bits, k)) out. Step k's colour is stored after step k + 1's lanes are
-/// loaded, so that the store cannot hold up those loads where the spans share their offset in a
-/// page (docs/batch.md). Masks: light masks given (step k's: bits + k W); Flags: test io's layout
-/// flags per step (step_stream::lanes).
-template <features F, class V, class T, glm::qualifier Q, bool Masks, bool Flags, class ShadeStep>
-PHONG_LANES_INLINE void step_loop(const step_stream<V, T>& io, std::size_t first, std::size_t steps, const std::uint64_t* bits,
-                                  const ShadeStep& shade_step)
+#if PHONG_STABLE_LANES
+/// The stable mode's steps on float lanes (detail/simd/stable_lanes.hpp): the geometry of every
+/// pair in double lanes (wide_lights: the lights in double), the power and the sums in float;
+/// arguments as shade_lanes'.
+template <features F, class V, class T, glm::qualifier Q, bool Folded>
+PHONG_LANES_INLINE void shade_stable_steps(const step_stream<V, T>& io, std::size_t first, std::size_t steps, const material<V, Q>& mat,
+                                           std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
+                                           const environment<V, Q>& env, const std::uint64_t* bits, std::size_t count)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
-    color<F, V, Q> pending;
-    for (std::size_t k = 0; k < steps; ++k) {
-        const std::uint64_t* step_bits = Masks ? bits + k * W : nullptr;
-        const step_lanes<V, Q> in = io.template lanes<F, Q, Flags>(first + k);
-        if (k > 0) io.template put<F, Q, Flags>(first + k - 1, pending);
-        pending = shade_step(in, step_bits, k);
-    }
-    if (steps > 0) io.template put<F, Q, Flags>(first + steps - 1, pending);
-}
-
-/// step_loop in one of four compiled loops, masks or none and layout flags tested or not, so
-/// that a call without masks and SoA steps test nothing per step. make_step.template
-/// operator()<Masks>() gives the step function of step_loop.
-template <features F, class V, class T, glm::qualifier Q, class MakeStep>
-PHONG_LANES_INLINE void run_steps(const step_stream<V, T>& io, std::size_t first, std::size_t steps, const std::uint64_t* bits,
-                                  const MakeStep& make_step)
-{
-    const auto loop = [&]<bool Masks, bool Flags>() {
-        step_loop<F, V, T, Q, Masks, Flags>(io, first, steps, bits, make_step.template operator()<Masks>());
-    };
-    if constexpr (aos_in_registers<V, T, Q>) {
-        if (io.aos_in || io.interleaved_out) {
-            if (bits) loop.template operator()<true, true>();
-            else loop.template operator()<false, true>();
-            return;
-        }
-    }
-    if (bits) loop.template operator()<true, false>();
-    else loop.template operator()<false, false>();
-}
-
-/// The sums a step starts from: zero, or (Folded) the colour's point-independent part, poisoned
-/// where the point's input is not finite (finish(folded_sums) reads the poison from the start).
-template <bool Folded, class V, glm::qualifier Q, class Frame>
-PHONG_LANES_INLINE std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>> starting_sums(const environment<V, Q>& env,
-                                                                                                  const Frame& s)
-{
-    std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>> sums{};
-    if constexpr (Folded) sums.total = env.ambient + s.poison;
-    return sums;
-}
-
-/// The feature set a step runs: F, or F without the lights' ambient terms where their sum is
-/// hoisted (one material folded into the lights, no masks: lane_environment added it).
-template <features F, bool Folded, bool Masks>
-inline constexpr features step_features = Folded && ambient_hoistable<F> && !Masks ? ambient_hoisted<F> : F;
-
-/// One step's colour by shade<F>'s templates: prepare, every visible light (add_masked_lights
-/// with the shininess m), finish with the material lanes mat.
-template <features F, class V, class T, glm::qualifier Q, bool Folded, bool Masks, class Exponent>
-PHONG_LANES_INLINE color<F, V, Q> shade_step(const step_lanes<V, Q>& in, const material<V, Q>& mat, const Exponent& m,
-                                             std::span<const light<V, Q>> lights, const environment<V, Q>& env,
-                                             const std::uint64_t* step_bits, std::size_t count)
-{
-    constexpr features G = step_features<F, Folded, Masks>;
-    const frame_t<F, V, Q> s = prepare<F>(in.position, in.normal, in.view, env, in.front);
-    auto sums = starting_sums<Folded>(env, s);
-    add_masked_lights<G, V, T, Q>(sums, s, lights, m, step_bits, count);
-    return finish<G>(sums, s, mat, env);
-}
-
-#if PHONG_STABLE_LANES
-/// One step's colour by the stable mode's float-lane route (detail/simd/stable_lanes.hpp): the
-/// geometry in double lanes (wide_lights: the lights in double), the power and sums in float.
-template <features F, class V, class T, glm::qualifier Q, bool Folded, bool Masks>
-PHONG_LANES_INLINE color<F, V, Q> shade_stable_step(const step_lanes<V, Q>& in, const material<V, Q>& mat,
-                                                    std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
-                                                    const environment<V, Q>& env, const std::uint64_t* step_bits, std::size_t count)
-{
-    constexpr features G = step_features<F, Folded, Masks>;
     using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
-    const stable_lanes::surface_frame<V, Q> s = stable_lanes::prepare<F>(in.position, in.normal, in.view, env, in.front);
-    Sums sums = starting_sums<Folded>(env, s);
-    each_visible_light<V, T>(sums, lights.size(), step_bits, count, [&](Sums& step_sums, std::size_t j) {
-        stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
-    });
-    return finish<G>(sums, s, mat, env);
+    for (std::size_t k = 0; k < steps; ++k) {
+        const std::uint64_t* step_bits = bits ? bits + k * W : nullptr;
+        const step_lanes<V, Q> in = io.template lanes<F, Q>(first + k);
+        const stable_lanes::surface_frame<V, Q> s = stable_lanes::prepare<F>(in.position, in.normal, in.view, env, in.front);
+        Sums sums{};
+        if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
+        const auto shade_step = [&]<features G>() {
+            each_visible_light<V, T>(sums, lights.size(), step_bits, count, [&](Sums& step_sums, std::size_t j) {
+                stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
+            });
+            io.template put<G, Q>(first + k, finish<G>(sums, s, mat, env));
+        };
+        if constexpr (Folded && ambient_hoistable<F>) {
+            if (!step_bits) {
+                shade_step.template operator()<ambient_hoisted<F>>();
+                continue;
+            }
+        }
+        shade_step.template operator()<F>();
+    }
 }
 #endif
-
-/// The shininess of a call's steps, decided once per call from mat: the fast mode's integer
-/// exponent where every lane has the same integer n >= 1 (its binary powering scheduled once),
-/// else exact::lane_shininess (m == 0 tested once), or the lanes as they are (stable mode, scalar
-/// lanes). Calls run(m) with it.
-template <features F, class V, class T, glm::qualifier Q, class Run>
-PHONG_LANES_INLINE void with_call_shininess(const material<V, Q>& mat, const Run& run)
-{
-    if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) {
-        // m = 0 (pow(0, 0) = 1 on every lane that is on) takes lane_shininess below.
-        const T m0 = mat.shininess.get(0);
-        if (m0 >= T(1) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
-            math_traits<V>::all(mat.shininess == V(m0)))
-            return run(exact::integer_exponent<V>::of(unsigned(m0)));
-    }
-    if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) run(shininess_lanes(mat.shininess));
-    else run(mat.shininess);
-}
 
 /// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
 /// steps from step `first` of the stream (its step first + k in, its colour first + k out). The
@@ -201,40 +127,79 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     const step_stream<V, T> io = stream; // a copy the colour stores cannot alias: its pointers stay in registers
+    using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
 #if PHONG_STABLE_LANES
     if constexpr (stable_lanes_route<F, V>) {
         // The stable mode's geometry in double lanes, unless a lane's shininess is above that
         // route's limit: then the twofold route below.
-        if (!xsimd::any(mat.shininess > V(stable_lanes::max_shininess))) {
-            return run_steps<F, V, T, Q>(io, first, steps, bits, [&]<bool Masks>() {
-                return [&](const step_lanes<V, Q>& in, const std::uint64_t* step_bits, std::size_t) {
-                    return shade_stable_step<F, V, T, Q, Folded, Masks>(in, mat, lights, wide_lights, env, step_bits, count);
-                };
-            });
-        }
+        if (!xsimd::any(mat.shininess > V(stable_lanes::max_shininess)))
+            return shade_stable_steps<F, V, T, Q, Folded>(io, first, steps, mat, lights, wide_lights, env, bits, count);
     }
 #else
     (void)wide_lights;
 #endif
-    with_call_shininess<F, V, T, Q>(mat, [&](const auto& call_m) {
-        run_steps<F, V, T, Q>(io, first, steps, bits, [&]<bool Masks>() {
-            return [&](const step_lanes<V, Q>& in, const std::uint64_t* step_bits, std::size_t k) -> color<F, V, Q> {
-                if constexpr (!Folded && std::is_same_v<std::decay_t<decltype(call_m)>, exact::lane_shininess<V>>) {
-                    // Per-step materials (exact mode): the step's shininess tested for 0 here. A
-                    // table's step looks its ids up here, in the loop, where their loads and a
-                    // mixed step's permutes overlap the shading of the steps around them.
-                    material_slot<V, Q> looked_up;
-                    const material<V, Q>& step_mat = table            ? *table->step(table_first + k * W, W, looked_up.lanes)
-                                                     : step_materials ? *step_materials[k]
-                                                                      : mat;
-                    exact::lane_shininess<V> m = call_m;
-                    if (table || step_materials) m = shininess_lanes(step_mat.shininess);
-                    return shade_step<F, V, T, Q, Folded, Masks>(in, step_mat, m, lights, env, step_bits, count);
-                }
-                return shade_step<F, V, T, Q, Folded, Masks>(in, mat, call_m, lights, env, step_bits, count);
-            };
-        });
-    });
+    // The steps with masks or without: two loops, so that a call without masks tests nothing per step.
+    // Flags: the loop that tests io's layout flags per step (a loop of its own, so that SoA steps
+    // test nothing).
+    const auto run_steps = [&]<bool Masks, bool Flags>(const auto& call_m) {
+        // Step k's colour is stored after step k + 1's lanes are loaded: stored before, it held up
+        // those loads where the spans share their offset in a page (docs/batch.md).
+        color<F, V, Q> pending;
+        for (std::size_t k = 0; k < steps; ++k) {
+            const std::uint64_t* step_bits = Masks ? bits + k * W : nullptr;
+            const step_lanes<V, Q> in = io.template lanes<F, Q, Flags>(first + k);
+            if (k > 0) io.template put<F, Q, Flags>(first + k - 1, pending);
+            const frame_t<F, V, Q> s = prepare<F>(in.position, in.normal, in.view, env, in.front);
+            Sums sums{};
+            if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
+            if constexpr (Folded && ambient_hoistable<F> && !Masks) {
+                constexpr features G = ambient_hoisted<F>;
+                add_masked_lights<G, V, T, Q>(sums, s, lights, call_m, step_bits, count);
+                pending = finish<G>(sums, s, mat, env);
+            } else if constexpr (!Folded && std::is_same_v<std::decay_t<decltype(call_m)>, exact::lane_shininess<V>>) {
+                // Per-step materials: the step's shininess tested for 0 here, as once per call otherwise.
+                // A table's step looks its ids up here, in the loop: their loads and, for mixed
+                // ids, the lanes' permutes overlap the shading of the steps around them.
+                material_slot<V, Q> looked_up;
+                const material<V, Q>& step_mat = table            ? *table->step(table_first + k * W, W, looked_up.lanes)
+                                                 : step_materials ? *step_materials[k]
+                                                                  : mat;
+                exact::lane_shininess<V> m = call_m;
+                if (table || step_materials) m = shininess_lanes(step_mat.shininess);
+                add_masked_lights<F, V, T, Q>(sums, s, lights, m, step_bits, count);
+                pending = finish<F>(sums, s, step_mat, env);
+            } else {
+                add_masked_lights<F, V, T, Q>(sums, s, lights, call_m, step_bits, count);
+                pending = finish<F>(sums, s, mat, env);
+            }
+        }
+        if (steps > 0) io.template put<F, Q, Flags>(first + steps - 1, pending);
+    };
+    const auto run = [&](const auto& m) { // m: the shininess (V, exact::lane_shininess<V> or exact::integer_exponent<V>)
+        if constexpr (aos_in_registers<V, T, Q>) {
+            if (io.aos_in || io.interleaved_out) {
+                if (bits) run_steps.template operator()<true, true>(m);
+                else run_steps.template operator()<false, true>(m);
+                return;
+            }
+        }
+        if (bits) run_steps.template operator()<true, false>(m);
+        else run_steps.template operator()<false, false>(m);
+    };
+    if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) {
+        // One integer shininess in every lane (a shared material, or a step of equal ones):
+        // the fast power by binary powering, its schedule made here once rather than per pair
+        // (n >= 1; m = 0, pow(0, 0) = 1 on every lane that is on, takes lane_shininess below).
+        const T m0 = mat.shininess.get(0);
+        if (m0 >= T(1) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
+            math_traits<V>::all(mat.shininess == V(m0)))
+            return run(exact::integer_exponent<V>::of(unsigned(m0)));
+    }
+    if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
+        run(shininess_lanes(mat.shininess)); // m == 0 tested once
+    } else {
+        run(mat.shininess);
+    }
 }
 
 #undef PHONG_BATCH_NOINLINE
