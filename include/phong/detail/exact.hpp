@@ -410,6 +410,22 @@ PHONG_HD constexpr T lit_inverse_length(T dd)
     else return detail::rsqrt_normal(dd);
 }
 
+/// l + v with l = d inv not rounded first: d inv + v, one fma per component (SIMD lanes).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> unrounded_halfway_sum(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v)
+{
+    return {math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z)};
+}
+
+/// 1/|h| (lit_inverse_length of |h|^2) where |h|^2 >= min_square, else 0: Blinn's 1/|l + v| with
+/// the threshold below which a route takes l = -v (no halfway vector).
+template <evaluation M, class T, glm::qualifier Q>
+PHONG_HD constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T min_square)
+{
+    const T hh = phong::dot(h, h);
+    return phong::select(hh >= min_square, lit_inverse_length<M>(hh), T(0));
+}
+
 /// Blinn's 1/|l + v| (specular.hpp's inverse_halfway_length), or in the fast mode: fast::rsqrt, and 0
 /// where |l + v| < 4 fast::rsqrt_max_rel. There l = -v to within the fast 1/|d|'s error (l = -v
 /// exactly no longer cancels bit for bit), n.h = (n.l + n.v) / |l + v| is a ratio of two roundings,
@@ -419,15 +435,11 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 {
     if constexpr (M == evaluation::fast) {
         constexpr double er = fast::rsqrt_max_rel<scalar_t<T>>;
-        const glm::vec<3, T, Q> sum = l + v;
-        const T hh = phong::dot(sum, sum);
-        return phong::select(hh >= T(scalar_t<T>(16 * er * er)), lit_inverse_length<M>(hh), T(0));
+        return inverse_length_at_least<M>(l + v, T(scalar_t<T>(16 * er * er)));
     } else if constexpr (!std::is_same_v<mask_t<T>, bool>) {
         // SIMD lanes: the lanes that are lit have l and v unit (or v = 0), so |l + v|^2 <= 4 and
         // only the lower end (l = -v) needs a test; the others are selected away by add_light.
-        const glm::vec<3, T, Q> sum = l + v;
-        const T hh = phong::dot(sum, sum);
-        return phong::select(hh >= exact_min_square<T>(), detail::rsqrt_normal(hh), T(0));
+        return inverse_length_at_least<M>(l + v, exact_min_square<T>());
     } else {
         return detail::inverse_halfway_length(l, v);
     }
@@ -444,9 +456,7 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v, T halfway_min)
 {
-    const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z));
-    const T hh = phong::dot(h, h);
-    return phong::select(hh >= halfway_min, detail::rsqrt_normal(hh), T(0));
+    return inverse_length_at_least<evaluation::exact>(unrounded_halfway_sum(d, inv, v), halfway_min);
 }
 
 /// Blinn's specular term in the fast mode on SIMD lanes with an integer shininess n >= 1
@@ -472,8 +482,7 @@ PHONG_HD constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light&
     const T numerator = nl + s.lanes.nv_seen;
     const mask_t<T> positive = math_traits<T>::both(on, numerator > T(0));
     if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
-    const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, s.view.x), math_traits<T>::fma(d.y, inv, s.view.y),
-                              math_traits<T>::fma(d.z, inv, s.view.z));
+    const glm::vec<3, T, Q> h = unrounded_halfway_sum(d, inv, s.view);
     const T hh = phong::dot(h, h);
     constexpr double er = fast::rsqrt_max_rel<S>;
     const mask_t<T> defined = math_traits<T>::both(positive, hh >= T(S(16 * er * er)));
