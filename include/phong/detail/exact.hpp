@@ -482,7 +482,8 @@ PHONG_HD constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light&
     const T numerator = nl + s.lanes.nv_seen;
     const mask_t<T> positive = math_traits<T>::both(on, numerator > T(0));
     if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
-    const glm::vec<3, T, Q> h = unrounded_halfway_sum(d, inv, s.view);
+    const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, s.view.x), math_traits<T>::fma(d.y, inv, s.view.y),
+                              math_traits<T>::fma(d.z, inv, s.view.z));
     const T hh = phong::dot(h, h);
     constexpr double er = fast::rsqrt_max_rel<S>;
     const mask_t<T> defined = math_traits<T>::both(positive, hh >= T(S(16 * er * er)));
