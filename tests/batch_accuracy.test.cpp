@@ -124,7 +124,7 @@ TEST_CASE_TEMPLATE("shade_batch fast, integer shininess (binary powering): every
 #if !PHONG_FP_BARRIER || defined(PHONG_ALLOW_REASSOCIATED_TWOFOLD) // the batch stable mode refuses -ffast-math builds
 TEST_CASE("shade_batch stable, float: both sides of the double-lane route's shininess limit stay within the m = 1e5 bound")
 {
-    // Float lanes run the geometry in double up to m = 2^20 (detail/stable_lanes.hpp) and the
+    // Float lanes run the geometry in double up to m = 2^20 (detail/simd/stable_lanes.hpp) and the
     // twofold route above. The near-peak scenes of the shininess classes at m = 1e6 (double lanes,
     // at the limit's edge: the double x's error, about m 10 2^-53, is largest there) and at m = 2e6 and
     // 1e8 (twofold route) meet the published bound of the largest published class, shininess_1e5.
@@ -155,7 +155,7 @@ TEST_CASE("shade_batch stable, float: both sides of the double-lane route's shin
 TEST_CASE_TEMPLATE("shade_batch stable: a grazing light's specular cosine near 0, within grazing_specular's bound", T, float, double)
 {
     // Scenes outside the class generator's exact-mode limits (detail::grazing_cosine_near_zero): the
-    // float lanes (detail/stable_lanes.hpp) and double lanes (twofold route) read the cosine itself
+    // float lanes (detail/simd/stable_lanes.hpp) and double lanes (twofold route) read the cosine itself
     // there; 1 - x rounded to float was 8e4 ulp off at c = 1e-6, m = 1.
     using phong::accuracy::input_class;
     if (wide_digits < 113 && sizeof(T) == 8) return; // a long double reference cannot resolve n.l ~ 1e-6 in double

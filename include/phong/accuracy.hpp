@@ -33,7 +33,7 @@
 // included, but for grazing_specular: a specular term far from its peak that outweighs a diffuse
 // term at n.l ~ 1e-6 carries the power's own error, about |m log2 c| u (c: its cosine), measured
 // p99 <= 9.3 and max <= 40 ulp (bound 20 / 90 ulp, 6e-6 in float). Float SIMD batches on x86
-// run the geometry in double lanes (detail/stable_lanes.hpp) and are held to the same twofold
+// run the geometry in double lanes (detail/simd/stable_lanes.hpp) and are held to the same twofold
 // bounds (tests/batch_accuracy.test.cpp).
 #pragma once
 
@@ -92,9 +92,9 @@ PHONG_HD constexpr const char* name(input_class c)
 /// Finite input never gives NaN or inf (except non_finite, whose policy is NaN in every channel;
 /// its bound is +inf).
 struct bound {
-    double p99_ulp;
-    double max_ulp;
-    double max_rel;
+    double p99_ulp; ///< 99th percentile of the error, in ulp of the exact value
+    double max_ulp; ///< the largest error in ulp
+    double max_rel; ///< the largest relative error (absolute where exact = 0)
 };
 
 /// The feature set the bounds are measured with: scene ambient, diffuse, the specular model S
@@ -198,7 +198,7 @@ struct pair_conditioning {
 };
 
 /// Which x^m the exact mode runs: shade<F>'s scalar kernel (detail/power.hpp), or shade_batch's
-/// SIMD lanes (float: detail/lanes_power.hpp's polynomial, whose error grows with |m log2 x|).
+/// SIMD lanes (float: detail/simd/lanes_power.hpp's polynomial, whose error grows with |m log2 x|).
 /// The rest of the derivation holds for both: the lanes' reciprocal square roots (AVX-512's
 /// estimate and one Newton step, 1.6 u; baseline SSE2 and double lanes: 1 / sqrt) are within the
 /// scalar path's two roundings of a square root and a division. AVX2 float lanes (estimate error
@@ -232,7 +232,7 @@ constexpr double rho_of(const pair_conditioning& k) { return 1 + 2 * k.w_ratio; 
 template <class T> constexpr double nl_absolute(const pair_conditioning& k) { return g<T>(10 + rho_of(k)); }
 template <class T> constexpr double attenuation_error(const pair_conditioning& k) { return k.attenuated ? g<T>(2 * rho_of(k) + 15) : 0; }
 /// The relative error of the power kernel for base >= lo: the scalar kernel's documented bound
-/// (detail/power.hpp), or for float SIMD lanes (shade_batch) detail/lanes_power.hpp's
+/// (detail/power.hpp), or for float SIMD lanes (shade_batch) detail/simd/lanes_power.hpp's
 /// (3.5 |y| + 2.5) u with y = m log2(base) capped at 150 (below 2^-150 the term is 0 in float and
 /// the absolute allowance covers it). Double lanes (xsimd's exp(m log x)) are held to the scalar
 /// kernel's bound, which tests/lanes_power.test.cpp checks for them.
@@ -350,10 +350,14 @@ template <class T> constexpr double exact_absolute_allowance(int lights, double 
 /// where n.v > 0), and kd = 0 where !diffuse, ks = 0 where !specular. `drops`: the class is built
 /// so that the exact mode drops a vector (bound 1); otherwise every squared length is in range.
 struct exact_limits {
-    bool drops = false;
-    int lights = 1;
-    double m = 200, nl = 0.05, nv = 0.05, c = 0.5;
-    bool diffuse = true, specular = true;
+    bool drops = false;  ///< the class makes the exact mode drop a vector (bound 1)
+    int lights = 1;      ///< at most this many lights
+    double m = 200;      ///< the largest shininess
+    double nl = 0.05;    ///< the least |n.l| of a lit pair
+    double nv = 0.05;    ///< the least |n.v|
+    double c = 0.5;      ///< the least specular cosine (or at most -c / 100)
+    bool diffuse = true; ///< kd may be nonzero
+    bool specular = true; ///< ks may be nonzero
     bool blinn_cancels = false; ///< Blinn's l = -v bit for bit (blinn_opposite): its term is 0
 };
 

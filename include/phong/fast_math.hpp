@@ -6,9 +6,9 @@
 // half a half-float ulp 2.4e-4 relative. The bounds below are a few 1e-7 to 1e-5, so the fast
 // mode's error stays the exact mode's conditioning (phong/accuracy.hpp, bounds<evaluation::fast, T>).
 // The same templates run on float, double and SIMD batches: the lane-wise bit operations come from
-// `fast::lanes<V>`, specialized for xsimd batches in detail/fast_lanes.hpp (included by batch.hpp).
+// `fast::lanes<V>`, specialized for xsimd batches in detail/simd/fast_lanes.hpp (included by batch.hpp through detail/batch/kernel.hpp).
 // The fast mode's route (detail/exact.hpp) keeps the exact mode's kernels on float SIMD lanes, which
-// are of the same kind and cost there (detail/lanes_power.hpp, rsqrt_normal) and within these bounds.
+// are of the same kind and cost there (detail/simd/lanes_power.hpp, rsqrt_normal) and within these bounds.
 // tests/fast_math.test.cpp checks every bound on dense sweeps against long double; the benchmark
 // rows kernel.fast_pow_unit.* and kernel.fast_rsqrt.* (benchmarks/kernels.bench.cpp) time each function
 // beside its exact twin.
@@ -34,13 +34,16 @@ namespace phong::fast {
 
 /// Lane-wise bit access for the fast kernels: the unsigned integer type of V's bits, the casts,
 /// and a multiply-add (contracted to an fma where the hardware has one). Scalars here; xsimd
-/// batches in detail/fast_lanes.hpp.
+/// batches in detail/simd/fast_lanes.hpp.
 template <class V, class Enable = void>
 struct lanes {
     static_assert(std::is_same_v<V, float> || std::is_same_v<V, double>, "phong::fast: no lanes<V> for this type");
-    using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>;
+    using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>; ///< V's bits as an unsigned integer
+    /// The bits of x.
     PHONG_HD static constexpr bits_t bits(V x) { return std::bit_cast<bits_t>(x); }
+    /// The V whose bits are u.
     PHONG_HD static constexpr V from_bits(bits_t u) { return std::bit_cast<V>(u); }
+    /// a * b + c (contracted to an fma where the compiler does).
     PHONG_HD static constexpr V madd(V a, V b, V c) { return a * b + c; }
 };
 
@@ -239,7 +242,7 @@ PHONG_HD constexpr V pow_integer(V x, unsigned n)
 template <class T> inline constexpr double reciprocal_max_rel = sizeof(T) == 4 ? 2.5e-7 : 1.2e-16;
 
 /// Fast 1/x for a positive normal x (the caller has checked, or selects the other lanes away):
-///   r1 = r0 + r0 (1 - x r0),   r0 the hardware estimate (float SIMD lanes; see detail/fast_lanes.hpp),
+///   r1 = r0 + r0 (1 - x r0),   r0 the hardware estimate (float SIMD lanes; see detail/simd/fast_lanes.hpp),
 /// relative error reciprocal_max_rel<T>; scalars and other lanes: 1/x. Edge: other x (0, inf,
 /// subnormal, negative, NaN) give an unspecified value, maybe NaN (no guards: that is the point).
 /// Exact twin: 1 / x.
@@ -263,7 +266,7 @@ template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7
 /// relative error rsqrt_max_rel<T>. Float scalars on x86 (SSE): rsqrtss. Double scalars and other
 /// targets: the exact 1/sqrt(x) (no faster estimate is worth it there). Float in CUDA device code:
 /// rsqrtf (rsqrt.approx.f32, rsqrt_sfu_max_rel; a subnormal x gives inf under -ftz). SIMD batches: see
-/// detail/fast_lanes.hpp. Edge: x = 0 gives inf, x = inf gives 0 (the estimate, unrefined);
+/// detail/simd/fast_lanes.hpp. Edge: x = 0 gives inf, x = inf gives 0 (the estimate, unrefined);
 /// x < 0 or NaN: NaN; a subnormal x gives inf with rsqrtss (it reads the input as 0), the exact
 /// 1/sqrt(x) elsewhere (shade's fast mode never passes one: it drops such vectors first).
 /// Exact twin: phong::rsqrt (math.hpp).

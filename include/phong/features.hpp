@@ -81,7 +81,7 @@ enum class evaluation : unsigned char { exact, stable, fast };
 /// (detail/twofold.hpp); for GPUs whose double runs at a small fraction of float's rate (consumer
 /// GPUs, 1/32 or 1/64: there it should be the faster one, not measured; docs/cuda.md). Float SIMD
 /// batches on x86 (shade_batch) read neither: their geometry runs in double lanes and the power
-/// in float (detail/stable_lanes.hpp), held to the twofold bounds; steps with a shininess above
+/// in float (detail/simd/stable_lanes.hpp), held to the twofold bounds; steps with a shininess above
 /// 2^20 in any lane take the twofold route.
 enum class stable_precision : unsigned char { wider, twofold };
 
@@ -91,26 +91,25 @@ struct features {
     bool scene_ambient = true;   ///< ka * La (seed 000), the same as seed 001's IG = GlobalAmbient * ka
     bool light_ambient = false;  ///< per-light ambient lightamb * ka (seed 001 Iamb, seed 003 La * Ka)
     bool diffuse = true;         ///< kd * max(n.l, 0)
-    specular_model specular = specular_model::phong;
+    specular_model specular = specular_model::phong; ///< the specular term: none, Phong (r.v) or Blinn (n.h)
     bool specular_gate = true;   ///< specular only where n.l > 0 (seed 003); seed 001 has no gate
-    light_kind lights = light_kind::any;
-    attenuation_model attenuation = attenuation_model::none;
-    spot_model spot = spot_model::none;
+    light_kind lights = light_kind::any;  ///< which lights the list holds (any: w read per light)
+    attenuation_model attenuation = attenuation_model::none; ///< the distance falloff f_i
+    spot_model spot = spot_model::none;   ///< the spot cone factor
     bool attenuate_ambient = true; ///< f_i and the spot also scale the per-light ambient (OpenGL)
-    facing two_sided = facing::none;
-    view_model view = view_model::eye_at_origin;
+    facing two_sided = facing::none;      ///< how a back face is lit (none, by the view, by a flag)
+    view_model view = view_model::eye_at_origin; ///< where the view vector comes from
     bool emission = false;       ///< material emission added
     bool alpha = false;          ///< return rgba with the material's alpha appended
-    evaluation mode = evaluation::exact;
+    evaluation mode = evaluation::exact;  ///< exact, stable or fast arithmetic
     stable_precision precision = stable_precision::wider; ///< stable mode only: wider (float in double) or twofold
     /// Stable mode with twofold precision only: 0 (the default) carries every pair twofold, the accuracy that
     /// phong/accuracy.hpp publishes. M > 0 rounds each component once for pairs with shininess
     /// m <= M (Blinn: unless l + v nearly cancels), less than half the cost, at an error that
-    /// grows like sqrt(m) eps. With M = 256, float, 2000 scenes per input class against __float128
-    /// (tests/stable_hybrid.test.cpp): well-conditioned p99 2.6 ulp, max 16 ulp; worst class max
-    /// 50 ulp, max relative 3.5e-6; every target of the stable mode met. Higher m stays twofold.
-    /// Not read by float SIMD batches on x86 (their double-lane route is faster and more accurate
-    /// than either depth) but for steps with m above 2^20, which take the twofold route.
+    /// grows like sqrt(m) eps (figures: docs/accuracy.md, tests/stable_hybrid.test.cpp); every
+    /// target of the stable mode is met. Higher m stays twofold.
+    /// Not read by float SIMD batches on x86 (their double-lane route is more accurate than
+    /// either depth) but for steps with m above 2^20, which take the twofold route.
     unsigned stable_twofold_above = 0;
     /// The normal (and, for view_model::given, the view vector) come at unit length: used as
     /// given, with no normalization and no length guards (checked in debug builds). For the
@@ -188,11 +187,12 @@ inline constexpr features diffuse_only{
     .attenuate_ambient = true, .two_sided = facing::none, .view = view_model::eye_at_origin,
     .emission = false, .alpha = false, .mode = evaluation::exact};
 
-/// Older names, after the source documents (docs/models.md).
+/// Older names, after the source documents (docs/models.md): aliases of classic_phong,
+/// blinn_phong_per_light_ambient, glsl_ads and diffuse_only, kept for existing code.
 inline constexpr features seed000_classic = classic_phong;
-inline constexpr features seed001_raytracer = blinn_phong_per_light_ambient;
-inline constexpr features seed003_ads = glsl_ads;
-inline constexpr features seed003_diffuse = diffuse_only;
+inline constexpr features seed001_raytracer = blinn_phong_per_light_ambient; ///< alias of blinn_phong_per_light_ambient
+inline constexpr features seed003_ads = glsl_ads;                            ///< alias of glsl_ads
+inline constexpr features seed003_diffuse = diffuse_only;                    ///< alias of diffuse_only
 
 /// The same feature set evaluated in another mode (e.g. with_mode(classic_phong, evaluation::stable)).
 PHONG_HD constexpr features with_mode(features f, evaluation mode)

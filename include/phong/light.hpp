@@ -59,7 +59,7 @@ struct light {
 ///   diffuse(L)  -> glm::vec<3, U, Q>  required: Ld (seed 001 lightdiff);
 ///   specular(L) -> glm::vec<3, U, Q>  required: Ls (seed 001 lightspec);
 ///   ambient(L)  -> glm::vec<3, U, Q>  optional, default 0: La (seed 001 lightamb);
-///   attenuation(L) -> falloff<U>      optional, default falloff<U>{} (f = 1): read with attenuation;
+///   attenuation(L) -> `falloff<U>`    optional, default `falloff<U>{}` (f = 1): read with attenuation;
 ///   spot(L)     -> spot_cone<U, Q>    optional, default spot_cone<U, Q>{} (no cone): read with a spot.
 /// Each function is called where the model reads that field (inlined: the same code as for the
 /// member of a light<T>), at most once per light per point, and only for the terms F has. A point
@@ -75,11 +75,17 @@ template <class L> struct light_traits {};
 
 /// light<T, Q>'s own fields, by reference.
 template <class T, glm::qualifier Q> struct light_traits<light<T, Q>> {
+    /// L.position
     PHONG_HD static constexpr const glm::vec<4, T, Q>& position(const light<T, Q>& L) { return L.position; }
+    /// L.ambient
     PHONG_HD static constexpr const glm::vec<3, T, Q>& ambient(const light<T, Q>& L) { return L.ambient; }
+    /// L.diffuse
     PHONG_HD static constexpr const glm::vec<3, T, Q>& diffuse(const light<T, Q>& L) { return L.diffuse; }
+    /// L.specular
     PHONG_HD static constexpr const glm::vec<3, T, Q>& specular(const light<T, Q>& L) { return L.specular; }
+    /// L.attenuation
     PHONG_HD static constexpr const falloff<T>& attenuation(const light<T, Q>& L) { return L.attenuation; }
+    /// L.spot
     PHONG_HD static constexpr const spot_cone<T, Q>& spot(const light<T, Q>& L) { return L.spot; }
 };
 

@@ -44,18 +44,34 @@ inline constexpr int constexpr_tolerance_ulp = 2;
 
 namespace detail {
 
+/// The error e of the product p = fl(a * b): a * b = p + e exactly (Veltkamp's split of a and b
+/// into halves of (digits + 1) / 2 bits, Dekker's product), for |a|, |b| below max / 2^((digits +
+/// 3) / 2) (the split overflows above) and e not subnormal. S is the lane type of V.
+template <class V, class S = V>
+PHONG_HD constexpr V dekker_product_error(const V& a, const V& b, const V& p)
+{
+    const V split = V(S((1ull << ((std::numeric_limits<S>::digits + 1) / 2)) + 1));
+    const V ca = ieee::opaque(split * a), ah = ieee::opaque(ca - ieee::opaque(ca - a)), al = a - ah;
+    const V cb = ieee::opaque(split * b), bh = ieee::opaque(cb - ieee::opaque(cb - b)), bl = b - bh;
+    return ieee::ordered_sum(ah * bh - p, ah * bl, al * bh, al * bl);
+}
+
 /// a*b + c with the product exact (Veltkamp split, Dekker's product), then two additions: exact
 /// whenever c = -fl(a*b) (the error-free products phong relies on), else within 1 ulp. For
 /// constant evaluation and for SIMD targets without an FMA instruction. S is the lane type of V.
 template <class V, class S = V>
 PHONG_HD constexpr V dekker_fma(const V& a, const V& b, const V& c)
 {
-    const V split = V(S((1ull << ((std::numeric_limits<S>::digits + 1) / 2)) + 1));
-    const V ca = ieee::opaque(split * a), ah = ieee::opaque(ca - ieee::opaque(ca - a)), al = a - ah;
-    const V cb = ieee::opaque(split * b), bh = ieee::opaque(cb - ieee::opaque(cb - b)), bl = b - bh;
     const V p = a * b;
-    const V e = ieee::ordered_sum(ah * bh - p, ah * bl, al * bh, al * bl);
-    return ieee::opaque(p + c) + e;
+    return ieee::opaque(p + c) + dekker_product_error<V, S>(a, b, p);
+}
+
+/// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b). Any rounding to
+/// nearest, no condition on |a| and |b|; under -fassociative-math too (ieee::two_sum_error keeps
+/// the additions in order).
+template <class T> PHONG_HD constexpr T two_sum_error(T a, T b, T hi)
+{
+    return ieee::two_sum_error(a, b, hi);
 }
 
 } // namespace detail
@@ -66,9 +82,10 @@ PHONG_HD constexpr V dekker_fma(const V& a, const V& b, const V& c)
 template <class V, class Enable = void>
 struct math_traits {
     static_assert(std::is_floating_point_v<V>, "phong: no math_traits for this number type");
-    using scalar = V;
-    using mask = bool;
+    using scalar = V; ///< the type of one lane (V itself)
+    using mask = bool; ///< the result of a comparison of V
 
+    /// The correctly rounded square root (IEEE); constant evaluation: detail::ce::sqrt.
     PHONG_HD static constexpr V sqrt(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::sqrt(x));
@@ -100,21 +117,25 @@ struct math_traits {
         if (std::is_constant_evaluated() && x == V(0)) return std::numeric_limits<V>::infinity();
         return V(1) / sqrt(x);
     }
+    /// e^x (std::exp; constant evaluation: detail::ce::exp).
     PHONG_HD static constexpr V exp(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::exp(x));
         return std::exp(x);
     }
+    /// The natural logarithm (std::log; constant evaluation: detail::ce::log).
     PHONG_HD static constexpr V log(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log(x));
         return std::log(x);
     }
+    /// log(1 + x), accurate for small x (std::log1p; constant evaluation: detail::ce::log1p).
     PHONG_HD static constexpr V log1p(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log1p(x));
         return std::log1p(x);
     }
+    /// x^y (std::pow; constant evaluation: detail::ce::pow).
     PHONG_HD static constexpr V pow(V x, V y)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::pow(x, y));
@@ -146,12 +167,19 @@ struct math_traits {
         }
         return std::fma(a, b, c);
     }
+    /// a where m, else b.
     PHONG_HD static constexpr V select(bool m, V a, V b) { return m ? a : b; }
+    /// Whether any lane of m is set (one lane here).
     PHONG_HD static constexpr bool any(bool m) { return m; }
+    /// a and b, lane-wise.
     PHONG_HD static constexpr bool both(bool a, bool b) { return a && b; }
+    /// Whether every lane of m is set (one lane here).
     PHONG_HD static constexpr bool all(bool m) { return m; }
+    /// |x|, with abs(-0) = +0.
     PHONG_HD static constexpr V abs(V x) { return x < 0 ? -x : (x == 0 ? V(0) : x); }
+    /// The smaller of a and b (b where b < a: a NaN in a is returned, one in b is not).
     PHONG_HD static constexpr V min(V a, V b) { return b < a ? b : a; }
+    /// The larger of a and b (b where a < b: a NaN in a is returned, one in b is not).
     PHONG_HD static constexpr V max(V a, V b) { return a < b ? b : a; }
 
     /// A power of two 2^-e such that |x| * 2^-e lies in [1, 2) for normal x, clamped to stay a

@@ -95,8 +95,9 @@ enum class primitive_part : unsigned char { none, surface, wall, base, cap };
 /// A miss has part = none and t = +inf (so the nearest of several hits is the smallest t).
 template <class T>
 struct ray_hit {
-    T t = std::numeric_limits<T>::infinity();
-    primitive_part part = primitive_part::none;
+    T t = std::numeric_limits<T>::infinity();   ///< the ray parameter of the hit (+inf: a miss)
+    primitive_part part = primitive_part::none; ///< the part hit (none: a miss)
+    /// Whether the ray hit something.
     PHONG_HD constexpr explicit operator bool() const { return part != primitive_part::none; }
 };
 

@@ -17,8 +17,10 @@ namespace phong {
 /// The result of validate(...): empty when the parameters are in the model's domain, else the
 /// first problem found, as a message naming the field.
 struct validation {
-    const char* error = nullptr;
+    const char* error = nullptr; ///< the first problem found, naming the field; null when valid
+    /// Whether the parameters are valid.
     PHONG_HD constexpr explicit operator bool() const { return error == nullptr; }
+    /// The error message, or "ok".
     PHONG_HD constexpr const char* message() const { return error ? error : "ok"; }
 };
 

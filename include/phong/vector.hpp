@@ -89,7 +89,7 @@ PHONG_HD constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<
         const T h = a[k] * b[k];
         const T r = phong::fma(a[k], b[k], -h);
         const T s = p + h;
-        const T q = detail::ieee::two_sum_error(p, h, s); // TwoSum(p, h) = s + q exactly
+        const T q = detail::two_sum_error(p, h, s); // p + h = s + q exactly
         p = s;
         err += q + r;
     }

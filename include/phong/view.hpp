@@ -1,4 +1,5 @@
-// phong: the view vector v, from the eye point, and the eye point from the projection ec_lds.
+// phong: the view vector v, from the eye point, and the eye point from the projection matrix
+// (seed 000's ec_lds).
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -16,18 +17,18 @@ PHONG_HD constexpr glm::vec<3, T, Q> view_perspective(const glm::vec<3, T, Q>& p
     return phong::normalize(-point);
 }
 
-/// Seed 000, orthographic: v = normalize(-M02/M00, -M12/M11, 1), M = ec_lds the projection
-/// matrix; M02 is row 0, column 2 (GLM's m[2][0]).
+/// Seed 000, orthographic: v = normalize(-M02/M00, -M12/M11, 1), M = the projection matrix (seed
+/// 000's ec_lds); M02 is row 0, column 2 (GLM's m[2][0]).
 /// Pre: M00 != 0 and M11 != 0 (any invertible orthographic matrix), the ratios M02/M00 and
 /// M12/M11 finite. Edge: M00 or M11 = 0, or a ratio beyond T's range, gives NaN components; use
 /// eye_from_projection, which never divides by them.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> view_orthographic(const glm::mat<4, 4, T, Q>& ec_lds)
+PHONG_HD constexpr glm::vec<3, T, Q> view_orthographic(const glm::mat<4, 4, T, Q>& projection)
 {
-    return phong::normalize(glm::vec<3, T, Q>(-ec_lds[2][0] / ec_lds[0][0], -ec_lds[2][1] / ec_lds[1][1], T(1)));
+    return phong::normalize(glm::vec<3, T, Q>(-projection[2][0] / projection[0][0], -projection[2][1] / projection[1][1], T(1)));
 }
 
-/// The eye as a homogeneous point, derived from the projection matrix M = ec_lds: the common
+/// The eye as a homogeneous point, derived from the projection matrix M (seed 000's ec_lds): the common
 /// null vector E of rows 0, 1 and 3 of M (the points that project to the centre of every
 /// clip-space x, y and to w = 0), computed as a 4-D cross product, then oriented toward the viewer.
 ///   perspective (glm::perspective, glm::frustum, off-axis):  E = (x, y, z, 1), the centre of projection;

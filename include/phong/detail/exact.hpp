@@ -227,8 +227,8 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 /// The specular power of add_specular: detail::cosine_power, or in the fast mode fast::pow_unit of
 /// the same clamped cosine (SIMD lanes with one integer shininess m <= fast::pow_integer_max_exponent:
 /// fast::pow_integer, within the same bound). Float SIMD lanes keep cosine_power: the exact mode's power there already
-/// is a polynomial kernel of the same cost (detail/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
-/// fast::pow_unit_max_rel where x^m >= 2^-24); measured, fast::pow_unit made the batch rows 5-15 % slower.
+/// is a polynomial kernel of the same cost (detail/simd/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
+/// fast::pow_unit_max_rel where x^m >= 2^-24), and fast::pow_unit was slower there (docs/batch.md).
 template <evaluation M, class T>
 PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
 {
@@ -375,8 +375,8 @@ PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x,
         // The fast power x^n, n >= 1, of the base c zeroed where the lane is off or c <= 0 (then
         // its power is 0): the mask goes into the product that forms the base, and max(c, 0) in
         // place of a compare (on AVX-512 a compare takes a multiplier slot, a max does not) and of
-        // a skip of the steps with no c > 0: every step pays the power, measured 2 % faster at 16
-        // lights all the same (fast Phong, AVX-512). The sum gains +0 where it skipped: the same
+        // a skip of the steps with no c > 0: every step pays the power (faster all the same:
+        // docs/batch.md). The sum gains +0 where it skipped: the same
         // bits. The base is not clamped to 1: lanes that are on have unit n, d / |d| and v, so
         // c <= 1 up to its rounding error, which c^n amplifies by n with or without a clamp
         // (accuracy.hpp's fast bound), and c^n stays finite (|c| <= 3 |d| for unit vectors); c is
@@ -410,6 +410,22 @@ PHONG_HD constexpr T lit_inverse_length(T dd)
     else return detail::rsqrt_normal(dd);
 }
 
+/// l + v with l = d inv not rounded first: d inv + v, one fma per component (SIMD lanes).
+template <class T, glm::qualifier Q>
+PHONG_HD constexpr glm::vec<3, T, Q> unrounded_halfway_sum(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v)
+{
+    return {math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z)};
+}
+
+/// 1/|h| (lit_inverse_length of |h|^2) where |h|^2 >= min_square, else 0: Blinn's 1/|l + v| with
+/// the threshold below which a route takes l = -v (no halfway vector).
+template <evaluation M, class T, glm::qualifier Q>
+PHONG_HD constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T min_square)
+{
+    const T hh = phong::dot(h, h);
+    return phong::select(hh >= min_square, lit_inverse_length<M>(hh), T(0));
+}
+
 /// Blinn's 1/|l + v| (specular.hpp's inverse_halfway_length), or in the fast mode: fast::rsqrt, and 0
 /// where |l + v| < 4 fast::rsqrt_max_rel. There l = -v to within the fast 1/|d|'s error (l = -v
 /// exactly no longer cancels bit for bit), n.h = (n.l + n.v) / |l + v| is a ratio of two roundings,
@@ -419,15 +435,11 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 {
     if constexpr (M == evaluation::fast) {
         constexpr double er = fast::rsqrt_max_rel<scalar_t<T>>;
-        const glm::vec<3, T, Q> sum = l + v;
-        const T hh = phong::dot(sum, sum);
-        return phong::select(hh >= T(scalar_t<T>(16 * er * er)), lit_inverse_length<M>(hh), T(0));
+        return inverse_length_at_least<M>(l + v, T(scalar_t<T>(16 * er * er)));
     } else if constexpr (!std::is_same_v<mask_t<T>, bool>) {
         // SIMD lanes: the lanes that are lit have l and v unit (or v = 0), so |l + v|^2 <= 4 and
         // only the lower end (l = -v) needs a test; the others are selected away by add_light.
-        const glm::vec<3, T, Q> sum = l + v;
-        const T hh = phong::dot(sum, sum);
-        return phong::select(hh >= exact_min_square<T>(), detail::rsqrt_normal(hh), T(0));
+        return inverse_length_at_least<M>(l + v, exact_min_square<T>());
     } else {
         return detail::inverse_halfway_length(l, v);
     }
@@ -444,9 +456,7 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v, T halfway_min)
 {
-    const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z));
-    const T hh = phong::dot(h, h);
-    return phong::select(hh >= halfway_min, detail::rsqrt_normal(hh), T(0));
+    return inverse_length_at_least<evaluation::exact>(unrounded_halfway_sum(d, inv, v), halfway_min);
 }
 
 /// Blinn's specular term in the fast mode on SIMD lanes with an integer shininess n >= 1
@@ -531,8 +541,8 @@ PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s
     // Scalars with separate sums (light_sums): the diffuse term is added after the specular one,
     // the same bits in either order, so that a light colour read for both terms (an adaptor
     // returning one field as diffuse and specular) is not held in registers across the power
-    // (g++ 12 then spilled: 6 % slower per point). SIMD lanes and one sum (folded_sums): diffuse
-    // first (SIMD lanes measured slower the other way: the ray tracer's batch, 1 light).
+    // (g++ 12 spills it). SIMD lanes and one sum (folded_sums): diffuse first (the faster order
+    // there; docs/batch.md).
     constexpr bool diffuse_last = std::is_floating_point_v<T> && std::is_same_v<Sums<T, Q>, light_sums<T, Q>>;
     if constexpr (F.diffuse && !diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
     // Phong with the fast integer power (n >= 1): a point without a view vector has v = 0, so its

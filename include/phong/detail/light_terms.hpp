@@ -97,7 +97,7 @@ PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T
 /// visibility: unweighted, or the caller's weight in [0, 1] (phong::weighted: soft shadows).
 /// Light: a light_source (light.hpp), read through light_traits. LightScalar: the light's own
 /// scalar type, whose attenuation floor applies (float lights widened to double by the caller name
-/// float here, detail/stable_lanes.hpp).
+/// float here, detail/simd/stable_lanes.hpp).
 template <features F, class T, glm::qualifier Q, class Light, class W, class LightScalar = light_scalar_t<Light>>
 PHONG_HD constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
                                   [[maybe_unused]] const glm::vec<3, T, Q>& l, [[maybe_unused]] W visibility)

@@ -36,21 +36,22 @@ template <class T> PHONG_HD constexpr T rounded_product(T a, T b)
 #endif
 }
 
-/// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b).
-template <class T> PHONG_HD constexpr T two_sum_error(T a, T b, T hi)
+/// The twofold route's TwoSum (math.hpp's two_sum_error), refused at compile time where the
+/// compiler may reassociate additions.
+template <class T> PHONG_HD constexpr T twofold_sum_error(T a, T b, T hi)
 {
     static_assert(ieee::twofold_allowed<T>,
                   "phong: the stable mode's twofold arithmetic (double, or features::precision = twofold) needs IEEE "
                   "additions, and -ffast-math (-fassociative-math) reorders them: build this translation unit with "
                   "-fno-associative-math (or -fno-fast-math), or use evaluation::exact or fast, or float's stable "
                   "mode with precision = wider");
-    return ieee::two_sum_error(a, b, hi);
+    return two_sum_error(a, b, hi);
 }
 
 /// a - b = hi + lo exactly (TwoSum on a + (-b)); returns lo for hi = fl(a - b).
 template <class T> PHONG_HD constexpr T difference_error(T a, T b, T hi)
 {
-    return two_sum_error(a, -b, hi);
+    return twofold_sum_error(a, -b, hi);
 }
 
 /// A unit vector carried twofold: hi + lo = d / |d| with an error of a few eps^2 per component.
@@ -80,7 +81,7 @@ PHONG_HD constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const 
     vec3 dh(T(0)), dl(T(0));
     for (int k = 0; k < 3; ++k) {
         dh[k] = d[k] + dlo[k];
-        dl[k] = two_sum_error(d[k], dlo[k], dh[k]);
+        dl[k] = twofold_sum_error(d[k], dlo[k], dh[k]);
     }
     const T largest_d = phong::max_abs(dh);
     const mask_t<T> in_range = math_traits<T>::both(phong::max_abs(d) <= largest<T>(), largest_d <= largest<T>());
@@ -97,7 +98,7 @@ PHONG_HD constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const 
         const T p = rounded_product(a[k], a[k]);
         const T pe = phong::fma(a[k], a[k], -p);
         const T s = sh + p;
-        sl = sl + (two_sum_error(sh, p, s) + pe + T(2) * a[k] * al[k]);
+        sl = sl + (twofold_sum_error(sh, p, s) + pe + T(2) * a[k] * al[k]);
         sh = s;
     }
     const T s_hi = sh + sl;
@@ -133,7 +134,7 @@ PHONG_HD constexpr void dot_twofold(const glm::vec<3, T, Q>& ah, const glm::vec<
         const T h = rounded_product(ah[k], bh[k]);
         const T r = phong::fma(ah[k], bh[k], -h);
         const T s = p + h;
-        err = err + (two_sum_error(p, h, s) + r + (ah[k] * bl[k] + al[k] * bh[k]));
+        err = err + (twofold_sum_error(p, h, s) + r + (ah[k] * bl[k] + al[k] * bh[k]));
         p = s;
     }
     hi = p + err;
@@ -161,7 +162,7 @@ PHONG_HD constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>& c, 
     for (int k = 1; k < 3; ++k) {
         const T p = rounded_product(c[k], c[k]);
         const T s = hi + p;
-        lo = lo + (two_sum_error(hi, p, s) + phong::fma(c[k], c[k], -p) + T(2) * c[k] * c_lo[k]);
+        lo = lo + (twofold_sum_error(hi, p, s) + phong::fma(c[k], c[k], -p) + T(2) * c[k] * c_lo[k]);
         hi = s;
     }
     const T sum = hi + lo;
@@ -185,9 +186,9 @@ PHONG_HD constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh
         const T ph = T(2) * q;
         const T pe = T(2) * (phong::fma(nl_hi, nh[k], -q) + (nl_hi * nlo[k] + nl_lo * nh[k]));
         const T s1 = ph - lh[k];
-        const T e1 = two_sum_error(ph, -lh[k], s1);
+        const T e1 = twofold_sum_error(ph, -lh[k], s1);
         const T s2 = s1 - vh[k];
-        const T e2 = two_sum_error(s1, -vh[k], s2);
+        const T e2 = twofold_sum_error(s1, -vh[k], s2);
         c[k] = s2 + (((e1 + e2) + pe) - (llo[k] + vlo[k]));
         c_lo[k] = (((e1 + e2) + pe) - (llo[k] + vlo[k])) - (c[k] - s2);
     }
@@ -203,7 +204,7 @@ PHONG_HD constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>& nh
     glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
     for (int k = 0; k < 3; ++k) {
         const T s = nh[k] - hh[k];
-        const T lo = two_sum_error(nh[k], -hh[k], s) + (nlo[k] - hlo[k]);
+        const T lo = twofold_sum_error(nh[k], -hh[k], s) + (nlo[k] - hlo[k]);
         c[k] = s + lo;
         c_lo[k] = lo - (c[k] - s);
     }
@@ -221,11 +222,11 @@ PHONG_HD constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, T, Q
     glm::vec<3, T, Q> sum(T(0)), sum_lo(T(0));
     for (int k = 0; k < 3; ++k) {
         sum[k] = lh[k] + vh[k];
-        sum_lo[k] = two_sum_error(lh[k], vh[k], sum[k]) + (llo[k] + vlo[k]);
+        sum_lo[k] = twofold_sum_error(lh[k], vh[k], sum[k]) + (llo[k] + vlo[k]);
         // Renormalized: where l and v cancel in the high parts, lo can exceed hi, and unit_of
         // (which scales by the high parts) would then overflow lo to inf.
         const T t = sum[k] + sum_lo[k];
-        sum_lo[k] = two_sum_error(sum[k], sum_lo[k], t);
+        sum_lo[k] = twofold_sum_error(sum[k], sum_lo[k], t);
         sum[k] = t;
     }
     const unit_twofold<T, Q> h = unit_of(sum, sum_lo);

@@ -1,11 +1,10 @@
 // phong: x^m on float SIMD lanes for the lighting model's domain (x in [0, 1], m >= 0): the power
-// of shade_batch's exact mode (math_traits<xsimd::batch<float>>::pow_unit, batch.hpp). Included by
-// batch.hpp after xsimd.
+// of shade_batch's exact mode (math_traits<xsimd::batch<float>>::pow_unit, math_traits.hpp).
 // SPDX-License-Identifier: MIT
 //
-// Why not exp(m log x) with xsimd's kernels (what double lanes use): their log divides (vdivps: one
-// per 6 cycles on Zen 4), both handle special values the model never passes, and together they
-// were a third of the lit pair's instructions. This is straight-line code, no division, no table:
+// Why not exp(m log x) with xsimd's kernels (what double lanes use): their log divides, and both
+// handle special values the model never passes (their cost: docs/batch.md). This is straight-line
+// code, no division, no table:
 //   x = 2^e f, f in [sqrt(1/2), sqrt(2)), by integer arithmetic on the bits (exact);
 //   log2 x = e + t P(t), t = f - 1 (exact), P of degree 8 (a Chebyshev fit of log2(1 + t) / t,
 //     truncation 3.0e-8 = 0.5 u relative; u = 2^-24);
@@ -29,13 +28,13 @@
 // and never undefined behaviour (NaN y is clamped like -inf).
 #pragma once
 
-#if __has_include(<xsimd/xsimd.hpp>) && !defined(__CUDACC__)
-#include <xsimd/xsimd.hpp>
-
-#include "../math.hpp"
+#include "backend.hpp"
 
 #include <cstdint>
 #include <limits>
+
+#if PHONG_HAS_XSIMD
+#include "diagnostics_push.hpp"
 
 namespace phong::detail::lanes {
 
@@ -53,19 +52,13 @@ constexpr double pow_unit_lanes_error(double y)
     return (3.5 * (y < 0 ? -y : y) + 2.5) * 0x1p-24;
 }
 
-#if defined(__GNUC__)
-#  define PHONG_LANES_POWER_INLINE inline __attribute__((always_inline))
-#else
-#  define PHONG_LANES_POWER_INLINE inline
-#endif
-
-/// a b + c rounded once (math_traits' fused instructions: xsimd 8.1's fma is not fused on AVX-512).
-template <class V> PHONG_LANES_POWER_INLINE V fused(const V& a, const V& b, const V& c) { return math_traits<V>::fma(a, b, c); }
+/// a b + c rounded once (detail::simd::fma: xsimd 8.1's fma is not fused on AVX-512).
+template <class V> PHONG_LANES_INLINE V fused(const V& a, const V& b, const V& c) { return simd::fma(a, b, c); }
 
 /// x = 2^e (1 + t) with 1 + t in [sqrt(1/2), sqrt(2)) for a positive normal x, exactly: subtracting
 /// the bits of sqrt(1/2) and shifting gives e (arithmetic shift: e < 0 for x < sqrt(1/2));
 /// removing e from the exponent field gives 1 + t, and t = (1 + t) - 1 is exact (Sterbenz).
-template <class V> PHONG_LANES_POWER_INLINE V split_exponent(const V& x, V& e)
+template <class V> PHONG_LANES_INLINE V split_exponent(const V& x, V& e)
 {
     using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
     const IV bits = xsimd::bitwise_cast<IV>(x);
@@ -75,7 +68,7 @@ template <class V> PHONG_LANES_POWER_INLINE V split_exponent(const V& x, V& e)
 }
 
 /// e + log2(1 + t) = e + t P(t) for t in [sqrt(1/2) - 1, sqrt(2) - 1].
-template <class V> PHONG_LANES_POWER_INLINE V log2_of_split(const V& t, const V& e)
+template <class V> PHONG_LANES_INLINE V log2_of_split(const V& t, const V& e)
 {
     V p(log2_coefficients[0]);
     for (int k = 1; k < 9; ++k) p = fused(p, t, V(log2_coefficients[k]));
@@ -86,7 +79,7 @@ template <class V> PHONG_LANES_POWER_INLINE V log2_of_split(const V& t, const V&
 /// where 2^y is 0 in float anyway; a NaN y is clamped like -inf). Finite: y known finite (not NaN),
 /// so AVX-512's scalef, which takes any k (2^r 2^k is 0 for k < -150 as for the clamped k = -150),
 /// needs no clamp; exponent-field arithmetic keeps it.
-template <class V, bool Finite = false> PHONG_LANES_POWER_INLINE V exp2_nonpositive(const V& y_in)
+template <class V, bool Finite = false> PHONG_LANES_INLINE V exp2_nonpositive(const V& y_in)
 {
     using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
 #if defined(__AVX512F__)
@@ -112,7 +105,7 @@ template <class V, bool Finite = false> PHONG_LANES_POWER_INLINE V exp2_nonposit
 
 /// 2^(m log2 x) for x in [0, 1] (0 and subnormals taken as 2^-126), m >= 0 finite; Finite: m <= 2^100
 /// (exp2_nonpositive: y = m log2 x is then finite, |y| <= 126 2^100).
-template <class V, bool Finite = false> PHONG_LANES_POWER_INLINE V power_of_log2(const V& x, const V& m)
+template <class V, bool Finite = false> PHONG_LANES_INLINE V power_of_log2(const V& x, const V& m)
 {
     V e;
     const V t = split_exponent(xsimd::max(x, V(std::numeric_limits<float>::min())), e); // 0, subnormals: 2^-126
@@ -122,7 +115,7 @@ template <class V, bool Finite = false> PHONG_LANES_POWER_INLINE V power_of_log2
 /// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound),
 /// with m_is_zero = (m == 0) given: a caller whose m is the same for many x (the light loop of
 /// shade_batch) computes it once. Edges: x <= 0 and NaN give 0^m (0, or 1 for m = 0).
-template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m, const typename V::batch_bool_type& m_is_zero)
+template <class V> PHONG_LANES_INLINE V pow_unit(const V& x, const V& m, const typename V::batch_bool_type& m_is_zero)
 {
     const V power = power_of_log2(x, m);
     // pow(0, m > 0) = 0 (2^(-126 m) above is not 0 for m < 1); pow(0, 0) = 1 comes out of y = 0.
@@ -134,10 +127,10 @@ template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m, c
 /// for the caller to select away (shade_batch: with the mask of the lit lanes, one compare per pair).
 /// With m <= 2^100, y = m log2 x is finite (|y| <= 126 2^100), so the exponential needs no clamp of
 /// y under AVX-512. The same bits as pow_unit where it is not selected away; the same bound.
-template <class V> PHONG_LANES_POWER_INLINE V pow_unit_positive(const V& x, const V& m) { return power_of_log2<V, true>(x, m); }
+template <class V> PHONG_LANES_INLINE V pow_unit_positive(const V& x, const V& m) { return power_of_log2<V, true>(x, m); }
 
 /// x^m lane-wise for x in [0, 1], m >= 0 finite.
-template <class V> PHONG_LANES_POWER_INLINE V pow_unit(const V& x, const V& m) { return pow_unit(x, m, m == V(0.0f)); }
+template <class V> PHONG_LANES_INLINE V pow_unit(const V& x, const V& m) { return pow_unit(x, m, m == V(0.0f)); }
 
 /// The documented relative error bound of pow_one_minus below, for y = m log2(1 - x) (results
 /// >= 2^-126): pow_unit's, plus the rounding of 1 - x (relative u, at most 2.9 u relative to
@@ -149,14 +142,14 @@ constexpr double pow_one_minus_lanes_error(double y)
 
 /// c^m = (1 - x)^m lane-wise from both forms of a cosine c in [0, 1]: its complement x = 1 - c and
 /// c itself, each a float of its own (the stable mode's r.v or n.h, computed in double and rounded
-/// twice: detail/stable_lanes.hpp), m >= 0 finite. As 2^(m log2 c): where c >= sqrt(1/2) the
+/// twice: detail/simd/stable_lanes.hpp), m >= 0 finite. As 2^(m log2 c): where c >= sqrt(1/2) the
 /// polynomial takes t = -x itself (log2(1 + t) = t P(t): no rounding of 1 - x, so a highlight's
 /// tiny x keeps its relative accuracy, as log1p does); below, c is split like pow_unit's base, so
 /// a small c keeps its relative accuracy too (1 - x rounded would leave it an absolute error of
 /// u). Error: pow_one_minus_lanes_error(m log2 c), relative to the power of the floats given (for
 /// the lanes where c >= sqrt(1/2), of 1 - x). Edges: x = 0 gives 1; c <= 0 gives 0 for m > 0 and
 /// 1 for m = 0.
-template <class V> PHONG_LANES_POWER_INLINE V pow_cosine(const V& x, const V& c, const V& m)
+template <class V> PHONG_LANES_INLINE V pow_cosine(const V& x, const V& c, const V& m)
 {
     V e;
     const V t_split = split_exponent(xsimd::max(c, V(std::numeric_limits<float>::min())), e);
@@ -170,12 +163,12 @@ template <class V> PHONG_LANES_POWER_INLINE V pow_cosine(const V& x, const V& c,
 /// 1 - n.h (specular.hpp's pow_one_minus), pow_cosine with c = 1 - x (exact for x >= 1/2, one
 /// rounding above). Error: pow_one_minus_lanes_error. Edges: x = 0 gives 1; x >= 1 gives 0 for
 /// m > 0 and 1 for m = 0.
-template <class V> PHONG_LANES_POWER_INLINE V pow_one_minus(const V& x, const V& m)
+template <class V> PHONG_LANES_INLINE V pow_one_minus(const V& x, const V& m)
 {
     return pow_cosine(x, V(1.0f) - x, m);
 }
 
-#undef PHONG_LANES_POWER_INLINE
-
 } // namespace phong::detail::lanes
-#endif // xsimd
+
+#include "diagnostics_pop.hpp"
+#endif // PHONG_HAS_XSIMD

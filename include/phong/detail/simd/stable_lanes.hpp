@@ -1,6 +1,5 @@
 // phong: the stable mode on float SIMD lanes (shade_batch<F> with F.mode = evaluation::stable and
 // float points on x86): the geometry of every pair in double lanes, the power and the sums in float.
-// Included by phong/batch.hpp once xsimd is in.
 // SPDX-License-Identifier: MIT
 //
 // Why double, and why only the geometry: float inputs fit double with room to spare. |d|^2 of a
@@ -21,21 +20,25 @@
 // route's (accuracy::bounds<stable, float, twofold>), tests/batch_accuracy.test.cpp.
 #pragma once
 
-#include "../direction.hpp"
-#include "../specular.hpp"
-#include "light_terms.hpp"
-#include "twofold.hpp"
+#include "backend.hpp"
+#include "lanes_power.hpp"
+#include "math_traits.hpp"
+#include "../../direction.hpp"
+#include "../../specular.hpp"
+#include "../light_terms.hpp"
+#include "../twofold.hpp"
 
 #include <limits>
 #include <type_traits>
 
 #if PHONG_HAS_XSIMD && defined(__SSE2__)
 #  include <immintrin.h>
-#  include "lanes_power.hpp"
 #  define PHONG_STABLE_LANES 1
 #else
 #  define PHONG_STABLE_LANES 0
 #endif
+
+#include "diagnostics_push.hpp"
 
 namespace phong::detail::stable_lanes {
 
@@ -148,7 +151,7 @@ template <class D> inline D inverse_length(const D& dd)
 /// least step over the longest float vector) and a nonzero component of l + v at least an ulp of
 /// that, 2^-331: a nonzero |l + v|^2 is above 2^-662, far inside double's normal range, and at
 /// most 4, so 1/|l + v| is inverse_length's, bit for bit, with one test instead of two and no
-/// select of the input (Blinn's stable lanes, K = 16: 5 % faster).
+/// select of the input.
 template <class D> inline D inverse_length_of_float_difference(const D& dd)
 {
     return xsimd::select(dd > D(0.0), rsqrt_normal(dd), D(0.0));
@@ -291,7 +294,7 @@ inline half_terms<D> half_light(const half_frame<D, Q>& s, const light<double, Q
 
 /// The specular power c^m of a step in float lanes: x and c rounded to float apiece (each keeps its
 /// relative accuracy where the kernel reads it: x near a highlight, c far from it), then
-/// detail/lanes_power.hpp's pow_cosine.
+/// detail/simd/lanes_power.hpp's pow_cosine.
 template <class V, class D> inline V power(const half_terms<D>& lo, const half_terms<D>& hi, const V& m)
 {
     return detail::lanes::pow_cosine(xsimd::max(join<V>(lo.x, hi.x), V(0.0f)), join<V>(lo.c, hi.c), m);
@@ -324,3 +327,5 @@ inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const ligh
 #endif
 
 } // namespace phong::detail::stable_lanes
+
+#include "diagnostics_pop.hpp"

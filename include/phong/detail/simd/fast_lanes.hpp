@@ -1,11 +1,19 @@
 // phong: fast::lanes for xsimd batches (the lane-wise bit access of phong/fast_math.hpp's kernels)
-// and the batches' fast::rsqrt. Included by phong/batch.hpp once xsimd is in.
+// and the batches' fast::rsqrt.
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "../fast_math.hpp"
+#include "backend.hpp"
+#include "math_traits.hpp"
+#include "../../fast_math.hpp"
+
+#include <cstdint>
+#include <limits>
+#include <type_traits>
 
 #if PHONG_HAS_XSIMD
+#include "diagnostics_push.hpp"
+
 namespace phong::fast {
 
 template <class T, class A>
@@ -67,4 +75,6 @@ private:
 };
 
 } // namespace phong::fast
-#endif
+
+#include "diagnostics_pop.hpp"
+#endif // PHONG_HAS_XSIMD
