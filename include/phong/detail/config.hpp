@@ -19,6 +19,29 @@
 #  define PHONG_HD
 #endif
 
+/// PHONG_INLINE marks every function on shade<F>'s per-point and per-light path (and the small
+/// public term functions): the compiler is told to inline it into the caller, so that a user's
+/// shading loop is one function at every optimization level, rather than leaving the decision to
+/// the inliner's size heuristics (which differ between compilers and between -O2 and -O3).
+/// It includes PHONG_HD. g++ and clang++: inline __attribute__((always_inline)); MSVC:
+/// __forceinline; CUDA: __host__ __device__ __forceinline__. Define PHONG_NO_FORCE_INLINE to get
+/// plain `inline` (e.g. to step through phong in a debugger), or define PHONG_INLINE yourself
+/// before including any phong header. always_inline and constexpr combine: constant evaluation
+/// is unaffected. A renderer's light_traits functions may use it too.
+#if !defined(PHONG_INLINE)
+#  if defined(PHONG_NO_FORCE_INLINE)
+#    define PHONG_INLINE PHONG_HD inline
+#  elif defined(__CUDACC__)
+#    define PHONG_INLINE __host__ __device__ __forceinline__
+#  elif defined(_MSC_VER) && !defined(__clang__)
+#    define PHONG_INLINE __forceinline
+#  elif defined(__GNUC__) || defined(__clang__)
+#    define PHONG_INLINE inline __attribute__((always_inline))
+#  else
+#    define PHONG_INLINE inline
+#  endif
+#endif
+
 namespace phong {
 
 /// A precondition handler: called with the failed check's message (validate's, naming the field
