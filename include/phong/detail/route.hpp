@@ -102,6 +102,14 @@ inline constexpr features without_specular = [] {
     return f;
 }();
 
+/// The lights of a std::array, unrolled at compile time (each_light; a function rather than a
+/// lambda, so that it carries the same inlining attribute as every step of the light loop).
+template <features F, class Sums, class Frame, class Lights, class M, std::size_t... I>
+PHONG_HD constexpr void each_array_light(Sums& sums, const Frame& s, const Lights& lights, M m, std::index_sequence<I...>)
+{
+    ((check_light(lights[I]), detail::add_light<F>(sums, s, lights[I], m, unweighted{})), ...);
+}
+
 /// Every light's terms added to the sums: a std::array unrolled at compile time, a masked or
 /// weighted list (visibility.hpp), or any input range of lights (views included).
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Frame, class Lights>
@@ -109,9 +117,7 @@ PHONG_HD constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&& li
 {
     using R = std::remove_cvref_t<Lights>;
     if constexpr (is_std_array<R>::value) {
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            ((check_light(lights[I]), detail::add_light<F>(sums, s, lights[I], m, unweighted{})), ...);
-        }(std::make_index_sequence<std::tuple_size_v<R>>{});
+        each_array_light<F>(sums, s, lights, m, std::make_index_sequence<std::tuple_size_v<R>>{});
     } else if constexpr (is_masked<R>::value) {
         std::uint64_t bits = lights.mask;
         for (auto&& L : lights.lights) {
