@@ -38,9 +38,9 @@ template <class V, class Enable = void>
 struct lanes {
     static_assert(std::is_same_v<V, float> || std::is_same_v<V, double>, "phong::fast: no lanes<V> for this type");
     using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>;
-    PHONG_HD static constexpr bits_t bits(V x) { return std::bit_cast<bits_t>(x); }
-    PHONG_HD static constexpr V from_bits(bits_t u) { return std::bit_cast<V>(u); }
-    PHONG_HD static constexpr V madd(V a, V b, V c) { return a * b + c; }
+    PHONG_INLINE static constexpr bits_t bits(V x) { return std::bit_cast<bits_t>(x); }
+    PHONG_INLINE static constexpr V from_bits(bits_t u) { return std::bit_cast<V>(u); }
+    PHONG_INLINE static constexpr V madd(V a, V b, V c) { return a * b + c; }
 };
 
 namespace detail {
@@ -73,7 +73,7 @@ inline constexpr float exp2_e[6] = {0x1p+0f, 0x1.62e43p-1f, 0x1.ebf906p-3f, 0x1.
 /// log2 x for x > 0 finite (subnormal x included). Other x give a finite value (no NaN): the
 /// callers select them away. x = 2^k f, f in [sqrt(1/2), sqrt(2)), log2 x = k + r P(r), r = f - 1.
 template <class V>
-PHONG_HD constexpr V log2_positive(V x)
+PHONG_INLINE constexpr V log2_positive(V x)
 {
     using S = scalar_t<V>;
     using fmt = format<S>;
@@ -101,7 +101,7 @@ PHONG_HD constexpr V log2_positive(V x)
 /// 2^y for y <= 0: y rounded to an integer n plus t in [-1/2, 1/2], 2^n from the exponent bits.
 /// y below the smallest normal exponent (or -inf) gives 0 (flushed); y > 0 is outside the domain.
 template <class V>
-PHONG_HD constexpr V exp2_nonpositive(V y)
+PHONG_INLINE constexpr V exp2_nonpositive(V y)
 {
     using S = scalar_t<V>;
     using fmt = format<S>;
@@ -136,7 +136,7 @@ inline constexpr double pow_unit_max_rel = 8e-6;
 /// inf (NaN x gives 1 for m = 0, else 0; x > 1 is treated as 1 only up to P's accuracy, so clamp x).
 /// Exact twin: phong::pow_unit (math.hpp). Branch-free: scalars and SIMD lanes alike.
 template <class V>
-PHONG_HD constexpr V pow_unit(V x, V m)
+PHONG_INLINE constexpr V pow_unit(V x, V m)
 {
     using S = scalar_t<V>;
     const V y = m * detail::log2_positive(x);
@@ -171,7 +171,7 @@ struct pow_integer_plan {
 
 /// The schedule of x^n for n in [0, pow_integer_max_exponent] (larger n: squarings up to 31, see
 /// pow_integer's precondition).
-PHONG_HD constexpr pow_integer_plan plan_pow_integer(unsigned n)
+PHONG_INLINE constexpr pow_integer_plan plan_pow_integer(unsigned n)
 {
     pow_integer_plan plan;
     if (n == 0) return plan;
@@ -184,7 +184,7 @@ PHONG_HD constexpr pow_integer_plan plan_pow_integer(unsigned n)
 /// Fast x^n with n's schedule given (plan_pow_integer(n)): see pow_integer(x, n) below. A power
 /// of two n <= 64 is a chain of squarings entered at its length (one jump, no test per squaring).
 template <class V>
-PHONG_HD constexpr V pow_integer(V x, const pow_integer_plan& plan)
+PHONG_INLINE constexpr V pow_integer(V x, const pow_integer_plan& plan)
 {
     using S = scalar_t<V>;
     V power = x;
@@ -217,7 +217,7 @@ PHONG_HD constexpr V pow_integer(V x, const pow_integer_plan& plan)
 /// gives 0 for n > 0; x = 1 gives exactly 1. Pre: n <= pow_integer_max_exponent (larger n: the
 /// result is still x^n rounded, but the bound grows as (n - 1) u). Exact twin: phong::pow_unit.
 template <class V>
-PHONG_HD constexpr V pow_integer(V x, unsigned n)
+PHONG_INLINE constexpr V pow_integer(V x, unsigned n)
 {
     return pow_integer(x, plan_pow_integer(n));
 }
@@ -236,7 +236,7 @@ template <class T> inline constexpr double reciprocal_max_rel = sizeof(T) == 4 ?
 /// subnormal, negative, NaN) give an unspecified value, maybe NaN (no guards: that is the point).
 /// Exact twin: 1 / x.
 template <class V>
-PHONG_HD constexpr V reciprocal_normal(V x)
+PHONG_INLINE constexpr V reciprocal_normal(V x)
 {
     if constexpr (requires { lanes<V>::reciprocal_normal(x); }) return lanes<V>::reciprocal_normal(x);
     else return V(scalar_t<V>(1)) / x;
@@ -259,7 +259,7 @@ template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7
 /// 1/sqrt(x) elsewhere (shade's fast mode never passes one: it drops such vectors first).
 /// Exact twin: phong::rsqrt (math.hpp).
 template <class V>
-PHONG_HD constexpr V rsqrt(V x)
+PHONG_INLINE constexpr V rsqrt(V x)
 {
     if constexpr (requires { lanes<V>::rsqrt(x); }) {
         return lanes<V>::rsqrt(x); // SIMD batches

@@ -184,7 +184,7 @@ inline constexpr features seed003_ads = glsl_ads;
 inline constexpr features seed003_diffuse = diffuse_only;
 
 /// The same feature set evaluated in another mode (e.g. with_mode(classic_phong, evaluation::stable)).
-PHONG_HD constexpr features with_mode(features f, evaluation mode)
+PHONG_INLINE constexpr features with_mode(features f, evaluation mode)
 {
     f.mode = mode;
     return f;

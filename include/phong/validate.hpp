@@ -15,28 +15,28 @@ namespace phong {
 /// first problem found, as a message naming the field.
 struct validation {
     const char* error = nullptr;
-    PHONG_HD constexpr explicit operator bool() const { return error == nullptr; }
-    PHONG_HD constexpr const char* message() const { return error ? error : "ok"; }
+    PHONG_INLINE constexpr explicit operator bool() const { return error == nullptr; }
+    PHONG_INLINE constexpr const char* message() const { return error ? error : "ok"; }
 };
 
 namespace detail {
 
 // Comparisons only: inf - inf (the usual x - x == 0 test) is not a constant expression, so that
 // test made validate() unusable in constant evaluation for infinite parameters. NaN compares false.
-template <class T> PHONG_HD constexpr bool finite(T x)
+template <class T> PHONG_INLINE constexpr bool finite(T x)
 {
     return x >= std::numeric_limits<T>::lowest() && x <= std::numeric_limits<T>::max();
 }
-template <class T> PHONG_HD constexpr bool finite_non_negative(T x) { return finite(x) && x >= T(0); }
+template <class T> PHONG_INLINE constexpr bool finite_non_negative(T x) { return finite(x) && x >= T(0); }
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr bool finite_non_negative(const glm::vec<L, T, Q>& v)
+PHONG_INLINE constexpr bool finite_non_negative(const glm::vec<L, T, Q>& v)
 {
     for (glm::length_t k = 0; k < L; ++k)
         if (!finite_non_negative(v[k])) return false;
     return true;
 }
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr bool finite(const glm::vec<L, T, Q>& v)
+PHONG_INLINE constexpr bool finite(const glm::vec<L, T, Q>& v)
 {
     for (glm::length_t k = 0; k < L; ++k)
         if (!finite(v[k])) return false;

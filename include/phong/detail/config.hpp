@@ -137,7 +137,7 @@ namespace phong::detail {
 /// in the failed comparison, clang in the call), which names the field (checked by
 /// tests/nan_policy/checks.cmake). A null message would be a constant expression: require never
 /// passes one.
-PHONG_HD constexpr void precondition_failed_see_phong_validate(const char* message) noexcept
+PHONG_INLINE constexpr void precondition_failed_see_phong_validate(const char* message) noexcept
 {
     const char unrelated = 0;
     if (message != nullptr && message < &unrelated) return;
@@ -146,7 +146,7 @@ PHONG_HD constexpr void precondition_failed_see_phong_validate(const char* messa
 /// Checks `ok`: a compile error in constant evaluation (naming the message), PHONG_ASSERT at run
 /// time (the precondition handler in debug builds, with the caller's file and line; nothing under
 /// NDEBUG or in CUDA device code).
-PHONG_HD constexpr void require(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
+PHONG_INLINE constexpr void require(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
                                 int line = PHONG_DETAIL_CALLER_LINE) noexcept
 {
     if (std::is_constant_evaluated()) {
