@@ -16,5 +16,6 @@
 #include "environment.hpp"
 #include "accuracy.hpp"
 #include "shade.hpp"
+#include "incident.hpp"
 #include "batch.hpp"
 #include "primitives.hpp"

@@ -180,6 +180,8 @@ PHONG_INLINE constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q
     if constexpr (F.unit_inputs) {
         check_unit(normal, "shade: normal must be unit length (features::unit_inputs)");
         if constexpr (F.view == view_model::given) check_unit(view, "shade: view vector must be unit length (features::unit_inputs)");
+        if constexpr (F.view == view_model::fixed_direction)
+            check_unit(glm::vec<3, T, Q>(env.eye), "shade: environment::eye.xyz must be unit length (fixed_direction, features::unit_inputs)");
     }
 }
 

@@ -103,7 +103,8 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T
 }
 
 /// The view vector v at Q: normalize(-Q) (eye_at_origin), the given vector normalized (given; as
-/// is with unit_inputs), the environment's direction (fixed_direction), or normalize(E.xyz - E.w Q)
+/// is with unit_inputs), the environment's direction normalized (fixed_direction; as is with
+/// unit_inputs), or normalize(E.xyz - E.w Q)
 /// (eye_point). Its square tells whether the inputs may be non-finite (fixed_direction: |Q|^2 does).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& given_view,
@@ -115,6 +116,7 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& po
         if constexpr (F.unit_inputs) return {given_view, T(1), mask_t<T>(true)}; // unit by precondition
         else return view_unit<F>(given_view, T(1));
     } else if constexpr (F.view == view_model::fixed_direction) {
+        if constexpr (F.unit_inputs) return {eye, phong::dot(position, position), mask_t<T>(true)}; // unit by precondition
         const vec3 v = phong::normalize(eye);
         return {v, phong::dot(position, position), phong::dot(v, v) > T(0)};
     } else if constexpr (F.view == view_model::eye_at_origin) {
