@@ -110,8 +110,11 @@ TEST_CASE_TEMPLATE("shade_incident: hand-worked values (Phong, Blinn, attenuatio
     CHECK(near(shade_incident<given_phong>(n, v, mat, lights, in, env), vec3<T>(T(0.02 + 0.4 + 0.16)), tol));
     CHECK(near(shade_incident<given_blinn>(n, v, mat, lights, in, env), vec3<T>(T(0.02 + 0.4 + 0.225)), tol));
     // polynomial attenuation at the given distance 5: f = 1 / (1 + 0.2 * 5 + 0.04 * 25) = 1/3
-    features att = given_phong;
-    att.attenuation = attenuation_model::polynomial;
+    constexpr features att = [] {
+        features f = given_phong;
+        f.attenuation = attenuation_model::polynomial;
+        return f;
+    }();
     std::array<light<T>, 1> attenuated = lights;
     attenuated[0].attenuation = falloff<T>{T(1), T(0.2), T(0.04)};
     CHECK(near(shade_incident<att>(n, v, mat, attenuated, in, env), vec3<T>(T(0.02 + (0.4 + 0.16) / 3)), tol));

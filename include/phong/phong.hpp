@@ -17,5 +17,6 @@
 #include "accuracy.hpp"
 #include "shade.hpp"
 #include "incident.hpp"
+#include "adapt.hpp"
 #include "batch.hpp"
 #include "primitives.hpp"

@@ -2,6 +2,7 @@
 // modes and light lists), compiled by tests/inlining/check.sh: every phong function must be
 // inlined into these extern "C" loops, so that the object file defines no phong symbol.
 // SPDX-License-Identifier: MIT
+#include <phong/adapt.hpp>
 #include <phong/phong.hpp>
 
 #include <array>
@@ -119,5 +120,29 @@ void user_incident(const vec3* n, const vec3* v, const unsigned* visible, const 
         const phong::surface<float> surf{.ka = kd[i], .kd = kd[i], .ks = vec3(0.5f), .shininess = exponent[i]};
         out[i] += phong::shade_incident<screen>(n[i], surf, user_lights(L, K), in, env);
     }
+}
+
+/// One screen-space fragment twice: with glm::vec3, and with a renderer's own vector type read
+/// through phong::vec3_of (check.sh: the two functions have the same number of instructions; one
+/// fragment and no loop, so that no unrolling or vectorization decision tells them apart).
+struct own3 {
+    float x, y, z;
+};
+constexpr phong::features screen_model{.scene_ambient = true, .light_ambient = false, .specular_gate = false,
+                                       .lights = phong::light_kind::directional, .view = phong::view_model::fixed_direction,
+                                       .unit_inputs = true};
+void user_screen_glm(const vec3* n, const vec3* kd, float exponent, const array_lights* L, const std::array<phong::incident<float>, 2>* in,
+                     vec3* out)
+{
+    const phong::environment<float> env{.ambient = vec3(0.1f), .eye = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)};
+    *out = phong::shade_incident<screen_model>(*n, phong::surface<float>{*kd, *kd, vec3(0.5f), exponent}, *L, *in, env);
+}
+void user_screen_own(const own3* n, const own3* kd, float exponent, const array_lights* L, const std::array<phong::incident<float>, 2>* in,
+                     own3* out)
+{
+    const phong::environment<float> env{.ambient = vec3(0.1f), .eye = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)};
+    const vec3 c = phong::shade_incident<screen_model>(phong::vec3_of(*n), phong::surface<float>{phong::vec3_of(*kd), phong::vec3_of(*kd), vec3(0.5f), exponent},
+                                                       *L, *in, env);
+    *out = own3{c.x, c.y, c.z};
 }
 }

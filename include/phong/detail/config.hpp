@@ -23,8 +23,10 @@
 /// public term functions): the compiler is told to inline it into the caller, so that a user's
 /// shading loop is one function at every optimization level, rather than leaving the decision to
 /// the inliner's size heuristics (which differ between compilers and between -O2 and -O3).
-/// It includes PHONG_HD. g++ and clang++: inline __attribute__((always_inline)); MSVC:
-/// __forceinline; CUDA: __host__ __device__ __forceinline__. Define PHONG_NO_FORCE_INLINE to get
+/// It includes PHONG_HD. g++ and clang++: inline __attribute__((always_inline)) when optimizing
+/// (-O1 and up: __OPTIMIZE__; at -O0, where nothing is fast anyway, plain inline, so that debug
+/// builds compile as quickly as without it); MSVC: __forceinline; CUDA: __host__ __device__
+/// __forceinline__. Define PHONG_NO_FORCE_INLINE to get
 /// plain `inline` (e.g. to step through phong in a debugger), or define PHONG_INLINE yourself
 /// before including any phong header. always_inline and constexpr combine: constant evaluation
 /// is unaffected. A renderer's light_traits functions may use it too.
@@ -35,7 +37,7 @@
 #    define PHONG_INLINE __host__ __device__ __forceinline__
 #  elif defined(_MSC_VER) && !defined(__clang__)
 #    define PHONG_INLINE __forceinline
-#  elif defined(__GNUC__) || defined(__clang__)
+#  elif (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__)
 #    define PHONG_INLINE inline __attribute__((always_inline))
 #  else
 #    define PHONG_INLINE inline
