@@ -13,6 +13,9 @@
 //    view vectors -ray.dir, one shadow mask per point) and the material ids with the scene's
 //    material table (material_table): one call for all primary hits.
 // The rasterizer's per-pixel normal is interpolated, not unit: it keeps the normalizing path.
+// The per-point wrappers below are PHONG_INLINE, as phong's own functions: a renderer's shading
+// loop then holds the whole lighting computation. Left to clang++ 14, shade_phong_screen stayed
+// out of line and cost a constant 15 to 19 ns more per fragment (docs/demo.md).
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -68,7 +71,7 @@ inline phong::material<float> make_material(const glm::vec3& ka, const glm::vec3
 /// `visible` (bit i: lights[i] not in shadow), nothing copied per hit. Light: the renderer's own
 /// light type (with a phong::light_traits specialization) or phong::light<float>.
 template <phong::features F, phong::light_source Light>
-inline glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, const glm::vec3& v, unsigned visible,
+PHONG_INLINE glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, const glm::vec3& v, unsigned visible,
                                     std::span<const Light> lights, const phong::material<float>& mat,
                                     const glm::vec3& ambient)
 {
@@ -79,7 +82,7 @@ inline glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, cons
 /// One hit with what the tracer has already (shade_incident): the shadow rays' unit directions
 /// and distances (shadow[i] for lights[i]), unit n and v = -ray.dir; no position.
 template <phong::features F, phong::light_source Light>
-inline glm::vec3 shade_phong_incident(const glm::vec3& n, const glm::vec3& v, unsigned visible, std::span<const Light> lights,
+PHONG_INLINE glm::vec3 shade_phong_incident(const glm::vec3& n, const glm::vec3& v, unsigned visible, std::span<const Light> lights,
                                       const phong::incident<float>* shadow, const phong::material<float>& mat, const glm::vec3& ambient)
 {
     const phong::environment<float> env{.ambient = ambient};
@@ -135,7 +138,7 @@ inline glm::mat3 normal_matrix(const glm::mat4& model_view) { return phong::norm
 
 /// One vertex through seed 003's pipeline: shade_vertex<F> (object-space position and normal).
 template <phong::features F>
-inline glm::vec3 shade_phong_vertex(const glm::vec3& p, const glm::vec3& n, const glm::mat4& model_view, const glm::mat3& normal_mat,
+PHONG_INLINE glm::vec3 shade_phong_vertex(const glm::vec3& p, const glm::vec3& n, const glm::mat4& model_view, const glm::mat3& normal_mat,
                                     const phong::material<float>& mat, std::span<const phong::light<float>> lights)
 {
     return phong::shade_vertex<F>(p, n, model_view, normal_mat, mat, lights);
@@ -143,7 +146,7 @@ inline glm::vec3 shade_phong_vertex(const glm::vec3& p, const glm::vec3& n, cons
 
 /// One fragment: shade<F> on the interpolated eye-space position and (not unit) normal.
 template <phong::features F>
-inline glm::vec3 shade_phong_fragment(const glm::vec3& eye_position, const glm::vec3& normal, const phong::material<float>& mat,
+PHONG_INLINE glm::vec3 shade_phong_fragment(const glm::vec3& eye_position, const glm::vec3& normal, const phong::material<float>& mat,
                                       std::span<const phong::light<float>> lights)
 {
     return phong::shade<F>(eye_position, normal, mat, lights);
@@ -189,7 +192,7 @@ inline phong::light<float> make_light_directional(const glm::vec3& direction, co
 /// the scene ambient times kd), the lights' directions given (incidents, the same for every fragment),
 /// no position.
 template <phong::features F>
-inline glm::vec3 shade_phong_screen(const glm::vec3& n, const glm::vec3& kd, const glm::vec3& ks, float exponent,
+PHONG_INLINE glm::vec3 shade_phong_screen(const glm::vec3& n, const glm::vec3& kd, const glm::vec3& ks, float exponent,
                                     std::span<const phong::light<float>> lights, std::span<const phong::incident<float>> incidents,
                                     float ambient)
 {
