@@ -29,21 +29,21 @@ namespace phong {
 /// Generic sphere: m' = P' - (0, 0, 0) = P' (seed 001, step 4.1).
 /// Pre: P' on the unit sphere (any P' gives the radial direction). Edge: P' = 0 gives 0.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr glm::vec<3, T, Q> sphere_normal(const glm::vec<3, T, Q>& p)
+PHONG_HD constexpr glm::vec<3, T, Q> sphere_normal(const glm::vec<3, T, Q>& p)
 {
     return p;
 }
 
 /// Generic plane z = 0: m' = (0, 0, 1) at every point (the +z side is the front).
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr glm::vec<3, T, Q> plane_normal(const glm::vec<3, T, Q>& /*p*/)
+PHONG_HD constexpr glm::vec<3, T, Q> plane_normal(const glm::vec<3, T, Q>& /*p*/)
 {
     return {T(0), T(0), T(1)};
 }
 
 /// Generic square z = 0, |x|, |y| <= 1: m' = (0, 0, 1), the plane's normal.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr glm::vec<3, T, Q> square_normal(const glm::vec<3, T, Q>& /*p*/)
+PHONG_HD constexpr glm::vec<3, T, Q> square_normal(const glm::vec<3, T, Q>& /*p*/)
 {
     return {T(0), T(0), T(1)};
 }
@@ -54,7 +54,7 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> square_normal(const glm::vec<3, T, Q>& 
 /// (x, y, 0). Pre: s >= 0, P' on the wall with 0 <= z <= 1. Edge: the apex of a cone (s = 0,
 /// z = 1, x = y = 0) has no normal and gives 0 (shade then adds no diffuse or specular).
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr glm::vec<3, T, Q> tapered_cylinder_wall_normal(const glm::vec<3, T, Q>& p, T s)
+PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_wall_normal(const glm::vec<3, T, Q>& p, T s)
 {
     const T k = s - T(1);
     return {p.x, p.y, -k * (T(1) + k * p.z)};
@@ -62,14 +62,14 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> tapered_cylinder_wall_normal(const glm:
 
 /// Base disk of the generic tapered cylinder (z = 0, radius 1): m' = (0, 0, -1), outward.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr glm::vec<3, T, Q> tapered_cylinder_base_normal(const glm::vec<3, T, Q>& /*p*/)
+PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_base_normal(const glm::vec<3, T, Q>& /*p*/)
 {
     return {T(0), T(0), T(-1)};
 }
 
 /// Cap disk of the generic tapered cylinder (z = 1, radius s): m' = (0, 0, 1), outward.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr glm::vec<3, T, Q> tapered_cylinder_cap_normal(const glm::vec<3, T, Q>& /*p*/)
+PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_cap_normal(const glm::vec<3, T, Q>& /*p*/)
 {
     return {T(0), T(0), T(1)};
 }
@@ -78,7 +78,7 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> tapered_cylinder_cap_normal(const glm::
 /// (outward face normal). Edge: on an edge or corner (a tie) the first axis in x, y, z order
 /// wins; p_k = 0 on that axis (only for P' = 0) gives +e_k. NaN components lose every comparison.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr glm::vec<3, T, Q> cube_normal(const glm::vec<3, T, Q>& p)
+PHONG_HD constexpr glm::vec<3, T, Q> cube_normal(const glm::vec<3, T, Q>& p)
 {
     const T ax = phong::abs(p.x), ay = phong::abs(p.y), az = phong::abs(p.z);
     if (ax >= ay && ax >= az) return {p.x < T(0) ? T(-1) : T(1), T(0), T(0)};
@@ -97,14 +97,14 @@ template <class T>
 struct ray_hit {
     T t = std::numeric_limits<T>::infinity();
     primitive_part part = primitive_part::none;
-    PHONG_INLINE constexpr explicit operator bool() const { return part != primitive_part::none; }
+    PHONG_HD constexpr explicit operator bool() const { return part != primitive_part::none; }
 };
 
 namespace detail {
 
 /// Keeps the nearer of two hits (the first on a tie).
 template <class T>
-PHONG_INLINE constexpr ray_hit<T> nearer(const ray_hit<T>& a, const ray_hit<T>& b)
+PHONG_HD constexpr ray_hit<T> nearer(const ray_hit<T>& a, const ray_hit<T>& b)
 {
     return b.t < a.t ? b : a;
 }
@@ -113,7 +113,7 @@ PHONG_INLINE constexpr ray_hit<T> nearer(const ray_hit<T>& a, const ray_hit<T>& 
 /// t = q / A and t = C / q (Numerical Recipes 5.6). A = 0 leaves the linear root -C / (2B).
 /// Returns the number of real roots written to t0, t1 (0, 1 or 2); they are not ordered.
 template <class T>
-PHONG_INLINE constexpr int quadratic_roots(T A, T B, T C, T& t0, T& t1)
+PHONG_HD constexpr int quadratic_roots(T A, T B, T C, T& t0, T& t1)
 {
     const T disc = B * B - A * C;
     if (!(disc >= T(0))) return 0; // also NaN
@@ -131,7 +131,7 @@ PHONG_INLINE constexpr int quadratic_roots(T A, T B, T C, T& t0, T& t1)
 
 /// The hit at the smaller of t0 and t1 that is > t_min (roots beyond the range are dropped).
 template <class T>
-PHONG_INLINE constexpr ray_hit<T> first_after(int count, T t0, T t1, T t_min, primitive_part part)
+PHONG_HD constexpr ray_hit<T> first_after(int count, T t0, T t1, T t_min, primitive_part part)
 {
     ray_hit<T> h;
     if (count >= 1 && t0 > t_min && t0 < std::numeric_limits<T>::infinity()) h = {t0, part}; // inf: beyond T's range, no hit
@@ -142,7 +142,7 @@ PHONG_INLINE constexpr ray_hit<T> first_after(int count, T t0, T t1, T t_min, pr
 /// Ray S + t c against the disk z = z0, x^2 + y^2 <= radius^2; the hit's time is reported as
 /// t_offset + t (the ray's origin S lies at time t_offset of the caller's ray; 0 + t is t).
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr ray_hit<T> ray_disk(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T z0, T radius, T t_min,
+PHONG_HD constexpr ray_hit<T> ray_disk(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T z0, T radius, T t_min,
                                        primitive_part part, T t_offset = T(0))
 {
     if (c.z == T(0)) return {};
@@ -157,7 +157,7 @@ PHONG_INLINE constexpr ray_hit<T> ray_disk(const glm::vec<3, T, Q>& S, const glm
 /// Slab method: the times [enter, leave] during which S + t c lies in the box lo <= P <= hi.
 /// Returns false when the ray's line misses the box, for c = 0 outside it, and for NaN input.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr bool ray_box(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& lo,
+PHONG_HD constexpr bool ray_box(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& lo,
                                 const glm::vec<3, T, Q>& hi, T& enter, T& leave)
 {
     const T inf = std::numeric_limits<T>::infinity();
@@ -182,7 +182,7 @@ PHONG_INLINE constexpr bool ray_box(const glm::vec<3, T, Q>& S, const glm::vec<3
 /// the ray S + t' (c s) is the same ray, t = t' s, exactly but for underflow); 0 when c = 0 or
 /// a component is inf or NaN (no hit).
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr T direction_scale(const glm::vec<3, T, Q>& c)
+PHONG_HD constexpr T direction_scale(const glm::vec<3, T, Q>& c)
 {
     constexpr T max = std::numeric_limits<T>::max();
     if (!(phong::abs(c.x) <= max && phong::abs(c.y) <= max && phong::abs(c.z) <= max)) return T(0);
@@ -193,7 +193,7 @@ PHONG_INLINE constexpr T direction_scale(const glm::vec<3, T, Q>& c)
 
 /// A hit h of the ray S + t' (c scale) as a hit of S + t c: t = t' scale, no hit where that is
 /// not after t_min or beyond T's range.
-template <class T> PHONG_INLINE constexpr ray_hit<T> scaled_back(const ray_hit<T>& h, T scale, T t_min)
+template <class T> PHONG_HD constexpr ray_hit<T> scaled_back(const ray_hit<T>& h, T scale, T t_min)
 {
     const T t = h.t * scale;
     if (!h || !(t > t_min) || t == std::numeric_limits<T>::infinity()) return {};
@@ -217,7 +217,7 @@ template <class T> PHONG_INLINE constexpr ray_hit<T> scaled_back(const ray_hit<T
 /// Accuracy: near tangency the hit is ill-conditioned (the roots merge); t is then as accurate
 /// as the rounding of S and c allows, about eps (t0 + t1) / |t0 - t1|.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
+PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
     const T a = phong::dot(c, c);
     if (!detail::normal_square(a)) [[unlikely]] { // c.c overflowed or underflowed, or c is 0 or NaN
@@ -247,7 +247,7 @@ PHONG_INLINE constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const g
 /// Edge: a ray parallel to the plane (c.z = 0), even one lying in it, gives no hit; so does a
 /// time that overflows to inf.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr ray_hit<T> ray_plane(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
+PHONG_HD constexpr ray_hit<T> ray_plane(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
     if (c.z == T(0)) return {};
     const T t = -S.z / c.z;
@@ -258,7 +258,7 @@ PHONG_INLINE constexpr ray_hit<T> ray_plane(const glm::vec<3, T, Q>& S, const gl
 /// Ray S + t c against the generic square z = 0, |x| <= 1, |y| <= 1 (edges included).
 /// Part: surface. Edge: as ray_plane; a hit outside the square is no hit.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr ray_hit<T> ray_square(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
+PHONG_HD constexpr ray_hit<T> ray_square(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
     const ray_hit<T> h = phong::ray_plane(S, c, t_min);
     if (!h) return h;
@@ -271,7 +271,7 @@ namespace detail {
 /// The tapered cylinder's hits of the ray S + t c, reported at times t_offset + t (see
 /// ray_tapered_cylinder).
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr ray_hit<T> tapered_cylinder_hits(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s, T t_min,
+PHONG_HD constexpr ray_hit<T> tapered_cylinder_hits(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s, T t_min,
                                                     T t_offset)
 {
     const T k = s - T(1);
@@ -310,7 +310,7 @@ PHONG_INLINE constexpr ray_hit<T> tapered_cylinder_hits(const glm::vec<3, T, Q>&
 /// radius 0 is never hit) and the apex is a wall hit; a ray along a generator line (A = 0) uses
 /// the linear root; c = 0, NaN, inf and a hit at t = inf give no hit.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s,
+PHONG_HD constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s,
                                                    T t_min = T(0))
 {
     if (!detail::normal_square(phong::dot(c, c))) [[unlikely]] { // as in ray_sphere
@@ -332,7 +332,7 @@ PHONG_INLINE constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& 
 /// > t_min, else the exit time (a ray starting inside). Part: surface; cube_normal gives m'.
 /// Edge: a ray parallel to a pair of faces and outside their slab misses; c = 0 and NaN miss.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr ray_hit<T> ray_cube(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
+PHONG_HD constexpr ray_hit<T> ray_cube(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
     const T inf = std::numeric_limits<T>::infinity();
     T enter = -inf, leave = inf;
@@ -345,7 +345,7 @@ PHONG_INLINE constexpr ray_hit<T> ray_cube(const glm::vec<3, T, Q>& S, const glm
 /// The generic normal m' of the tapered cylinder part hit (wall, base or cap) at P'.
 /// Edge: part none or surface gives 0 (no normal).
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr glm::vec<3, T, Q> tapered_cylinder_normal(const glm::vec<3, T, Q>& p, T s, primitive_part part)
+PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_normal(const glm::vec<3, T, Q>& p, T s, primitive_part part)
 {
     switch (part) {
     case primitive_part::wall: return phong::tapered_cylinder_wall_normal(p, s);
