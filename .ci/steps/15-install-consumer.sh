@@ -8,6 +8,8 @@
 # with -march=native and -Wall -Wextra -Wpedantic -Werror, phong's headers not treated as system
 # headers (issue 13: warning-free in users' builds), at -O1 and -O3 (and -O3 without -march=native), with g++ and clang++; built once
 # more with -DPHONG_USE_XSIMD=OFF (g++, -O3 only), which must reach the code as PHONG_NO_XSIMD.
+# Issue 27: consumers with cmake_minimum_required(2.8.12) and (3.5) (tests/consumer_old), and a
+# Meson consumer through the installed pkg-config file (tests/consumer_meson).
 set -euo pipefail
 root="$PWD"
 tmp="$(mktemp -d)"
@@ -33,6 +35,23 @@ for cxx in g++ clang++; do
   cmake --build "$tmp/consumer-$cxx"
   "$tmp/consumer-$cxx/app"
 done
+# An old cmake_minimum_required (2.8.12, 3.5): phongConfig.cmake sets the policies it needs itself.
+for min in 2.8.12 3.5; do
+  mkdir -p "$tmp/old-src-$min"
+  sed "s/@MIN@/$min/" "$root/tests/consumer_old/CMakeLists.txt.in" >"$tmp/old-src-$min/CMakeLists.txt"
+  cp "$root/tests/consumer/main.cpp" "$tmp/old-src-$min/"
+  cmake -S "$tmp/old-src-$min" -B "$tmp/old-$min" -G Ninja -Wno-deprecated -DCMAKE_PREFIX_PATH="$tmp/prefix" \
+    -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Werror" >/dev/null
+  cmake --build "$tmp/old-$min" >/dev/null
+  "$tmp/old-$min/old_app"
+  echo "15-install-consumer: a consumer with cmake_minimum_required($min) built and ran"
+done
+# pkg-config and Meson: the installed share/pkgconfig/phong.pc.
+export PKG_CONFIG_PATH="$tmp/prefix/share/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}"
+pkg-config --cflags phong
+meson setup "$tmp/meson" "$root/tests/consumer_meson" >/dev/null
+meson test -C "$tmp/meson" --print-errorlogs
+echo "15-install-consumer: a Meson consumer found phong through pkg-config, built and ran"
 batch_user() { # batch_user <name> <compiler> <levels> [extra cmake args]
   local name="$1" cxx="$2" levels="$3" level
   shift 3

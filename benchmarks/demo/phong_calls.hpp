@@ -13,6 +13,9 @@
 //    view vectors -ray.dir, one shadow mask per point) and the material ids with the scene's
 //    material table (material_table): one call for all primary hits.
 // The rasterizer's per-pixel normal is interpolated, not unit: it keeps the normalizing path.
+// The per-point wrappers below are PHONG_INLINE, as phong's own functions: a renderer's shading
+// loop then holds the whole lighting computation. Left to clang++ 14, shade_phong_screen stayed
+// out of line and cost a constant 15 to 19 ns more per fragment (docs/demo.md).
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -68,12 +71,23 @@ inline phong::material<float> make_material(const glm::vec3& ka, const glm::vec3
 /// `visible` (bit i: lights[i] not in shadow), nothing copied per hit. Light: the renderer's own
 /// light type (with a phong::light_traits specialization) or phong::light<float>.
 template <phong::features F, phong::light_source Light>
-inline glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, const glm::vec3& v, unsigned visible,
+PHONG_INLINE glm::vec3 shade_phong_scalar(const glm::vec3& P, const glm::vec3& n, const glm::vec3& v, unsigned visible,
                                     std::span<const Light> lights, const phong::material<float>& mat,
                                     const glm::vec3& ambient)
 {
     const phong::environment<float> env{.ambient = ambient};
     return phong::shade<F>(P, n, v, mat, phong::masked(lights, visible), env);
+}
+
+/// One hit with what the tracer has already (shade_incident): the shadow rays' unit directions
+/// and distances (shadow[i] for lights[i]), unit n and v = -ray.dir; no position.
+template <phong::features F, phong::light_source Light>
+PHONG_INLINE glm::vec3 shade_phong_incident(const glm::vec3& n, const glm::vec3& v, unsigned visible, std::span<const Light> lights,
+                                      const phong::incident<float>* shadow, const phong::material<float>& mat, const glm::vec3& ambient)
+{
+    const phong::environment<float> env{.ambient = ambient};
+    return phong::shade_incident<F>(n, v, mat, phong::masked(lights, visible), std::span<const phong::incident<float>>(shadow, lights.size()),
+                                    env);
 }
 
 /// Scratch arrays of shade_phong_fragments_batch, kept between calls.
@@ -124,7 +138,7 @@ inline glm::mat3 normal_matrix(const glm::mat4& model_view) { return phong::norm
 
 /// One vertex through seed 003's pipeline: shade_vertex<F> (object-space position and normal).
 template <phong::features F>
-inline glm::vec3 shade_phong_vertex(const glm::vec3& p, const glm::vec3& n, const glm::mat4& model_view, const glm::mat3& normal_mat,
+PHONG_INLINE glm::vec3 shade_phong_vertex(const glm::vec3& p, const glm::vec3& n, const glm::mat4& model_view, const glm::mat3& normal_mat,
                                     const phong::material<float>& mat, std::span<const phong::light<float>> lights)
 {
     return phong::shade_vertex<F>(p, n, model_view, normal_mat, mat, lights);
@@ -132,7 +146,7 @@ inline glm::vec3 shade_phong_vertex(const glm::vec3& p, const glm::vec3& n, cons
 
 /// One fragment: shade<F> on the interpolated eye-space position and (not unit) normal.
 template <phong::features F>
-inline glm::vec3 shade_phong_fragment(const glm::vec3& eye_position, const glm::vec3& normal, const phong::material<float>& mat,
+PHONG_INLINE glm::vec3 shade_phong_fragment(const glm::vec3& eye_position, const glm::vec3& normal, const phong::material<float>& mat,
                                       std::span<const phong::light<float>> lights)
 {
     return phong::shade<F>(eye_position, normal, mat, lights);
@@ -153,6 +167,37 @@ inline void shade_phong_fragments_batch(std::span<const glm::vec3> P, std::span<
     phong::shade_batch<F>(phong::soa3<float>{in(s.px), in(s.py), in(s.pz)}, phong::soa3<float>{in(s.nx), in(s.ny), in(s.nz)}, mat, lights,
                           phong::soa_rgba<float>{std::span<float>(s.r), std::span<float>(s.g), std::span<float>(s.b), {}});
     for (std::size_t i = 0; i < N; ++i) out[i] = glm::vec3(s.r[i], s.g[i], s.b[i]);
+}
+
+// ---- Screen-space rasterizer (issue 27) ------------------------------------------------------
+
+/// The screen-space model of a software rasterizer: ambient kd + sum over directional lights of
+/// colour (kd max(n.l, 0) + ks max(r.v, 0)^e), the view along +z (fixed_direction, environment::eye
+/// = (0, 0, 1, 0), used as given: unit_inputs), no specular gate (as the inline code), n unit.
+inline constexpr phong::features screen_exact{
+    .scene_ambient = true, .light_ambient = false, .diffuse = true, .specular = phong::specular_model::phong,
+    .specular_gate = false, .lights = phong::light_kind::directional, .view = phong::view_model::fixed_direction,
+    .unit_inputs = true};
+inline constexpr phong::features screen_stable = phong::presets::with_mode(screen_exact, phong::evaluation::stable);
+
+/// A directional light for phong: w = 0, one colour for diffuse and specular, no ambient.
+inline phong::light<float> make_light_directional(const glm::vec3& direction, const glm::vec3& colour)
+{
+    phong::light<float> L = make_light(direction, colour);
+    L.position.w = 0.0f;
+    return L;
+}
+
+/// One fragment in screen space: the texture maps' kd, ks and exponent as a phong::surface (ka = kd:
+/// the scene ambient times kd), the lights' directions given (incidents, the same for every fragment),
+/// no position.
+template <phong::features F>
+PHONG_INLINE glm::vec3 shade_phong_screen(const glm::vec3& n, const glm::vec3& kd, const glm::vec3& ks, float exponent,
+                                    std::span<const phong::light<float>> lights, std::span<const phong::incident<float>> incidents,
+                                    float ambient)
+{
+    const phong::environment<float> env{.ambient = glm::vec3(ambient), .eye = glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)};
+    return phong::shade_incident<F>(n, phong::surface<float>{.ka = kd, .kd = kd, .ks = ks, .shininess = exponent}, lights, incidents, env);
 }
 
 } // namespace phong_calls

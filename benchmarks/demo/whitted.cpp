@@ -134,6 +134,7 @@ intersection intersect(const scene& sc, const ray& r, float t_min)
 struct hit_record {
     vec3 position, normal, view; ///< normal and view unit, view = -ray.dir, normal facing the ray
     unsigned visible;            ///< bit i: lights[i] not in shadow
+    phong::incident<float> shadow[phong_calls::max_lights]; ///< the shadow rays: unit direction toward lights[i] and its distance
     int material;
     vec3 weight; ///< product of kr / kt along the path
     int pixel;
@@ -189,7 +190,9 @@ frame trace_frame(const scene& sc, int width, int height)
                 for (std::size_t i = 0; i < sc.lights.size(); ++i) {
                     const vec3 to_light = sc.lights[i].position - h.position;
                     const float dist = glm::length(to_light);
-                    const intersection sh = intersect(sc, {h.position + 1e-3f * h.normal, to_light / dist}, 1e-4f);
+                    const vec3 dir = to_light / dist;
+                    h.shadow[i] = {dir, dist};
+                    const intersection sh = intersect(sc, {h.position + 1e-3f * h.normal, dir}, 1e-4f);
                     if (!(sh.t < dist)) h.visible |= 1u << i;
                 }
                 h.weight = tk.weight;
@@ -233,6 +236,27 @@ glm::vec<3, T> shade_inline(const hit_record& h, const scene& sc)
     return colour;
 }
 
+/// The same lighting as an expert writes it: the shadow rays' unit directions reused (nothing
+/// of L - P recomputed), r.v as 2 (n.l)(n.v) - l.v. The baseline of issue 27's table.
+template <class T>
+glm::vec<3, T> shade_inline_reuse(const hit_record& h, const scene& sc)
+{
+    using V = glm::vec<3, T>;
+    const tracer_material& m = sc.materials[std::size_t(h.material)];
+    const V n(h.normal), v(h.view), kd(m.kd), ks(m.ks);
+    const T shininess = T(m.shininess), nv = glm::dot(n, v);
+    V colour = V(m.ka) * V(sc.ambient);
+    for (std::size_t i = 0; i < sc.lights.size(); ++i) {
+        if (!(h.visible & (1u << i))) continue;
+        const V l(h.shadow[i].direction);
+        const T nl = glm::dot(l, n);
+        const T lambert = std::max(T(0), nl);
+        const T spec = std::pow(std::max(T(0), T(2) * nl * nv - glm::dot(l, v)), shininess);
+        colour += V(sc.lights[i].colour) * (kd * lambert + ks * spec);
+    }
+    return colour;
+}
+
 /// The materials as phong takes them, converted once (not timed); lights as phong::light<float>
 /// for the kernel reference only (the phong methods read the tracer's own lights).
 struct phong_scene {
@@ -259,6 +283,22 @@ void shade_all_phong(const std::vector<hit_record>& hits, const scene& sc, const
         const hit_record& h = hits[i];
         out[i] = phong_calls::shade_phong_scalar<F>(h.position, h.normal, h.view, h.visible, std::span<const point_light>(sc.lights),
                                                    ps.materials[std::size_t(h.material)], sc.ambient);
+    }
+}
+
+void shade_all_inline_reuse(const std::vector<hit_record>& hits, const scene& sc, std::vector<vec3>& out)
+{
+    for (std::size_t i = 0; i < hits.size(); ++i) out[i] = shade_inline_reuse<float>(hits[i], sc);
+}
+
+/// phong with what the tracer has: the shadow rays' directions and distances (shade_incident).
+template <phong::features F>
+void shade_all_incident(const std::vector<hit_record>& hits, const scene& sc, const phong_scene& ps, std::vector<vec3>& out)
+{
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+        const hit_record& h = hits[i];
+        out[i] = phong_calls::shade_phong_incident<F>(h.normal, h.view, h.visible, std::span<const point_light>(sc.lights), h.shadow,
+                                                     ps.materials[std::size_t(h.material)], sc.ambient);
     }
 }
 
@@ -377,10 +417,11 @@ int main(int argc, char** argv)
         W, H, opt.reps);
     struct checks {
         int lights;
-        renderers::image_diff exact_inline, stable_double, exact_double, batch_inline;
+        renderers::image_diff exact_inline, stable_double, exact_double, batch_inline, incident_reuse, incident_stable_double;
     };
     std::vector<checks> results;
     std::vector<std::string> rows_cpu, rows_wall; // the timing tables, one row per light count
+    std::vector<std::string> rows_given, rows_machine; // issue 27: phong with the shadow rays' l and distance against the expert inline
     std::vector<std::pair<int, double>> speedups; // scalar phong / batch on the primary hits (CPU time), per light count
     std::vector<coherence_stats> coherence;       // the primary hits' steps, per light count
     std::vector<std::pair<double, double>> floors; // ns per primary hit: stream_floor, and scalar phong / 4 (the batch target)
@@ -392,6 +433,7 @@ int main(int argc, char** argv)
         double visible = 0.0;
         for (const hit_record& h : f.hits) visible += double(std::popcount(h.visible));
 
+        std::vector<vec3> c_reuse(N), c_incident(N), c_incident_stable(N);
         std::vector<vec3> c_inline(N), c_exact(N), c_stable(N), p_inline(NP), p_exact(NP), p_batch(NP), p_kernel(NP), p_floor(NP);
         std::vector<glm::dvec3> c_double(N);
         primary_arrays pa;
@@ -413,6 +455,9 @@ int main(int argc, char** argv)
             [&] { shade_all_batch(pa, sc, ps, p_batch); },
             [&] { shade_kernel_reference(kernel_in, ps, sc, p_kernel); },
             [&] { stream_floor(pa, p_floor); },
+            [&] { shade_all_inline_reuse(f.hits, sc, c_reuse); },
+            [&] { shade_all_incident<phong_calls::whitted_exact>(f.hits, sc, ps, c_incident); },
+            [&] { shade_all_incident<phong_calls::whitted_stable>(f.hits, sc, ps, c_incident_stable); },
         });
         for (std::size_t i = 0; i < N; ++i) c_double[i] = shade_inline<double>(f.hits[i], sc);
 
@@ -427,6 +472,15 @@ int main(int argc, char** argv)
             rows->push_back(row);
         }
         speedups.push_back({light_count, t.cpu[4] / t.cpu[5]});
+        {
+            const std::vector<double>& x = t.cpu;
+            char row[300];
+            std::snprintf(row, sizeof row, "%-6d %9zu | %8.2f %8.2f | %8.2f (%.2f) %8.2f (%.2f) | %8.2f (%.2f)\n", light_count, N, x[0] * ns,
+                          x[8] * ns, x[9] * ns, x[9] / x[8], x[10] * ns, x[10] / x[8], x[1] * ns, x[1] / x[8]);
+            rows_given.push_back(row);
+            std::snprintf(row, sizeof row, "TABLE27 whitted %d %.3f %.3f\n", light_count, x[9] / x[8], x[10] / x[8]);
+            rows_machine.push_back(row);
+        }
         floors.push_back({t.cpu[7] * pns, t.cpu[4] * pns / 4});
 
         const image<float> i_inline = compose<float>(f, c_inline, W, H), i_exact = compose<float>(f, c_exact, W, H),
@@ -443,7 +497,9 @@ int main(int argc, char** argv)
         results.push_back({light_count, compare(to_rgb8(i_exact), to_rgb8(i_inline)), compare(to_rgb8(i_stable), to_rgb8(i_double)),
                            compare(to_rgb8(i_exact), to_rgb8(i_double)),
                            compare(to_rgb8(primary_image(f, p_batch, W, H, sc.background)),
-                                   to_rgb8(primary_image(f, p_inline, W, H, sc.background)))});
+                                   to_rgb8(primary_image(f, p_inline, W, H, sc.background))),
+                           compare(to_rgb8(compose<float>(f, c_incident, W, H)), to_rgb8(compose<float>(f, c_reuse, W, H))),
+                           compare(to_rgb8(compose<float>(f, c_incident_stable, W, H)), to_rgb8(i_double))});
     }
     for (const auto& [clock, rows] : {std::pair{"thread CPU time", &rows_cpu}, std::pair{"wall clock, steady_clock", &rows_wall}}) {
         out("\nns per shaded point, %s; (x) = ratio to inline; right: primary hits only, against inline over the same hits;\n"
@@ -453,6 +509,12 @@ int main(int argc, char** argv)
             "phong stable", "primary", "inline", "phong exact", "batch", "kernel", "overhead", "speed-up");
         for (const std::string& r : *rows) out("%s", r.c_str());
     }
+    out("\nwith what the tracer has (issue 27): ns per shaded point, thread CPU time; expert inline = the shadow rays' l reused;\n"
+        "phong exact / stable = shade_incident (l and distance given, unit n and v), (x) = ratio to the expert inline;\n"
+        "phong shade<F> = the position-based call (recomputes L - P), for reference\n");
+    out("%-6s %9s | %8s %8s | %15s %15s | %15s\n", "lights", "points", "inline", "expert", "phong exact", "phong stable", "phong shade<F>");
+    for (const std::string& r : rows_given) out("%s", r.c_str());
+    for (const std::string& r : rows_machine) out("%s", r.c_str());
     bool fast = true;
     out("\nbatch target (issue 13: shade_batch on the primary hits, packing included, >= 4x faster than scalar phong exact over the "
         "same hits, thread CPU time):");
@@ -478,6 +540,13 @@ int main(int argc, char** argv)
             renderers::verdict(a, ok), c.stable_double.differing, c.stable_double.max_levels, renderers::verdict(b, ok),
             c.exact_double.differing, c.exact_double.max_levels, c.batch_inline.differing, c.batch_inline.max_levels);
     }
+    out("shade_incident images: exact vs expert inline, stable vs double (pixels differing / max levels):");
+    for (const checks& c : results) {
+        const bool a = c.incident_reuse.max_levels <= 1, b = c.incident_stable_double.max_levels <= 1;
+        out(" %d light%s %zu / %d %s, %zu / %d %s;", c.lights, c.lights == 1 ? "" : "s", c.incident_reuse.differing, c.incident_reuse.max_levels,
+            renderers::verdict(a, ok), c.incident_stable_double.differing, c.incident_stable_double.max_levels, renderers::verdict(b, ok));
+    }
+    out("\n");
     out("image targets (max 1 level: phong exact vs inline, phong stable vs double): %s\n", ok ? "PASS" : "FAIL");
     return ok ? 0 : 1;
 }

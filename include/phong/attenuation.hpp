@@ -37,7 +37,7 @@ struct falloff {
 /// Floor: the type whose attenuation_denominator_min applies (T's scalar; float lights evaluated
 /// in double pass float, so the result is float's formula evaluated in double).
 template <class T, class Floor = scalar_t<T>>
-PHONG_HD constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
+PHONG_INLINE constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 {
     d = phong::min(d, largest<T>()); // inf -> max: keeps c2 * d finite
     const T denominator = c0 + d * (c1 + c2 * d);
@@ -51,7 +51,7 @@ PHONG_HD constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 /// Floor: as for attenuation_polynomial. The floor bounds d^2 before the window multiplies, so
 /// capping the quotient afterwards would differ (by up to 1/window^2) where d^2 < the floor.
 template <class T, class Floor = scalar_t<T>>
-PHONG_HD constexpr T attenuation_windowed(T d, T range)
+PHONG_INLINE constexpr T attenuation_windowed(T d, T range)
 {
     d = phong::min(d, largest<T>());
     const T ratio = phong::min(d / range, T(65536)); // ratio^4 stays finite; window is 0 anyway
@@ -73,7 +73,7 @@ struct spot_cone {
     /// Edge: a zero axis or a cutoff outside that range (negative, above 90 other than 180, NaN)
     /// makes a cone validate(light) rejects, naming light.spot.direction or light.spot.cos_cutoff
     /// (the cosine alone cannot tell -10 from 10 degrees, so such a cutoff stores cos_cutoff = 2).
-    PHONG_HD static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
+    PHONG_INLINE static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
     {
         spot_cone s;
         s.direction = phong::normalize(axis);
@@ -87,7 +87,7 @@ struct spot_cone {
     /// inner > outer makes a cone validate(light) rejects (light.spot.direction; light.spot.cos_inner
     /// or light.spot.cos_outer, stored as 2 for an angle out of range; light.spot.cos_outer for
     /// inner > outer); inner = outer: a hard edge.
-    PHONG_HD static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
+    PHONG_INLINE static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
     {
         spot_cone s;
         s.direction = phong::normalize(axis);
@@ -104,8 +104,10 @@ struct spot_cone {
 /// cutoff, then 0^e (1 for e = 0). e = 0 gives a hard-edged cone of strength 1. spot <= 1: the
 /// base is clamped at 1, since rounding (or an axis accepted by validate within 1e-3 of unit
 /// length) can give c slightly above 1, and (1 + eps)^e overflows for large e.
+// Not PHONG_INLINE: left to the compiler (docs/compilers.md, "Inlining": forcing this one exposed a
+// g++ 12 -O3 vectorization that took the stable route with a spot past its 1-ulp bound).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
+PHONG_HD inline constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
 {
     const mask_t<T> no_cone = cos_cutoff <= T(-1);
     if (math_traits<T>::all(no_cone)) return T(1); // 180 degrees: skip the power (every lane of a batch)
@@ -118,8 +120,9 @@ PHONG_HD constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T
 /// spot = t^2 (3 - 2 t) (smoothstep), c = dot(-l, s).
 /// Pre: l, s unit; cos_outer <= cos_inner. Edge: cos_inner == cos_outer gives a hard edge
 /// (1 where c >= cos_outer, else 0), no division by zero; cos_outer = -1 and cos_inner = -1 give 1.
+// Not PHONG_INLINE: as spot_opengl.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T cos_inner, T cos_outer)
+PHONG_HD inline constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T cos_inner, T cos_outer)
 {
     const T c = -phong::dot(l, s);
     const T width = cos_inner - cos_outer;

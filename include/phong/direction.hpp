@@ -15,7 +15,7 @@ namespace detail {
 /// directional (w = 0: P.xyz, Q not read). The one place the rule is written: toward(), the view
 /// vector and every evaluation route's light vector call it.
 template <light_kind K = light_kind::any, class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> homogeneous_difference(const glm::vec<3, T, Q>& xyz, [[maybe_unused]] T w,
+PHONG_INLINE constexpr glm::vec<3, T, Q> homogeneous_difference(const glm::vec<3, T, Q>& xyz, [[maybe_unused]] T w,
                                                             [[maybe_unused]] const glm::vec<3, T, Q>& point)
 {
     if constexpr (K == light_kind::directional) return xyz;
@@ -44,7 +44,7 @@ struct direction_and_distance {
 /// the direction stays a unit vector, the distance is inf only when the true one exceeds the
 /// largest T. NaN or inf in P or Q: NaN components.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& P, const glm::vec<3, T, Q>& point)
+PHONG_INLINE constexpr direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& P, const glm::vec<3, T, Q>& point)
 {
     const glm::vec<3, T, Q> xyz(P.x, P.y, P.z);
     const glm::vec<3, T, Q> full = detail::homogeneous_difference(xyz, P.w, point);
@@ -60,7 +60,7 @@ PHONG_HD constexpr direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& 
 /// Seed 000's light direction \hat l_i from a homogeneous light position L (w = 1 or 0), eye coords.
 /// The same as toward(L, Q).direction; see there for domain and edges.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> light_direction(const glm::vec<4, T, Q>& L, const glm::vec<3, T, Q>& point)
+PHONG_INLINE constexpr glm::vec<3, T, Q> light_direction(const glm::vec<4, T, Q>& L, const glm::vec<3, T, Q>& point)
 {
     return phong::toward(L, point).direction;
 }

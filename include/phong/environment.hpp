@@ -23,7 +23,7 @@ struct environment {
 /// Checks an environment against the model's domain. Rejected: a negative, NaN or inf ambient;
 /// a finite eye.w < 0. Not rejected: a NaN or inf eye (shade's NaN policy: NaN in every channel).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr validation validate(const environment<T, Q>& e)
+PHONG_INLINE constexpr validation validate(const environment<T, Q>& e)
 {
     if (!detail::finite_non_negative(e.ambient)) return {"environment.ambient: negative, NaN or inf"};
     if (detail::finite(e.eye.w) && e.eye.w < T(0)) return {"environment.eye.w: must be >= 0 (1: a point, 0: a direction)"};

@@ -40,11 +40,11 @@ struct lanes {
     static_assert(std::is_same_v<V, float> || std::is_same_v<V, double>, "phong::fast: no lanes<V> for this type");
     using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>; ///< V's bits as an unsigned integer
     /// The bits of x.
-    PHONG_HD static constexpr bits_t bits(V x) { return std::bit_cast<bits_t>(x); }
+    PHONG_INLINE static constexpr bits_t bits(V x) { return std::bit_cast<bits_t>(x); }
     /// The V whose bits are u.
-    PHONG_HD static constexpr V from_bits(bits_t u) { return std::bit_cast<V>(u); }
+    PHONG_INLINE static constexpr V from_bits(bits_t u) { return std::bit_cast<V>(u); }
     /// a * b + c (contracted to an fma where the compiler does).
-    PHONG_HD static constexpr V madd(V a, V b, V c) { return a * b + c; }
+    PHONG_INLINE static constexpr V madd(V a, V b, V c) { return a * b + c; }
 };
 
 namespace detail {
@@ -77,7 +77,7 @@ inline constexpr float exp2_e[6] = {0x1p+0f, 0x1.62e43p-1f, 0x1.ebf906p-3f, 0x1.
 /// log2 x for x > 0 finite (subnormal x included). Other x give a finite value (no NaN): the
 /// callers select them away. x = 2^k f, f in [sqrt(1/2), sqrt(2)), log2 x = k + r P(r), r = f - 1.
 template <class V>
-PHONG_HD constexpr V log2_positive(V x)
+PHONG_INLINE constexpr V log2_positive(V x)
 {
     using S = scalar_t<V>;
     using fmt = format<S>;
@@ -106,7 +106,7 @@ PHONG_HD constexpr V log2_positive(V x)
 /// 2^y for y <= 0: y rounded to an integer n plus t in [-1/2, 1/2], 2^n from the exponent bits.
 /// y below the smallest normal exponent (or -inf) gives 0 (flushed); y > 0 is outside the domain.
 template <class V>
-PHONG_HD constexpr V exp2_nonpositive(V y)
+PHONG_INLINE constexpr V exp2_nonpositive(V y)
 {
     using S = scalar_t<V>;
     using fmt = format<S>;
@@ -143,7 +143,7 @@ inline constexpr double pow_unit_max_rel = 8e-6;
 /// Float in CUDA device code: 2^min(m lg2(x), 0) on the GPU's special-function units instead,
 /// relative error pow_unit_sfu_max_rel(m) (phong/fast_sfu.hpp; the same edges).
 template <class V>
-PHONG_HD constexpr V pow_unit(V x, V m)
+PHONG_INLINE constexpr V pow_unit(V x, V m)
 {
     using S = scalar_t<V>;
 #if defined(__CUDA_ARCH__) // float in CUDA device code: the SFU's lg2/ex2, bound pow_unit_sfu_max_rel(m) (fast_sfu.hpp)
@@ -182,7 +182,7 @@ struct pow_integer_plan {
 
 /// The schedule of x^n for n in [0, pow_integer_max_exponent] (larger n: squarings up to 31, see
 /// pow_integer's precondition).
-PHONG_HD constexpr pow_integer_plan plan_pow_integer(unsigned n)
+PHONG_INLINE constexpr pow_integer_plan plan_pow_integer(unsigned n)
 {
     pow_integer_plan plan;
     if (n == 0) return plan;
@@ -195,7 +195,7 @@ PHONG_HD constexpr pow_integer_plan plan_pow_integer(unsigned n)
 /// Fast x^n with n's schedule given (plan_pow_integer(n)): see pow_integer(x, n) below. A power
 /// of two n <= 64 is a chain of squarings entered at its length (one jump, no test per squaring).
 template <class V>
-PHONG_HD constexpr V pow_integer(V x, const pow_integer_plan& plan)
+PHONG_INLINE constexpr V pow_integer(V x, const pow_integer_plan& plan)
 {
     using S = scalar_t<V>;
     V power = x;
@@ -228,7 +228,7 @@ PHONG_HD constexpr V pow_integer(V x, const pow_integer_plan& plan)
 /// gives 0 for n > 0; x = 1 gives exactly 1. Pre: n <= pow_integer_max_exponent (larger n: the
 /// result is still x^n rounded, but the bound grows as (n - 1) u). Exact twin: phong::pow_unit.
 template <class V>
-PHONG_HD constexpr V pow_integer(V x, unsigned n)
+PHONG_INLINE constexpr V pow_integer(V x, unsigned n)
 {
     return pow_integer(x, plan_pow_integer(n));
 }
@@ -247,7 +247,7 @@ template <class T> inline constexpr double reciprocal_max_rel = sizeof(T) == 4 ?
 /// subnormal, negative, NaN) give an unspecified value, maybe NaN (no guards: that is the point).
 /// Exact twin: 1 / x.
 template <class V>
-PHONG_HD constexpr V reciprocal_normal(V x)
+PHONG_INLINE constexpr V reciprocal_normal(V x)
 {
     if constexpr (requires { lanes<V>::reciprocal_normal(x); }) return lanes<V>::reciprocal_normal(x);
     else return V(scalar_t<V>(1)) / x;
@@ -271,7 +271,7 @@ template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7
 /// 1/sqrt(x) elsewhere (shade's fast mode never passes one: it drops such vectors first).
 /// Exact twin: phong::rsqrt (math.hpp).
 template <class V>
-PHONG_HD constexpr V rsqrt(V x)
+PHONG_INLINE constexpr V rsqrt(V x)
 {
     if constexpr (requires { lanes<V>::rsqrt(x); }) {
         return lanes<V>::rsqrt(x); // SIMD batches

@@ -45,7 +45,7 @@ inline constexpr double sfu_rsqrt_rel = 0x1p-22;
 /// grows with m: 5.2e-6 for m <= 24, 6.6e-6 at m = 32, within pow_unit_max_rel up to m = 40
 /// (phong/accuracy.hpp's fast bounds hold unchanged there), 1.7e-5 at m = 100, 1.7e-3 at m = 1e4
 /// (where the exact mode's own conditioning, m times the cosine's few-ulp error, is of that order).
-PHONG_HD constexpr double pow_unit_sfu_max_rel(double m)
+PHONG_INLINE constexpr double pow_unit_sfu_max_rel(double m)
 {
     const double u = 0x1p-24;
     const double ln2 = 0.6931471805599453;

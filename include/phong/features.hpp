@@ -42,7 +42,8 @@ enum class facing : unsigned char { none, view, flag };
 ///    right for primary, reflected and refracted rays alike; a rasterizer's per-vertex or
 ///    per-pixel vector. The one to use whenever the renderer already has v.
 ///  * `fixed_direction`: one direction for every point, environment::eye.xyz (normalized once per
-///    call): orthographic cameras (seed 000's normalize(-M02/M00, -M12/M11, 1); view.hpp).
+///    call; used as given with unit_inputs): orthographic cameras (seed 000's
+///    normalize(-M02/M00, -M12/M11, 1); view.hpp), a screen-space rasterizer's view along +z.
 ///  * `eye_point`: the general homogeneous rule v = normalize(E.xyz - E.w Q) for environment::eye
 ///    E (w = 1: an eye point such as seed 001's ray start, for primary rays only; w = 0: a
 ///    direction). eye_from_projection() derives E from any projection matrix.
@@ -111,7 +112,8 @@ struct features {
     /// Not read by float SIMD batches on x86 (their double-lane route is more accurate than
     /// either depth) but for steps with m above 2^20, which take the twofold route.
     unsigned stable_twofold_above = 0;
-    /// The normal (and, for view_model::given, the view vector) come at unit length: used as
+    /// The normal (and, for view_model::given, the view vector; for fixed_direction,
+    /// environment::eye.xyz) come at unit length: used as
     /// given, with no normalization and no length guards (checked in debug builds). For the
     /// exact mode; the stable mode normalizes anyway (its accuracy needs the exact unit vectors).
     /// Pre: unit length within 1e-3, finite. A zero or NaN vector breaks the precondition: the
@@ -195,7 +197,7 @@ inline constexpr features seed003_ads = glsl_ads;                            ///
 inline constexpr features seed003_diffuse = diffuse_only;                    ///< alias of diffuse_only
 
 /// The same feature set evaluated in another mode (e.g. with_mode(classic_phong, evaluation::stable)).
-PHONG_HD constexpr features with_mode(features f, evaluation mode)
+PHONG_INLINE constexpr features with_mode(features f, evaluation mode)
 {
     f.mode = mode;
     return f;

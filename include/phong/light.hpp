@@ -29,7 +29,7 @@ struct light {
 
     /// A light with one strength for diffuse and specular and no ambient term (source document
     /// 000's L_i): homogeneous position (w = 1 positional, w = 0 directional), strength, falloff.
-    PHONG_HD static constexpr light with_strength(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
+    PHONG_INLINE static constexpr light with_strength(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
                                                   falloff<T> attenuation = {})
     {
         light l;
@@ -41,7 +41,7 @@ struct light {
         return l;
     }
     /// The older name of with_strength (after source document 000).
-    PHONG_HD static constexpr light seed000(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
+    PHONG_INLINE static constexpr light seed000(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
                                             falloff<T> attenuation = {})
     {
         return with_strength(position, strength, attenuation);
@@ -76,17 +76,17 @@ template <class L> struct light_traits {};
 /// light<T, Q>'s own fields, by reference.
 template <class T, glm::qualifier Q> struct light_traits<light<T, Q>> {
     /// L.position
-    PHONG_HD static constexpr const glm::vec<4, T, Q>& position(const light<T, Q>& L) { return L.position; }
+    PHONG_INLINE static constexpr const glm::vec<4, T, Q>& position(const light<T, Q>& L) { return L.position; }
     /// L.ambient
-    PHONG_HD static constexpr const glm::vec<3, T, Q>& ambient(const light<T, Q>& L) { return L.ambient; }
+    PHONG_INLINE static constexpr const glm::vec<3, T, Q>& ambient(const light<T, Q>& L) { return L.ambient; }
     /// L.diffuse
-    PHONG_HD static constexpr const glm::vec<3, T, Q>& diffuse(const light<T, Q>& L) { return L.diffuse; }
+    PHONG_INLINE static constexpr const glm::vec<3, T, Q>& diffuse(const light<T, Q>& L) { return L.diffuse; }
     /// L.specular
-    PHONG_HD static constexpr const glm::vec<3, T, Q>& specular(const light<T, Q>& L) { return L.specular; }
+    PHONG_INLINE static constexpr const glm::vec<3, T, Q>& specular(const light<T, Q>& L) { return L.specular; }
     /// L.attenuation
-    PHONG_HD static constexpr const falloff<T>& attenuation(const light<T, Q>& L) { return L.attenuation; }
+    PHONG_INLINE static constexpr const falloff<T>& attenuation(const light<T, Q>& L) { return L.attenuation; }
     /// L.spot
-    PHONG_HD static constexpr const spot_cone<T, Q>& spot(const light<T, Q>& L) { return L.spot; }
+    PHONG_INLINE static constexpr const spot_cone<T, Q>& spot(const light<T, Q>& L) { return L.spot; }
 };
 
 namespace detail {
@@ -119,20 +119,20 @@ inline constexpr glm::qualifier light_qualifier_v = detail::homogeneous_position
 namespace detail {
 /// The fields of a light_source as shade<F> reads them: light_traits' function, or the default
 /// of light<U, Q> where the traits leave an optional field out. References stay references.
-template <class L> PHONG_HD constexpr decltype(auto) position_of(const L& l) { return light_traits<L>::position(l); }
-template <class L> PHONG_HD constexpr decltype(auto) diffuse_of(const L& l) { return light_traits<L>::diffuse(l); }
-template <class L> PHONG_HD constexpr decltype(auto) specular_of(const L& l) { return light_traits<L>::specular(l); }
-template <class L> PHONG_HD constexpr decltype(auto) ambient_of([[maybe_unused]] const L& l)
+template <class L> PHONG_INLINE constexpr decltype(auto) position_of(const L& l) { return light_traits<L>::position(l); }
+template <class L> PHONG_INLINE constexpr decltype(auto) diffuse_of(const L& l) { return light_traits<L>::diffuse(l); }
+template <class L> PHONG_INLINE constexpr decltype(auto) specular_of(const L& l) { return light_traits<L>::specular(l); }
+template <class L> PHONG_INLINE constexpr decltype(auto) ambient_of([[maybe_unused]] const L& l)
 {
     if constexpr (requires { light_traits<L>::ambient(l); }) return light_traits<L>::ambient(l);
     else return glm::vec<3, light_scalar_t<L>, light_qualifier_v<L>>(light_scalar_t<L>(0));
 }
-template <class L> PHONG_HD constexpr decltype(auto) attenuation_of([[maybe_unused]] const L& l)
+template <class L> PHONG_INLINE constexpr decltype(auto) attenuation_of([[maybe_unused]] const L& l)
 {
     if constexpr (requires { light_traits<L>::attenuation(l); }) return light_traits<L>::attenuation(l);
     else return falloff<light_scalar_t<L>>{};
 }
-template <class L> PHONG_HD constexpr decltype(auto) spot_of([[maybe_unused]] const L& l)
+template <class L> PHONG_INLINE constexpr decltype(auto) spot_of([[maybe_unused]] const L& l)
 {
     if constexpr (requires { light_traits<L>::spot(l); }) return light_traits<L>::spot(l);
     else return spot_cone<light_scalar_t<L>, light_qualifier_v<L>>{};
@@ -143,7 +143,7 @@ template <class L> PHONG_HD constexpr decltype(auto) spot_of([[maybe_unused]] co
 /// where the traits leave one out). For what needs a light<T> itself: validate(), and shade_batch,
 /// which takes a span of light<T> (convert the list once per call, not per point).
 template <light_source L>
-PHONG_HD constexpr light<light_scalar_t<L>, light_qualifier_v<L>> to_light(const L& l)
+PHONG_INLINE constexpr light<light_scalar_t<L>, light_qualifier_v<L>> to_light(const L& l)
 {
     light<light_scalar_t<L>, light_qualifier_v<L>> out;
     out.position = detail::position_of(l);
@@ -164,7 +164,7 @@ PHONG_HD constexpr light<light_scalar_t<L>, light_qualifier_v<L>> to_light(const
 /// Accepted although degenerate (shade gives a defined result): a directional light with
 /// xyz = 0 (no direction: contributes its ambient only).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr validation validate(const light<T, Q>& L)
+PHONG_INLINE constexpr validation validate(const light<T, Q>& L)
 {
     using detail::finite;
     using detail::finite_non_negative;

@@ -23,7 +23,7 @@ struct material {
 /// (ka, kd, ks, emission); a shininess that is negative, NaN or inf; alpha outside [0, 1] or NaN.
 /// Shininess above 200 (seed 001's range) is accepted: the stable mode is accurate to 1e5 and more.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr validation validate(const material<T, Q>& m)
+PHONG_INLINE constexpr validation validate(const material<T, Q>& m)
 {
     using detail::finite_non_negative;
     if (!finite_non_negative(m.ka)) return {"material.ka: negative, NaN or inf"};

@@ -48,7 +48,7 @@ namespace detail {
 /// into halves of (digits + 1) / 2 bits, Dekker's product), for |a|, |b| below max / 2^((digits +
 /// 3) / 2) (the split overflows above) and e not subnormal. S is the lane type of V.
 template <class V, class S = V>
-PHONG_HD constexpr V dekker_product_error(const V& a, const V& b, const V& p)
+PHONG_INLINE constexpr V dekker_product_error(const V& a, const V& b, const V& p)
 {
     const V split = V(S((1ull << ((std::numeric_limits<S>::digits + 1) / 2)) + 1));
     const V ca = ieee::opaque(split * a), ah = ieee::opaque(ca - ieee::opaque(ca - a)), al = a - ah;
@@ -60,7 +60,7 @@ PHONG_HD constexpr V dekker_product_error(const V& a, const V& b, const V& p)
 /// whenever c = -fl(a*b) (the error-free products phong relies on), else within 1 ulp. For
 /// constant evaluation and for SIMD targets without an FMA instruction. S is the lane type of V.
 template <class V, class S = V>
-PHONG_HD constexpr V dekker_fma(const V& a, const V& b, const V& c)
+PHONG_INLINE constexpr V dekker_fma(const V& a, const V& b, const V& c)
 {
     const V p = a * b;
     return ieee::opaque(p + c) + dekker_product_error<V, S>(a, b, p);
@@ -69,7 +69,7 @@ PHONG_HD constexpr V dekker_fma(const V& a, const V& b, const V& c)
 /// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b). Any rounding to
 /// nearest, no condition on |a| and |b|; under -fassociative-math too (ieee::two_sum_error keeps
 /// the additions in order).
-template <class T> PHONG_HD constexpr T two_sum_error(T a, T b, T hi)
+template <class T> PHONG_INLINE constexpr T two_sum_error(T a, T b, T hi)
 {
     return ieee::two_sum_error(a, b, hi);
 }
@@ -86,7 +86,7 @@ struct math_traits {
     using mask = bool; ///< the result of a comparison of V
 
     /// The correctly rounded square root (IEEE); constant evaluation: detail::ce::sqrt.
-    PHONG_HD static constexpr V sqrt(V x)
+    PHONG_INLINE static constexpr V sqrt(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::sqrt(x));
 #if PHONG_X86_SQRT
@@ -110,7 +110,7 @@ struct math_traits {
         return std::sqrt(x);
     }
     /// 1/sqrt(x), correctly rounded twice (a division of a square root).
-    PHONG_HD static constexpr V rsqrt(V x)
+    PHONG_INLINE static constexpr V rsqrt(V x)
     {
         // 1/0 is not a constant expression: give rsqrt(0) = inf explicitly, so that the guarded
         // select(dd > 0, rsqrt(dd), 0) of normalize(0) etc. stays constexpr.
@@ -118,32 +118,32 @@ struct math_traits {
         return V(1) / sqrt(x);
     }
     /// e^x (std::exp; constant evaluation: detail::ce::exp).
-    PHONG_HD static constexpr V exp(V x)
+    PHONG_INLINE static constexpr V exp(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::exp(x));
         return std::exp(x);
     }
     /// The natural logarithm (std::log; constant evaluation: detail::ce::log).
-    PHONG_HD static constexpr V log(V x)
+    PHONG_INLINE static constexpr V log(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log(x));
         return std::log(x);
     }
     /// log(1 + x), accurate for small x (std::log1p; constant evaluation: detail::ce::log1p).
-    PHONG_HD static constexpr V log1p(V x)
+    PHONG_INLINE static constexpr V log1p(V x)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log1p(x));
         return std::log1p(x);
     }
     /// x^y (std::pow; constant evaluation: detail::ce::pow).
-    PHONG_HD static constexpr V pow(V x, V y)
+    PHONG_INLINE static constexpr V pow(V x, V y)
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::pow(x, y));
         return std::pow(x, y);
     }
     /// x^m for x in [0, 1], m >= 0: float and double through detail/power.hpp (inline, no libm
     /// call, constexpr too); long double through pow; CUDA device code through CUDA's pow.
-    PHONG_HD static constexpr V pow_unit(V x, V m)
+    PHONG_INLINE static constexpr V pow_unit(V x, V m)
     {
         if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
 #if defined(__CUDA_ARCH__)
@@ -156,7 +156,7 @@ struct math_traits {
         }
     }
     /// a * b + c with one rounding. Constant evaluation: exact through Dekker's product.
-    PHONG_HD static constexpr V fma(V a, V b, V c)
+    PHONG_INLINE static constexpr V fma(V a, V b, V c)
     {
         if (std::is_constant_evaluated()) {
             if constexpr (std::numeric_limits<V>::digits * 2 <= std::numeric_limits<detail::ce::wide>::digits) {
@@ -168,25 +168,25 @@ struct math_traits {
         return std::fma(a, b, c);
     }
     /// a where m, else b.
-    PHONG_HD static constexpr V select(bool m, V a, V b) { return m ? a : b; }
+    PHONG_INLINE static constexpr V select(bool m, V a, V b) { return m ? a : b; }
     /// Whether any lane of m is set (one lane here).
-    PHONG_HD static constexpr bool any(bool m) { return m; }
+    PHONG_INLINE static constexpr bool any(bool m) { return m; }
     /// a and b, lane-wise.
-    PHONG_HD static constexpr bool both(bool a, bool b) { return a && b; }
+    PHONG_INLINE static constexpr bool both(bool a, bool b) { return a && b; }
     /// Whether every lane of m is set (one lane here).
-    PHONG_HD static constexpr bool all(bool m) { return m; }
+    PHONG_INLINE static constexpr bool all(bool m) { return m; }
     /// |x|, with abs(-0) = +0.
-    PHONG_HD static constexpr V abs(V x) { return x < 0 ? -x : (x == 0 ? V(0) : x); }
+    PHONG_INLINE static constexpr V abs(V x) { return x < 0 ? -x : (x == 0 ? V(0) : x); }
     /// The smaller of a and b (b where b < a: a NaN in a is returned, one in b is not).
-    PHONG_HD static constexpr V min(V a, V b) { return b < a ? b : a; }
+    PHONG_INLINE static constexpr V min(V a, V b) { return b < a ? b : a; }
     /// The larger of a and b (b where a < b: a NaN in a is returned, one in b is not).
-    PHONG_HD static constexpr V max(V a, V b) { return a < b ? b : a; }
+    PHONG_INLINE static constexpr V max(V a, V b) { return a < b ? b : a; }
 
     /// A power of two 2^-e such that |x| * 2^-e lies in [1, 2) for normal x, clamped to stay a
     /// normal number. Multiplying by it is exact, so a vector
     /// scaled by it keeps its direction bit for bit while its squares neither overflow nor
     /// underflow. x must be finite and >= 0. (Subnormal x lands in [2^-22, 2) for float.)
-    PHONG_HD static constexpr V inverse_pow2_scale(V x)
+    PHONG_INLINE static constexpr V inverse_pow2_scale(V x)
     {
         using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>;
         if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
@@ -214,33 +214,33 @@ template <class V> using mask_t = typename math_traits<V>::mask;
 /// The scalar type of V: V itself for scalars, the lane type for batches.
 template <class V> using scalar_t = typename math_traits<V>::scalar;
 /// The largest finite value of V's scalar type, as a V (std::numeric_limits<batch> is not specialized).
-template <class V> PHONG_HD constexpr V largest() { return V(std::numeric_limits<scalar_t<V>>::max()); }
+template <class V> PHONG_INLINE constexpr V largest() { return V(std::numeric_limits<scalar_t<V>>::max()); }
 
 /// sqrt(x). Domain x >= 0; sqrt(-0) = -0, x < 0 gives NaN, sqrt(inf) = inf. Float and double at
 /// run time on x86-64 (g++, clang++): the sqrtss/sqrtsd instruction, the same correctly rounded
 /// value as std::sqrt without its errno side effect (PHONG_NO_X86_SQRT turns that off).
-template <class V> PHONG_HD constexpr V sqrt(V x) { return math_traits<V>::sqrt(x); }
+template <class V> PHONG_INLINE constexpr V sqrt(V x) { return math_traits<V>::sqrt(x); }
 /// 1/sqrt(x) for x >= 0: rsqrt(0) = inf, rsqrt(inf) = 0; x < 0 or NaN gives NaN. Scalars:
 /// 1 / sqrt(x) (< 1 ulp); SIMD float lanes: a hardware estimate refined by one Newton step
 /// (< 2 ulp), see batch.hpp.
-template <class V> PHONG_HD constexpr V rsqrt(V x) { return math_traits<V>::rsqrt(x); }
+template <class V> PHONG_INLINE constexpr V rsqrt(V x) { return math_traits<V>::rsqrt(x); }
 namespace detail {
 /// 1/sqrt(x) for x a positive normal number (the caller has checked, or selects the lanes
 /// where it is not away): SIMD float lanes skip rsqrt's guards for 0 and inf; elsewhere rsqrt.
-template <class V> PHONG_HD constexpr V rsqrt_normal(V x)
+template <class V> PHONG_INLINE constexpr V rsqrt_normal(V x)
 {
     if constexpr (requires { math_traits<V>::rsqrt_normal(x); }) return math_traits<V>::rsqrt_normal(x);
     else return math_traits<V>::rsqrt(x);
 }
 } // namespace detail
 /// e^x. Overflow gives inf, underflow 0.
-template <class V> PHONG_HD constexpr V exp(V x) { return math_traits<V>::exp(x); }
+template <class V> PHONG_INLINE constexpr V exp(V x) { return math_traits<V>::exp(x); }
 /// ln x. log(0) = -inf, x < 0 gives NaN.
-template <class V> PHONG_HD constexpr V log(V x) { return math_traits<V>::log(x); }
+template <class V> PHONG_INLINE constexpr V log(V x) { return math_traits<V>::log(x); }
 /// ln(1 + x), accurate for small |x|. log1p(-1) = -inf, x < -1 gives NaN.
-template <class V> PHONG_HD constexpr V log1p(V x) { return math_traits<V>::log1p(x); }
+template <class V> PHONG_INLINE constexpr V log1p(V x) { return math_traits<V>::log1p(x); }
 /// x^y (IEEE pow: pow(0, 0) = 1, pow(0, y > 0) = 0).
-template <class V> PHONG_HD constexpr V pow(V x, V y) { return math_traits<V>::pow(x, y); }
+template <class V> PHONG_INLINE constexpr V pow(V x, V y) { return math_traits<V>::pow(x, y); }
 /// x^m for a base x in [0, 1] and an exponent m >= 0: the specular and spot powers.
 /// pow_unit(0, 0) = 1, pow_unit(0, m > 0) = 0. Float and double: an inline kernel in double
 /// arithmetic (detail/power.hpp), also in constant evaluation. Double: relative error below
@@ -249,7 +249,7 @@ template <class V> PHONG_HD constexpr V pow(V x, V y) { return math_traits<V>::p
 /// Outside the domain: x > 1 with m < 0 runs the same kernel; otherwise (x > 1 with m > 0, x < 0,
 /// NaN, inf) IEEE pow's value.
 /// SIMD batches: their pow (batch.hpp).
-template <class V> PHONG_HD constexpr V pow_unit(V x, V m)
+template <class V> PHONG_INLINE constexpr V pow_unit(V x, V m)
 {
     if constexpr (requires { math_traits<V>::pow_unit(x, m); }) return math_traits<V>::pow_unit(x, m);
     else return math_traits<V>::pow(x, m);
@@ -257,7 +257,7 @@ template <class V> PHONG_HD constexpr V pow_unit(V x, V m)
 namespace detail {
 /// pow_unit for x in [0, 1] and a finite m >= 0 only (NaN outside but for 1^m = 1), without pow_unit's libm
 /// fallback (detail/power.hpp): the shading loop's power, whose m validate() has checked.
-template <class V> PHONG_HD constexpr V pow_unit_in_domain(V x, V m)
+template <class V> PHONG_INLINE constexpr V pow_unit_in_domain(V x, V m)
 {
 #if !defined(__CUDA_ARCH__)
     if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) return power::pow_unit_in_domain(x, m);
@@ -268,22 +268,22 @@ template <class V> PHONG_HD constexpr V pow_unit_in_domain(V x, V m)
 } // namespace detail
 /// a * b + c rounded once (std::fma). Constant evaluation: exact when c = -fl(a b) (the
 /// error-free products phong uses), else within 1 ulp (float: formed in long double, rounded twice).
-template <class V> PHONG_HD constexpr V fma(V a, V b, V c) { return math_traits<V>::fma(a, b, c); }
+template <class V> PHONG_INLINE constexpr V fma(V a, V b, V c) { return math_traits<V>::fma(a, b, c); }
 /// |x|.
-template <class V> PHONG_HD constexpr V abs(V x) { return math_traits<V>::abs(x); }
+template <class V> PHONG_INLINE constexpr V abs(V x) { return math_traits<V>::abs(x); }
 /// min(a, b) = b < a ? b : a (std::min's NaN behaviour: a NaN `a` is returned).
-template <class V> PHONG_HD constexpr V min(V a, V b) { return math_traits<V>::min(a, b); }
+template <class V> PHONG_INLINE constexpr V min(V a, V b) { return math_traits<V>::min(a, b); }
 /// max(a, b) = a < b ? b : a (std::max's NaN behaviour: a NaN `a` is returned).
-template <class V> PHONG_HD constexpr V max(V a, V b) { return math_traits<V>::max(a, b); }
+template <class V> PHONG_INLINE constexpr V max(V a, V b) { return math_traits<V>::max(a, b); }
 /// clamp(x, lo, hi) = min(max(x, lo), hi); a NaN x is returned as NaN.
-template <class V> PHONG_HD constexpr V clamp(V x, V lo, V hi) { return min(max(x, lo), hi); }
+template <class V> PHONG_INLINE constexpr V clamp(V x, V lo, V hi) { return min(max(x, lo), hi); }
 /// m ? a : b, lane-wise for SIMD (both sides are evaluated: keep them finite).
-template <class V> PHONG_HD constexpr V select(mask_t<V> m, V a, V b) { return math_traits<V>::select(m, a, b); }
+template <class V> PHONG_INLINE constexpr V select(mask_t<V> m, V a, V b) { return math_traits<V>::select(m, a, b); }
 
 /// x^N for a compile-time integer N >= 0 by repeated squaring: no exp/log, exact pattern of
 /// roundings (at most 2 log2 N multiplications; squaring doubles the relative error already present,
 /// so the error is at most (N - 1) u relative, u = eps / 2, i.e. < N ulp). pow<0>(x) = 1 for every x.
-template <unsigned N, class V> PHONG_HD constexpr V pow(V x)
+template <unsigned N, class V> PHONG_INLINE constexpr V pow(V x)
 {
     if constexpr (N == 0) {
         return V(1);
@@ -300,7 +300,7 @@ template <unsigned N, class V> PHONG_HD constexpr V pow(V x)
 /// cutoffs, which are given in degrees, once when a light is made). A 40-term Taylor series in
 /// long double: accurate for |deg| <= 720, then it loses digits, and from about 2000 degrees it
 /// returns garbage (-inf in float from about 1e4): reduce the angle first. NaN gives NaN.
-template <class V> PHONG_HD constexpr V cos_degrees(V degrees)
+template <class V> PHONG_INLINE constexpr V cos_degrees(V degrees)
 {
     using W = detail::ce::wide;
     W d = static_cast<W>(degrees);

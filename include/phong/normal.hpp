@@ -15,7 +15,7 @@ namespace detail {
 /// The sign that faces n toward the viewer: -1 where n.v < 0, else 1 (face_viewer, and
 /// shade<F>'s facing::view).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T viewer_facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v)
+PHONG_INLINE constexpr T viewer_facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v)
 {
     return phong::select(phong::dot(n, v) < T(0), T(-1), T(1));
 }
@@ -25,7 +25,7 @@ PHONG_HD constexpr T viewer_facing_sign(const glm::vec<3, T, Q>& n, const glm::v
 ///   n' = dot(n, v) < 0 ? -n : n
 /// so the normal faces the viewer. Edge: dot(n, v) = 0 or n = 0 keeps n; NaN keeps n.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> face_viewer(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v)
+PHONG_INLINE constexpr glm::vec<3, T, Q> face_viewer(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v)
 {
     return n * detail::viewer_facing_sign(n, v);
 }
@@ -33,7 +33,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> face_viewer(const glm::vec<3, T, Q>& n, con
 /// Two-sided lighting decided by the caller (e.g. gl_FrontFacing): n' = front_facing ? n : -n.
 /// Edge: any n (zero, NaN) is passed through, negated or not.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> face_flag(const glm::vec<3, T, Q>& n, bool front_facing)
+PHONG_INLINE constexpr glm::vec<3, T, Q> face_flag(const glm::vec<3, T, Q>& n, bool front_facing)
 {
     return front_facing ? n : -n;
 }
@@ -48,7 +48,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> face_flag(const glm::vec<3, T, Q>& n, bool 
 /// use normal_matrix_inverse_transpose. Scale is det-dependent; normalize afterwards.
 /// Pre: the products of two entries of M finite (else inf - inf gives NaN).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix_cofactor(const glm::mat<3, 3, T, Q>& M)
+PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix_cofactor(const glm::mat<3, 3, T, Q>& M)
 {
     const glm::vec<3, T, Q> a = M[0], b = M[1], c = M[2];
     return glm::mat<3, 3, T, Q>(phong::cross(b, c), phong::cross(c, a), phong::cross(a, b));
@@ -65,7 +65,7 @@ PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix_cofactor(const glm::mat<3,
 /// cof(M) sign(det) is returned: the direction and orientation of M^{-T} n, not its scale.
 /// Never NaN for finite M within the precondition.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix_inverse_transpose(const glm::mat<3, 3, T, Q>& M)
+PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix_inverse_transpose(const glm::mat<3, 3, T, Q>& M)
 {
     const glm::mat<3, 3, T, Q> cof = phong::normal_matrix_cofactor(M);
     const T det = phong::dot(M[0], cof[0]); // a . (b x c)
@@ -79,7 +79,7 @@ PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix_inverse_transpose(const gl
 /// (translation ignored). Pre and edges: those of normal_matrix_inverse_transpose (a singular
 /// upper 3x3 gives its cofactor matrix; never NaN for finite entries whose pairwise products are finite).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T, Q>& model_view)
+PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T, Q>& model_view)
 {
     const glm::mat<3, 3, T, Q> upper{glm::vec<3, T, Q>(model_view[0]), glm::vec<3, T, Q>(model_view[1]),
                                      glm::vec<3, T, Q>(model_view[2])};
@@ -93,7 +93,7 @@ PHONG_HD constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T, Q>
 /// input); where N n overflows, N and n are first scaled by powers of two (exact: the same
 /// direction). NaN or inf in N or n: NaN components.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> transform_normal(const glm::mat<3, 3, T, Q>& N, const glm::vec<3, T, Q>& n)
+PHONG_INLINE constexpr glm::vec<3, T, Q> transform_normal(const glm::mat<3, 3, T, Q>& N, const glm::vec<3, T, Q>& n)
 {
     glm::vec<3, T, Q> r = N[0] * n.x + N[1] * n.y + N[2] * n.z;
     if constexpr (std::is_floating_point_v<T>) {

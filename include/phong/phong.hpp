@@ -16,5 +16,7 @@
 #include "environment.hpp"
 #include "accuracy.hpp"
 #include "shade.hpp"
+#include "incident.hpp"
+#include "adapt.hpp"
 #include "batch.hpp"
 #include "primitives.hpp"

@@ -34,7 +34,7 @@ namespace detail {
 /// validate(material) and validate(environment): a compile error in constant evaluation, an
 /// assertion in debug builds, nothing at all under NDEBUG (not even evaluated).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const environment<T, Q>& env)
+PHONG_INLINE constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const environment<T, Q>& env)
 {
     if constexpr (std::is_floating_point_v<T>) {
 #if defined(NDEBUG)
@@ -60,19 +60,19 @@ inline constexpr features exact_of = [] {
 }();
 
 template <class W, class T, glm::qualifier Q>
-PHONG_HD constexpr material<W, Q> widen(const material<T, Q>& m)
+PHONG_INLINE constexpr material<W, Q> widen(const material<T, Q>& m)
 {
     return {glm::vec<3, W, Q>(m.ka), glm::vec<3, W, Q>(m.kd), glm::vec<3, W, Q>(m.ks), glm::vec<3, W, Q>(m.emission), W(m.shininess), W(m.alpha)};
 }
 template <class W, class T, glm::qualifier Q>
-PHONG_HD constexpr environment<W, Q> widen(const environment<T, Q>& e)
+PHONG_INLINE constexpr environment<W, Q> widen(const environment<T, Q>& e)
 {
     return {glm::vec<3, W, Q>(e.ambient), glm::vec<4, W, Q>(e.eye)};
 }
 
 /// features::unit_inputs' precondition: |v| = 1 within 1e-3 and finite (debug builds, constant evaluation).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>& v, [[maybe_unused]] const char* message)
+PHONG_INLINE constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>& v, [[maybe_unused]] const char* message)
 {
     if constexpr (std::is_floating_point_v<T>) {
 #if defined(NDEBUG)
@@ -86,7 +86,7 @@ PHONG_HD constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>& v, 
 /// prepare, every light, finish: the terms of the model at one point in arithmetic type T (the
 /// lights' scalar type may be narrower: the wider route).
 template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                 const glm::vec<3, T, Q>& given_view, const material<T, Q>& mat,
                                                 Lights&& lights, const environment<T, Q>& env, bool front_facing)
 {
@@ -102,20 +102,22 @@ using arithmetic_t = std::conditional_t<widened<F, T>, double, T>;
 
 /// shade<F>'s checks of its parameters: the material, the environment, and unit_inputs' unit vectors.
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q>& normal, [[maybe_unused]] const glm::vec<3, T, Q>& view,
+PHONG_INLINE constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q>& normal, [[maybe_unused]] const glm::vec<3, T, Q>& view,
                                      const material<T, Q>& mat, const environment<T, Q>& env)
 {
     check_parameters(mat, env);
     if constexpr (F.unit_inputs) {
         check_unit(normal, "shade: normal must be unit length (features::unit_inputs)");
         if constexpr (F.view == view_model::given) check_unit(view, "shade: view vector must be unit length (features::unit_inputs)");
+        if constexpr (F.view == view_model::fixed_direction)
+            check_unit(glm::vec<3, T, Q>(env.eye), "shade: environment::eye.xyz must be unit length (fixed_direction, features::unit_inputs)");
     }
 }
 
 /// shade<F>'s body for either view argument: parameters checked, then the route (float's stable
 /// mode: the exact route in double). The terms come in the arithmetic type.
 template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                                  const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
                                                                  Lights&& lights, const environment<T, Q>& env, bool front_facing)
 {
@@ -182,7 +184,7 @@ PHONG_HD constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<
 /// spot's slope (smoothstep: up to 1.5 / (cos_inner - cos_outer); OpenGL: e / c). Double, and float with F.precision = twofold: unit vectors, n.l and the specular
 /// chords carried twofold (detail/twofold.hpp), within a few ulp on the same classes.
 template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                         const material<T, Q>& mat, Lights&& lights,
                                         const environment<T, Q>& env = {}, bool front_facing = true)
 {
@@ -197,7 +199,7 @@ PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const
 /// point is right for primary rays only). Everything else as above; a NaN or inf view vector
 /// makes every channel NaN, a zero one gives no diffuse or specular term.
 template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                         const glm::vec<3, T, Q>& view, const material<T, Q>& mat, Lights&& lights,
                                         const environment<T, Q>& env = {}, bool front_facing = true)
 {
@@ -208,7 +210,7 @@ PHONG_HD constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const
 namespace detail {
 /// The public terms: the point's poison in every one, so that a NaN point has every term NaN.
 template <class A, glm::qualifier Q>
-PHONG_HD constexpr shading_terms<A, Q> poisoned(shading_terms<A, Q> t)
+PHONG_INLINE constexpr shading_terms<A, Q> poisoned(shading_terms<A, Q> t)
 {
     const A poison = t.alpha - t.alpha; // 0, or NaN for a NaN point (alpha carries the poison)
     t.ambient += poison;
@@ -225,7 +227,7 @@ PHONG_HD constexpr shading_terms<A, Q> poisoned(shading_terms<A, Q> t)
 /// wider route, whose colour is the double sum rounded once: float(terms.sum()) is shade<F>'s
 /// colour), T otherwise. Arguments, preconditions and edges as shade<F>.
 template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                                             const material<T, Q>& mat, Lights&& lights,
                                                                             const environment<T, Q>& env = {}, bool front_facing = true)
 {
@@ -236,7 +238,7 @@ PHONG_HD constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(cons
 
 /// shade_terms<F> with the view vector given per call (view_model::given).
 template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                                             const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
                                                                             Lights&& lights, const environment<T, Q>& env = {},
                                                                             bool front_facing = true)
@@ -253,7 +255,7 @@ PHONG_HD constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(cons
 /// view_model::given: no per-vertex v here), with transform_normal's edges for the normal; a
 /// vertex whose eye coordinates overflow T is shaded as an inf position (NaN in every channel).
 template <features F, class T, glm::qualifier Q, class Lights>
-PHONG_HD constexpr color<F, T, Q> shade_vertex(const glm::vec<3, T, Q>& vertex_position, const glm::vec<3, T, Q>& vertex_normal,
+PHONG_INLINE constexpr color<F, T, Q> shade_vertex(const glm::vec<3, T, Q>& vertex_position, const glm::vec<3, T, Q>& vertex_normal,
                                                const glm::mat<4, 4, T, Q>& model_view, const glm::mat<3, 3, T, Q>& normal_mat,
                                                const material<T, Q>& mat, Lights&& lights,
                                                const environment<T, Q>& env = {})

@@ -32,14 +32,14 @@ struct shading_terms {
     glm::vec<3, T, Q> specular; ///< ks sum_i f_i Ls_i s_i
     T alpha;                    ///< the material's alpha
     /// emission + ambient + diffuse + specular, in that order.
-    PHONG_HD constexpr glm::vec<3, T, Q> sum() const { return emission + ambient + diffuse + specular; }
+    PHONG_INLINE constexpr glm::vec<3, T, Q> sum() const { return emission + ambient + diffuse + specular; }
 };
 
 namespace detail {
 
 /// The model's terms at the point, from the per-light sums (poison: the NaN policy's 0 or NaN).
 template <features F, class T, glm::qualifier Q, class Frame>
-PHONG_HD constexpr shading_terms<T, Q> terms_of(const light_sums<T, Q>& sums, const Frame& s, const material<T, Q>& mat,
+PHONG_INLINE constexpr shading_terms<T, Q> terms_of(const light_sums<T, Q>& sums, const Frame& s, const material<T, Q>& mat,
                                                 const environment<T, Q>& env)
 {
     using vec3 = glm::vec<3, T, Q>;
@@ -56,7 +56,7 @@ PHONG_HD constexpr shading_terms<T, Q> terms_of(const light_sums<T, Q>& sums, co
 /// The colour: emission + ambient + diffuse + specular, summed in that order (the terms F leaves
 /// out are not added), alpha appended.
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr color<F, T, Q> total_of(const shading_terms<T, Q>& t)
+PHONG_INLINE constexpr color<F, T, Q> total_of(const shading_terms<T, Q>& t)
 {
     glm::vec<3, T, Q> c = t.emission;
     if constexpr (F.scene_ambient || F.light_ambient) c += t.ambient;
@@ -68,7 +68,7 @@ PHONG_HD constexpr color<F, T, Q> total_of(const shading_terms<T, Q>& t)
 
 /// The colour from the per-light sums (the batch path's last step).
 template <features F, class T, glm::qualifier Q, class Frame>
-PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const Frame& s, const material<T, Q>& mat,
+PHONG_INLINE constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const Frame& s, const material<T, Q>& mat,
                                          const environment<T, Q>& env)
 {
     return total_of<F>(terms_of<F>(sums, s, mat, env));
@@ -80,7 +80,7 @@ PHONG_HD constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const Fra
 /// rather than last: the same colours (the total is never -0 then; x + 0 = x otherwise), and
 /// the poison is not held across the light loop.
 template <features F, class T, glm::qualifier Q, class Frame>
-PHONG_HD constexpr color<F, T, Q> finish(const folded_sums<T, Q>& sums, [[maybe_unused]] const Frame& s,
+PHONG_INLINE constexpr color<F, T, Q> finish(const folded_sums<T, Q>& sums, [[maybe_unused]] const Frame& s,
                                          [[maybe_unused]] const material<T, Q>& mat, const environment<T, Q>&)
 {
     const glm::vec<3, T, Q> c = sums.total;

@@ -16,7 +16,7 @@ namespace phong {
 /// twofold unit vectors, as shade's stable mode does, makes that last term about m x eps).
 /// Edge: x >= 1 gives 0 for m > 0 and 1 for m = 0 (pow(0, 0) = 1); x = 0 gives 1.
 template <class T>
-PHONG_HD constexpr T pow_one_minus(T x, T m)
+PHONG_INLINE constexpr T pow_one_minus(T x, T m)
 {
     if constexpr (requires { math_traits<T>::pow_one_minus(x, m); }) return math_traits<T>::pow_one_minus(x, m); // SIMD kernels
     const T lg = phong::log1p(-phong::min(x, T(1))); // -inf at x = 1
@@ -34,7 +34,7 @@ namespace detail {
 /// With a unit d it is r.v itself. Written on d so that the sign is known before 1/|d|.
 /// Pre: n, v unit (or 0). Edge: v = 0 gives 0.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T reflection_cosine_scaled(T nd, T nv, const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& v)
+PHONG_INLINE constexpr T reflection_cosine_scaled(T nd, T nv, const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& v)
 {
     // SIMD lanes: nd (2 nv), the same bits as (2 nd) nv, with 2 nv once per point (shade_batch's
     // light loop); scalars keep (2 nd) nv (one instruction fewer per pair in shade's loop)
@@ -45,7 +45,7 @@ PHONG_HD constexpr T reflection_cosine_scaled(T nd, T nv, const glm::vec<3, T, Q
 /// Blinn's 1/|l + v|, the scale of n.h = (n.l + n.v) / |l + v| (h = normalize(l + v)).
 /// Edge: 0 when |l + v|^2 is not a normal number (l = -v: no halfway vector, n.h taken as 0).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
+PHONG_INLINE constexpr T inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
 {
     const glm::vec<3, T, Q> sum = l + v;
     return detail::exact_inverse_length(phong::dot(sum, sum));
@@ -55,7 +55,7 @@ PHONG_HD constexpr T inverse_halfway_length(const glm::vec<3, T, Q>& l, const gl
 /// Pre: scale >= 0 finite; m >= 0 finite (validate). x is the cosine times a positive length, so
 /// its sign is c's. Scalars test the sign of x first (no power where it is 0); SIMD lanes clamp.
 template <class T>
-PHONG_HD constexpr T cosine_power(T x, T scale, T m)
+PHONG_INLINE constexpr T cosine_power(T x, T scale, T m)
 {
     if constexpr (std::is_floating_point_v<T>) {
         if (x > T(0)) return detail::pow_unit_in_domain(phong::min(x * scale, T(1)), m);
@@ -69,7 +69,7 @@ PHONG_HD constexpr T cosine_power(T x, T scale, T m)
 /// component rounded once (detail/twofold.hpp's one_minus_rv carries it twofold).
 /// Pre: n, l, v unit, nl = n.l.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T one_minus_reflection_cosine(const glm::vec<3, T, Q>& n, T nl, const glm::vec<3, T, Q>& l,
+PHONG_INLINE constexpr T one_minus_reflection_cosine(const glm::vec<3, T, Q>& n, T nl, const glm::vec<3, T, Q>& l,
                                                  const glm::vec<3, T, Q>& v)
 {
     const glm::vec<3, T, Q> chord = n * (T(2) * nl) - l - v;
@@ -79,7 +79,7 @@ PHONG_HD constexpr T one_minus_reflection_cosine(const glm::vec<3, T, Q>& n, T n
 /// 1 - n.h = |n - h|^2 / 2 for h = normalize(l + v) rounded once.
 /// Pre: n, l, v unit. Edge: l = -v (no halfway vector) gives 1, i.e. n.h taken as 0.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T one_minus_halfway_cosine(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+PHONG_INLINE constexpr T one_minus_halfway_cosine(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                               const glm::vec<3, T, Q>& v)
 {
     const glm::vec<3, T, Q> sum = l + v;
@@ -98,7 +98,7 @@ PHONG_HD constexpr T one_minus_halfway_cosine(const glm::vec<3, T, Q>& n, const 
 /// Accuracy: the exact mode's (phong/accuracy.hpp): the power amplifies the rounding of r.v by m
 /// (see specular_reflection_stable). The same steps as shade<F>'s exact mode.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T specular_reflection(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+PHONG_INLINE constexpr T specular_reflection(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                          const glm::vec<3, T, Q>& v, T m)
 {
     const T nl = phong::dot(n, l);
@@ -112,7 +112,7 @@ PHONG_HD constexpr T specular_reflection(const glm::vec<3, T, Q>& n, const glm::
 /// (no halfway vector) takes n.h = 0: s = 0 for m > 0 and 1 for m = 0 (never NaN); 0 when n.l <= 0.
 /// The same steps as shade<F>'s exact mode.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T specular_halfway(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+PHONG_INLINE constexpr T specular_halfway(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                       const glm::vec<3, T, Q>& v, T m)
 {
     const T nl = phong::dot(n, l);
@@ -125,7 +125,7 @@ PHONG_HD constexpr T specular_halfway(const glm::vec<3, T, Q>& n, const glm::vec
 /// Same domain and edges as specular_reflection; the rounding of r.v is no longer amplified by m.
 /// The same steps as shade<F>'s stable mode for pairs it rounds once (features::stable_twofold_above).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T specular_reflection_stable(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+PHONG_INLINE constexpr T specular_reflection_stable(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                                 const glm::vec<3, T, Q>& v, T m)
 {
     const T nl = phong::dot(n, l);
@@ -136,7 +136,7 @@ PHONG_HD constexpr T specular_reflection_stable(const glm::vec<3, T, Q>& n, cons
 /// The halfway-based factor, evaluated stably: s = [n.l > 0] (1 - x)^m, x = min(|n - h|^2 / 2, 1).
 /// Same domain and edges as specular_halfway (l = -v gives x = 1).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T specular_halfway_stable(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+PHONG_INLINE constexpr T specular_halfway_stable(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                              const glm::vec<3, T, Q>& v, T m)
 {
     const T nl = phong::dot(n, l);

@@ -25,7 +25,7 @@ namespace detail {
 /// double, whose range and precision hold every such product and the overflow threshold (the
 /// largest T plus half its ulp: from there on, round to nearest gives inf).
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
+PHONG_INLINE constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
 #if defined(__CUDA_ARCH__) // no long double in device code: constant evaluation happens on the host
     (void)a;
@@ -61,7 +61,7 @@ PHONG_HD constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const glm
 /// Edge: overflows to inf when a product exceeds the range of T (in constant evaluation too);
 /// NaN propagates.
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
+PHONG_INLINE constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
         if (std::is_constant_evaluated())
@@ -81,7 +81,7 @@ PHONG_HD constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 /// sum |a_k b_k|. Used where cancellation matters (n.l near grazing incidence).
 /// Pre: every product a_k b_k finite (an overflowing one gives NaN, where dot gives inf).
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
+PHONG_INLINE constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
     T p = a[0] * b[0];
     T err = phong::fma(a[0], b[0], -p);
@@ -98,7 +98,7 @@ PHONG_HD constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<
 
 /// max_k |v_k|. Edge: NaN components may or may not be returned (comparison order).
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr T max_abs(const glm::vec<L, T, Q>& v)
+PHONG_INLINE constexpr T max_abs(const glm::vec<L, T, Q>& v)
 {
     T m = phong::abs(v.x); // named components: see dot
     if constexpr (L > 1) m = phong::max(m, phong::abs(v.y));
@@ -111,7 +111,7 @@ PHONG_HD constexpr T max_abs(const glm::vec<L, T, Q>& v)
 /// the direction is kept bit for bit and squares of the result neither overflow nor underflow.
 /// Edge: the zero vector stays zero; NaN or inf components stay NaN or inf (the rest is scaled).
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<L, T, Q> rescaled(const glm::vec<L, T, Q>& v)
+PHONG_INLINE constexpr glm::vec<L, T, Q> rescaled(const glm::vec<L, T, Q>& v)
 {
     return v * math_traits<T>::inverse_pow2_scale(phong::max_abs(v));
 }
@@ -121,7 +121,7 @@ PHONG_HD constexpr glm::vec<L, T, Q> rescaled(const glm::vec<L, T, Q>& v)
 /// subnormal ones do not underflow. Edge: length(0) = 0; the result is inf only when the true
 /// length exceeds the largest finite T (or a component is inf); a NaN component gives NaN.
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr T length(const glm::vec<L, T, Q>& v)
+PHONG_INLINE constexpr T length(const glm::vec<L, T, Q>& v)
 {
     const T s = math_traits<T>::inverse_pow2_scale(phong::max_abs(v));
     const glm::vec<L, T, Q> w = v * s;
@@ -133,7 +133,7 @@ PHONG_HD constexpr T length(const glm::vec<L, T, Q>& v)
 /// Edge: normalize(0) = 0 (zero in, zero out; GLM gives NaN). A NaN component stays NaN, the
 /// others become 0 (the NaN length takes the zero branch); an inf component gives NaN there.
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
+PHONG_INLINE constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
 {
     const glm::vec<L, T, Q> w = phong::rescaled(v);
     const T dd = phong::dot(w, w);
@@ -144,7 +144,7 @@ PHONG_HD constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
 /// Pre: |v|^2 representable (about 1e-19 < |v| < 1e19 in float). Edge: normalize_unscaled(0) = 0;
 /// when |v|^2 overflows the result is 0, when it underflows to 0 the result is 0 (never NaN).
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<L, T, Q> normalize_unscaled(const glm::vec<L, T, Q>& v)
+PHONG_INLINE constexpr glm::vec<L, T, Q> normalize_unscaled(const glm::vec<L, T, Q>& v)
 {
     const T dd = phong::dot(v, v);
     return v * phong::select(dd > T(0), phong::rsqrt(dd), T(0));
@@ -156,12 +156,12 @@ namespace detail {
 /// |v|^2 has lost bits to underflow and v / |v| would not be a unit vector (a light 1e-22 from Q
 /// in float gave n.l and r.v off by factors), so such a vector counts as zero: its terms give 0
 /// (a relative error of at most 1), never garbage or NaN.
-template <class T> PHONG_HD constexpr T exact_min_square() { return T(std::numeric_limits<scalar_t<T>>::min()); }
+template <class T> PHONG_INLINE constexpr T exact_min_square() { return T(std::numeric_limits<scalar_t<T>>::min()); }
 
 /// dd is a positive normal number (exact_min_square <= dd <= largest): the exact mode's test of a
 /// squared length (SIMD lanes: math_traits' positive_normal where it has one, e.g. one vfpclass).
 template <class T>
-PHONG_HD constexpr mask_t<T> normal_square(T dd)
+PHONG_INLINE constexpr mask_t<T> normal_square(T dd)
 {
     if constexpr (requires { math_traits<T>::positive_normal(dd); }) return math_traits<T>::positive_normal(dd);
     else return math_traits<T>::both(dd >= exact_min_square<T>(), dd <= largest<T>());
@@ -169,7 +169,7 @@ PHONG_HD constexpr mask_t<T> normal_square(T dd)
 
 /// on && normal_square(dd).
 template <class T>
-PHONG_HD constexpr mask_t<T> both_normal_square(mask_t<T> on, T dd)
+PHONG_INLINE constexpr mask_t<T> both_normal_square(mask_t<T> on, T dd)
 {
     if constexpr (requires { math_traits<T>::both_positive_normal(on, dd); }) return math_traits<T>::both_positive_normal(on, dd);
     else return math_traits<T>::both(on, normal_square(dd));
@@ -177,7 +177,7 @@ PHONG_HD constexpr mask_t<T> both_normal_square(mask_t<T> on, T dd)
 
 /// The exact mode's 1/|v| from dd = |v|^2: 0 when dd is not a normal number (rsqrt(inf) = 0 too).
 template <class T>
-PHONG_HD constexpr T exact_inverse_length(T dd)
+PHONG_INLINE constexpr T exact_inverse_length(T dd)
 {
     if constexpr (std::is_floating_point_v<T>) {
         if (dd >= exact_min_square<T>()) [[likely]] return phong::rsqrt(dd);
@@ -193,7 +193,7 @@ PHONG_HD constexpr T exact_inverse_length(T dd)
 /// i about the plane with unit normal n. Pre: n unit length (else the result is not a mirror
 /// image). It keeps |i| and is an involution (up to rounding) for unit n. Edge: n = 0 returns i.
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<L, T, Q> reflect(const glm::vec<L, T, Q>& i, const glm::vec<L, T, Q>& n)
+PHONG_INLINE constexpr glm::vec<L, T, Q> reflect(const glm::vec<L, T, Q>& i, const glm::vec<L, T, Q>& n)
 {
     return i - n * (T(2) * phong::dot(n, i));
 }
@@ -201,7 +201,7 @@ PHONG_HD constexpr glm::vec<L, T, Q> reflect(const glm::vec<L, T, Q>& i, const g
 /// GLSL faceforward: faceforward(n, i, nref) = dot(nref, i) < 0 ? n : -n.
 /// Edge: dot(nref, i) = 0 or NaN gives -n (as GLSL).
 template <glm::length_t L, class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<L, T, Q> faceforward(const glm::vec<L, T, Q>& n, const glm::vec<L, T, Q>& i,
+PHONG_INLINE constexpr glm::vec<L, T, Q> faceforward(const glm::vec<L, T, Q>& n, const glm::vec<L, T, Q>& i,
                                                  const glm::vec<L, T, Q>& nref)
 {
     const T sign = phong::select(phong::dot(nref, i) < T(0), T(1), T(-1));
@@ -212,7 +212,7 @@ PHONG_HD constexpr glm::vec<L, T, Q> faceforward(const glm::vec<L, T, Q>& n, con
 /// constexpr-unfriendly in some configurations). Edge: a zero vector gives 0, parallel ones 0 up
 /// to rounding; products beyond T's range give inf (or NaN from inf - inf).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> cross(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b)
+PHONG_INLINE constexpr glm::vec<3, T, Q> cross(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b)
 {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }

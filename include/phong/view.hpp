@@ -12,7 +12,7 @@ namespace phong {
 /// Seed 000, perspective: v = normalize(O - Q), O = (0, 0, 0) the eye in eye coordinates.
 /// Edge: Q = O gives v = 0; huge and tiny Q are rescaled (never NaN for finite Q).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> view_perspective(const glm::vec<3, T, Q>& point)
+PHONG_INLINE constexpr glm::vec<3, T, Q> view_perspective(const glm::vec<3, T, Q>& point)
 {
     return phong::normalize(-point);
 }
@@ -23,7 +23,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> view_perspective(const glm::vec<3, T, Q>& p
 /// M12/M11 finite. Edge: M00 or M11 = 0, or a ratio beyond T's range, gives NaN components; use
 /// eye_from_projection, which never divides by them.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> view_orthographic(const glm::mat<4, 4, T, Q>& projection)
+PHONG_INLINE constexpr glm::vec<3, T, Q> view_orthographic(const glm::mat<4, 4, T, Q>& projection)
 {
     return phong::normalize(glm::vec<3, T, Q>(-projection[2][0] / projection[0][0], -projection[2][1] / projection[1][1], T(1)));
 }
@@ -43,7 +43,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> view_orthographic(const glm::mat<4, 4, T, Q
 /// 1e30) give the same E. An eye point beyond T's range (E.xyz / E.w overflows) is returned as
 /// its direction from the origin (w = 0), the limit it tends to.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<4, T, Q> eye_from_projection(const glm::mat<4, 4, T, Q>& M)
+PHONG_INLINE constexpr glm::vec<4, T, Q> eye_from_projection(const glm::mat<4, 4, T, Q>& M)
 {
     // Rows of M (GLM is column-major: M[c][r]), each rescaled so that its 3x3 minors neither
     // overflow nor underflow.
@@ -69,7 +69,7 @@ PHONG_HD constexpr glm::vec<4, T, Q> eye_from_projection(const glm::mat<4, 4, T,
 /// for seed 001's ray start; w = 0: a direction toward the viewer, orthographic):
 ///   v = normalize(E.xyz - E.w Q). Edge: Q at the eye gives 0.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> view_vector(const glm::vec<4, T, Q>& eye, const glm::vec<3, T, Q>& point)
+PHONG_INLINE constexpr glm::vec<3, T, Q> view_vector(const glm::vec<4, T, Q>& eye, const glm::vec<3, T, Q>& point)
 {
     return phong::toward(eye, point).direction;
 }

@@ -31,7 +31,7 @@ struct weighted_lights {
 /// list's lifetime, as in shade<F>(..., masked(lights, bits), ...)), an rvalue one (a view) is moved in.
 /// Pre: at most 64 lights (bits past the list are ignored; lights past bit 63 are not seen).
 template <class Lights>
-PHONG_HD constexpr masked_lights<Lights> masked(Lights&& lights, std::uint64_t visible)
+PHONG_INLINE constexpr masked_lights<Lights> masked(Lights&& lights, std::uint64_t visible)
 {
     return {static_cast<Lights&&>(lights), visible};
 }
@@ -45,7 +45,7 @@ PHONG_HD constexpr masked_lights<Lights> masked(Lights&& lights, std::uint64_t v
 /// [0, 1] are visibilities; one above 1 brightens the light, as a stronger light would.
 /// Held as masked() holds it.
 template <class Lights, class T>
-PHONG_HD constexpr weighted_lights<Lights, T> weighted(Lights&& lights, std::span<const T> weights)
+PHONG_INLINE constexpr weighted_lights<Lights, T> weighted(Lights&& lights, std::span<const T> weights)
 {
     return {static_cast<Lights&&>(lights), weights};
 }

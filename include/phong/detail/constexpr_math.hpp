@@ -26,12 +26,12 @@ using wide = long double;
 
 inline constexpr wide ln2 = 0.693147180559945309417232121458176568L;
 
-template <class T> PHONG_HD constexpr bool is_nan(T x) { return x != x; }
-template <class T> PHONG_HD constexpr T inf() { return std::numeric_limits<T>::infinity(); }
-template <class T> PHONG_HD constexpr T qnan() { return std::numeric_limits<T>::quiet_NaN(); }
+template <class T> PHONG_INLINE constexpr bool is_nan(T x) { return x != x; }
+template <class T> PHONG_INLINE constexpr T inf() { return std::numeric_limits<T>::infinity(); }
+template <class T> PHONG_INLINE constexpr T qnan() { return std::numeric_limits<T>::quiet_NaN(); }
 
 // x = m * 2^k with m in [sqrt(1/2), sqrt(2)); x finite and > 0.
-PHONG_HD constexpr wide reduce_pow2(wide x, int& k)
+PHONG_INLINE constexpr wide reduce_pow2(wide x, int& k)
 {
     k = 0;
     constexpr wide two32 = 4294967296.0L;
@@ -43,7 +43,7 @@ PHONG_HD constexpr wide reduce_pow2(wide x, int& k)
 }
 
 // 2^k as a long double, by repeated squaring.
-PHONG_HD constexpr wide pow2(int k)
+PHONG_INLINE constexpr wide pow2(int k)
 {
     wide base = k < 0 ? 0.5L : 2.0L;
     unsigned n = static_cast<unsigned>(k < 0 ? -k : k);
@@ -55,7 +55,7 @@ PHONG_HD constexpr wide pow2(int k)
     return r;
 }
 
-PHONG_HD constexpr wide sqrt(wide x)
+PHONG_INLINE constexpr wide sqrt(wide x)
 {
     if (is_nan(x) || x == 0 || x == inf<wide>()) return x;
     if (x < 0) return qnan<wide>();
@@ -71,7 +71,7 @@ PHONG_HD constexpr wide sqrt(wide x)
     return y * pow2(k / 2);
 }
 
-PHONG_HD constexpr wide exp(wide x)
+PHONG_INLINE constexpr wide exp(wide x)
 {
     if (is_nan(x)) return x;
     if (x > 11357.3L) return inf<wide>();
@@ -91,7 +91,7 @@ PHONG_HD constexpr wide exp(wide x)
 }
 
 // 2 atanh(t) = log((1 + t) / (1 - t)), |t| < 1/2.
-PHONG_HD constexpr wide two_atanh(wide t)
+PHONG_INLINE constexpr wide two_atanh(wide t)
 {
     const wide t2 = t * t;
     wide power = t, sum = t;
@@ -104,7 +104,7 @@ PHONG_HD constexpr wide two_atanh(wide t)
     return 2 * sum;
 }
 
-PHONG_HD constexpr wide log(wide x)
+PHONG_INLINE constexpr wide log(wide x)
 {
     if (is_nan(x) || x == inf<wide>()) return x;
     if (x < 0) return qnan<wide>();
@@ -114,7 +114,7 @@ PHONG_HD constexpr wide log(wide x)
     return two_atanh((m - 1) / (m + 1)) + static_cast<wide>(k) * ln2;
 }
 
-PHONG_HD constexpr wide log1p(wide x)
+PHONG_INLINE constexpr wide log1p(wide x)
 {
     if (is_nan(x) || x == inf<wide>()) return x;
     if (x < -1) return qnan<wide>();
@@ -124,7 +124,7 @@ PHONG_HD constexpr wide log1p(wide x)
     return log(1 + x);
 }
 
-PHONG_HD constexpr wide pow(wide x, wide y)
+PHONG_INLINE constexpr wide pow(wide x, wide y)
 {
     if (y == 0 || x == 1) return 1; // IEEE: pow(x, 0) = 1 even for NaN x; pow(1, y) = 1
     if (is_nan(x) || is_nan(y)) return qnan<wide>();

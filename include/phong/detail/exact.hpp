@@ -50,7 +50,7 @@ struct surface_frame {
 /// x unchanged, hidden from the compiler's algebra (GCC and Clang, SIMD lanes): an x + (-y)
 /// built from it is not folded back into x - y.
 template <class T>
-PHONG_HD inline T opaque_lanes(T x)
+PHONG_INLINE T opaque_lanes(T x)
 {
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
     if constexpr (requires { typename T::register_type; }) {
@@ -75,7 +75,7 @@ struct unit_vector {
     mask_t<T> ok; ///< unit is a unit vector
 };
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T sign = T(1))
+PHONG_INLINE constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T sign = T(1))
 {
     const T dd = phong::dot(v, v);
     if constexpr (std::is_floating_point_v<T>) {
@@ -93,7 +93,7 @@ PHONG_HD constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T sign 
 /// unit(e * sign), or, when no term reads v, only its square (the NaN test reads it): no
 /// normalization left behind.
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T sign)
+PHONG_INLINE constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T sign)
 {
     if constexpr (F.specular == specular_model::none && F.two_sided != facing::view) {
         return {glm::vec<3, T, Q>(T(0)), phong::dot(e, e), mask_t<T>(true)};
@@ -103,10 +103,11 @@ PHONG_HD constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T sig
 }
 
 /// The view vector v at Q: normalize(-Q) (eye_at_origin), the given vector normalized (given; as
-/// is with unit_inputs), the environment's direction (fixed_direction), or normalize(E.xyz - E.w Q)
+/// is with unit_inputs), the environment's direction normalized (fixed_direction; as is with
+/// unit_inputs), or normalize(E.xyz - E.w Q)
 /// (eye_point). Its square tells whether the inputs may be non-finite (fixed_direction: |Q|^2 does).
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& given_view,
+PHONG_INLINE constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& given_view,
                                                  const environment<T, Q>& env)
 {
     using vec3 = glm::vec<3, T, Q>;
@@ -115,6 +116,7 @@ PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& positi
         if constexpr (F.unit_inputs) return {given_view, T(1), mask_t<T>(true)}; // unit by precondition
         else return view_unit<F>(given_view, T(1));
     } else if constexpr (F.view == view_model::fixed_direction) {
+        if constexpr (F.unit_inputs) return {eye, phong::dot(position, position), mask_t<T>(true)}; // unit by precondition
         const vec3 v = phong::normalize(eye);
         return {v, phong::dot(position, position), phong::dot(v, v) > T(0)};
     } else if constexpr (F.view == view_model::eye_at_origin) {
@@ -127,7 +129,7 @@ PHONG_HD constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& positi
 /// Lane-wise: the squares of the normal and the view vector are at most T's largest, which means
 /// finite inputs (poison 0). A given view vector says nothing about Q: its square joins the test.
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr mask_t<T> squares_in_range(const glm::vec<3, T, Q>& position, T normal_square, T view_square)
+PHONG_INLINE constexpr mask_t<T> squares_in_range(const glm::vec<3, T, Q>& position, T normal_square, T view_square)
 {
     if constexpr (F.view == view_model::given) view_square = view_square + phong::dot(position, position);
     else (void)position;
@@ -139,7 +141,7 @@ PHONG_HD constexpr mask_t<T> squares_in_range(const glm::vec<3, T, Q>& position,
 /// number), their masks are the test: a zero normal or view vector then takes the exact test too
 /// (rare), and no compare is added.
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr bool finite_squares(const glm::vec<3, T, Q>& position, const unit_vector<T, Q>& n, const unit_vector<T, Q>& v)
+PHONG_INLINE constexpr bool finite_squares(const glm::vec<3, T, Q>& position, const unit_vector<T, Q>& n, const unit_vector<T, Q>& v)
 {
     constexpr bool view_of_position = (F.view == view_model::eye_at_origin || F.view == view_model::eye_point) &&
                                       !(F.specular == specular_model::none && F.two_sided != facing::view); // view_unit: unit_of
@@ -156,7 +158,7 @@ PHONG_HD constexpr bool finite_squares(const glm::vec<3, T, Q>& position, const 
 /// finite inputs and poison 0, so the exact test runs only in the rare other case (SIMD lanes:
 /// prepare, through finite_squares).
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                   const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env, T normal_square,
                                   T view_square)
 {
@@ -168,7 +170,7 @@ PHONG_HD constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::
 /// The per-point frame: unit normal (faced toward the viewer when two-sided), view vector,
 /// whether both exist, the poison, and n.v.
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
                                                mask_t<T> front_facing)
 {
@@ -213,7 +215,7 @@ PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position
 /// gated, n.l > 0. Scalars: one short-circuit condition, the sign first (it
 /// rejects about a third of a typical scene's pairs, and g++ then branches on each compare).
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
+PHONG_INLINE constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 {
     if constexpr (std::is_floating_point_v<T>) {
         return s.defined && (!gated<F> || nd > T(0)) && dd >= exact_min_square<T>() && dd <= largest<T>();
@@ -230,7 +232,7 @@ PHONG_HD constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 /// is a polynomial kernel of the same cost (detail/simd/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
 /// fast::pow_unit_max_rel where x^m >= 2^-24), and fast::pow_unit was slower there (docs/batch.md).
 template <evaluation M, class T>
-PHONG_HD constexpr T route_cosine_power(T x, T scale, T m)
+PHONG_INLINE constexpr T route_cosine_power(T x, T scale, T m)
 {
     if constexpr (M == evaluation::fast && (std::is_floating_point_v<T> || !std::is_same_v<scalar_t<T>, float>))
         return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
@@ -254,29 +256,29 @@ template <class T, unsigned Squarings = runtime_squarings> struct integer_expone
     bool even;                   ///< n is even
     static integer_exponent of(unsigned n) { return {fast::plan_pow_integer(n), fast::plan_pow_integer(n / 2), n % 2 == 0}; }
     /// x^n (fast::pow_integer)
-    PHONG_HD T power(T x) const
+    PHONG_INLINE T power(T x) const
     {
         if constexpr (Squarings == runtime_squarings) return fast::pow_integer(x, plan);
         else return squared<Squarings>(x);
     }
     /// n is even
-    PHONG_HD bool is_even() const
+    PHONG_INLINE bool is_even() const
     {
         if constexpr (Squarings == runtime_squarings) return even;
         else return Squarings > 0;
     }
     /// x^(n/2), n even
-    PHONG_HD T half_power(T x) const
+    PHONG_INLINE T half_power(T x) const
     {
         if constexpr (Squarings == runtime_squarings) return fast::pow_integer(x, half);
         else if constexpr (Squarings == 0) return x; // n = 1 is odd: not called
         else return squared<Squarings - 1>(x);
     }
     /// The same shininess with n = 2^K known at compile time (K = plan.squarings, n a power of two).
-    template <unsigned K> PHONG_HD integer_exponent<T, K> with_squarings() const { return {plan, half, even}; }
+    template <unsigned K> PHONG_INLINE integer_exponent<T, K> with_squarings() const { return {plan, half, even}; }
 
 private:
-    template <unsigned K> PHONG_HD static T squared(T x)
+    template <unsigned K> PHONG_INLINE static T squared(T x)
     {
         if constexpr (K == 0) return x;
         else return squared<K - 1>(x * x);
@@ -321,7 +323,7 @@ inline constexpr bool step_specular_route = F.specular == specular_model::phong 
 
 /// u^2 (u = epsilon / 2): the least |h|^2 that has a halfway vector on SIMD lanes
 /// (lanes_inverse_halfway_length).
-template <class T> PHONG_HD constexpr T lanes_halfway_min()
+template <class T> PHONG_INLINE constexpr T lanes_halfway_min()
 {
     constexpr scalar_t<T> u = std::numeric_limits<scalar_t<T>>::epsilon() / 2;
     return T(u * u);
@@ -329,21 +331,21 @@ template <class T> PHONG_HD constexpr T lanes_halfway_min()
 
 /// step_specular for one step: m's per-call (or per-step material) fields and the frame's sees_viewer.
 template <class T>
-PHONG_HD step_specular<T> step_specular_of(const lane_shininess<T>& m, mask_t<T> sees_viewer)
+PHONG_INLINE step_specular<T> step_specular_of(const lane_shininess<T>& m, mask_t<T> sees_viewer)
 {
     const T inf(std::numeric_limits<scalar_t<T>>::infinity());
     return {m.bounded, phong::select(sees_viewer, m.threshold, inf), phong::select(sees_viewer, lanes_halfway_min<T>(), inf)};
 }
 
 /// The least |h|^2 with a halfway vector of a step's lanes: step_specular's per lane, else u^2.
-template <class T, class Exponent> PHONG_HD T halfway_min_of([[maybe_unused]] const Exponent& m)
+template <class T, class Exponent> PHONG_INLINE T halfway_min_of([[maybe_unused]] const Exponent& m)
 {
     if constexpr (std::is_same_v<Exponent, step_specular<T>>) return m.halfway_min;
     else return lanes_halfway_min<T>();
 }
 
 template <evaluation M, class T>
-PHONG_HD constexpr T route_cosine_power(T x, T scale, const lane_shininess<T>& m)
+PHONG_INLINE constexpr T route_cosine_power(T x, T scale, const lane_shininess<T>& m)
 {
     if constexpr (M == evaluation::fast && !std::is_same_v<scalar_t<T>, float>)
         return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m.m);
@@ -352,7 +354,7 @@ PHONG_HD constexpr T route_cosine_power(T x, T scale, const lane_shininess<T>& m
 
 /// Whether a lane that is on has shininess 0 (pow(0, 0) = 1 keeps the specular term on unlit
 /// cosines); lane_shininess and integer_exponent know per call whether any lane has it.
-template <class T, class Exponent> PHONG_HD constexpr bool any_zero_exponent(const Exponent& m, const mask_t<T>& on)
+template <class T, class Exponent> PHONG_INLINE constexpr bool any_zero_exponent(const Exponent& m, const mask_t<T>& on)
 {
     if constexpr (std::is_same_v<Exponent, lane_shininess<T>>) return m.any_zero && math_traits<T>::any(math_traits<T>::both(on, m.zero));
     else if constexpr (is_integer_exponent<Exponent, T>) return false; // n >= 1
@@ -364,7 +366,7 @@ template <class T, class Exponent> PHONG_HD constexpr bool any_zero_exponent(con
 /// the viewer (scalars: shade's light loop runs a point without a view vector with the specular
 /// term removed, detail::add_lights).
 template <evaluation M, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent>
-PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x, T scale, const Exponent& m,
+PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x, T scale, const Exponent& m,
                                      [[maybe_unused]] mask_t<T> on)
 {
     glm::vec<3, T, Q>& sum = sum_of<term_kind::specular>(sums);
@@ -403,7 +405,7 @@ PHONG_HD constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x,
 /// fast::rsqrt, except on float SIMD lanes, whose rsqrt_normal already is an estimate and one Newton
 /// step (1.6 u AVX-512, 4.9 u AVX2: within fast::rsqrt_max_rel<float>) without fast::rsqrt's guards.
 template <evaluation M, class T>
-PHONG_HD constexpr T lit_inverse_length(T dd)
+PHONG_INLINE constexpr T lit_inverse_length(T dd)
 {
     if constexpr (M == evaluation::fast && (std::is_floating_point_v<T> || !std::is_same_v<scalar_t<T>, float>))
         return fast::rsqrt(dd);
@@ -412,7 +414,7 @@ PHONG_HD constexpr T lit_inverse_length(T dd)
 
 /// l + v with l = d inv not rounded first: d inv + v, one fma per component (SIMD lanes).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q> unrounded_halfway_sum(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v)
+PHONG_INLINE constexpr glm::vec<3, T, Q> unrounded_halfway_sum(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v)
 {
     return {math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z)};
 }
@@ -420,7 +422,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> unrounded_halfway_sum(const glm::vec<3, T, 
 /// 1/|h| (lit_inverse_length of |h|^2) where |h|^2 >= min_square, else 0: Blinn's 1/|l + v| with
 /// the threshold below which a route takes l = -v (no halfway vector).
 template <evaluation M, class T, glm::qualifier Q>
-PHONG_HD constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T min_square)
+PHONG_INLINE constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T min_square)
 {
     const T hh = phong::dot(h, h);
     return phong::select(hh >= min_square, lit_inverse_length<M>(hh), T(0));
@@ -431,7 +433,7 @@ PHONG_HD constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T min_s
 /// exactly no longer cancels bit for bit), n.h = (n.l + n.v) / |l + v| is a ratio of two roundings,
 /// so it is taken as 0, as the exact mode does for l = -v.
 template <evaluation M, class T, glm::qualifier Q>
-PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
+PHONG_INLINE constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
 {
     if constexpr (M == evaluation::fast) {
         constexpr double er = fast::rsqrt_max_rel<scalar_t<T>>;
@@ -454,7 +456,7 @@ PHONG_HD constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, co
 /// halfway_min: that u^2 (lanes_halfway_min), or per lane (step_specular) +inf where the point has
 /// no view vector.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v, T halfway_min)
+PHONG_INLINE constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v, T halfway_min)
 {
     return inverse_length_at_least<evaluation::exact>(unrounded_halfway_sum(d, inv, v), halfway_min);
 }
@@ -473,7 +475,7 @@ PHONG_HD constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T 
 /// l = -v cancels bit for bit (the threshold above takes that case), and one rounding is more
 /// accurate than two.
 template <class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, unsigned K>
-PHONG_HD constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light& L, T f, T nl, T inv, const glm::vec<3, T, Q>& d,
+PHONG_INLINE constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light& L, T f, T nl, T inv, const glm::vec<3, T, Q>& d,
                                                   const surface_frame<T, Q>& s, const integer_exponent<T, K>& m, mask_t<T> on)
 {
     using S = scalar_t<T>;
@@ -500,7 +502,7 @@ PHONG_HD constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light&
 /// Dot products are taken with d = L.xyz - w Q itself and scaled by 1/|d| only for lit pairs:
 /// the signs that decide the branches do not wait for a square root and a division.
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent, class W>
-PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, const Exponent& m, W visibility)
+PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, const Exponent& m, W visibility)
 {
     using vec3 = glm::vec<3, T, Q>;
     const T w = light_w<F, T>(L);

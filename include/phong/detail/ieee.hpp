@@ -36,7 +36,7 @@ namespace phong::detail::ieee {
 /// x unchanged, but opaque to the optimizer where it may reassociate (see above): nothing computed
 /// from the result is simplified using how x was computed. Scalars (float, double) and SIMD batches
 /// (any type with a register_type, e.g. xsimd::batch).
-template <class V> PHONG_HD constexpr V opaque(V x)
+template <class V> PHONG_INLINE constexpr V opaque(V x)
 {
 #if PHONG_FP_BARRIER && (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
     if (!std::is_constant_evaluated()) {
@@ -74,7 +74,7 @@ template <class V> struct shift_rounded {
     V sum;
     V value;
 };
-template <class V> PHONG_HD constexpr shift_rounded<V> round_by_shift(V y, V shift)
+template <class V> PHONG_INLINE constexpr shift_rounded<V> round_by_shift(V y, V shift)
 {
     const V sum = opaque(y + shift);
     return {sum, opaque(sum - shift)};
@@ -83,7 +83,7 @@ template <class V> PHONG_HD constexpr shift_rounded<V> round_by_shift(V y, V shi
 /// The rounding error of hi = fl(a + b): hi + lo = a + b exactly (Knuth's TwoSum), lo returned.
 /// Every intermediate passes through opaque, so a reassociating compiler can neither fold
 /// (hi - a) back to b nor cancel terms across the sum (both would return 0).
-template <class V> PHONG_HD constexpr V two_sum_error(const V& a, const V& b, const V& hi)
+template <class V> PHONG_INLINE constexpr V two_sum_error(const V& a, const V& b, const V& hi)
 {
     const V h = opaque(hi);
     const V bb = opaque(h - a);
@@ -93,7 +93,7 @@ template <class V> PHONG_HD constexpr V two_sum_error(const V& a, const V& b, co
 
 /// ((a + b) + c) + d in that order (Dekker's product error: each partial sum exact), each
 /// partial sum opaque so that no compiler reorders it.
-template <class V> PHONG_HD constexpr V ordered_sum(const V& a, const V& b, const V& c, const V& d)
+template <class V> PHONG_INLINE constexpr V ordered_sum(const V& a, const V& b, const V& c, const V& d)
 {
     return opaque(opaque(opaque(a) + b) + c) + d;
 }
@@ -120,17 +120,17 @@ template <class T> inline constexpr bits_of<T> inf_bits = sizeof(T) == 4 ? bits_
 template <class T> inline constexpr bits_of<T> sign_bit = bits_of<T>(1) << (8 * sizeof(T) - 1);
 
 /// Classification by bits: the same answer under -ffinite-math-only as in IEEE builds.
-template <class T> PHONG_HD constexpr bool is_nan(T x)
+template <class T> PHONG_INLINE constexpr bool is_nan(T x)
 {
     static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
     return (std::bit_cast<bits_of<T>>(x) & ~sign_bit<T>) > inf_bits<T>;
 }
-template <class T> PHONG_HD constexpr bool is_inf(T x)
+template <class T> PHONG_INLINE constexpr bool is_inf(T x)
 {
     static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
     return (std::bit_cast<bits_of<T>>(x) & ~sign_bit<T>) == inf_bits<T>;
 }
-template <class T> PHONG_HD constexpr bool is_finite(T x)
+template <class T> PHONG_INLINE constexpr bool is_finite(T x)
 {
     static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
     return (std::bit_cast<bits_of<T>>(x) & ~sign_bit<T>) < inf_bits<T>;
@@ -139,7 +139,7 @@ template <class T> PHONG_HD constexpr bool is_finite(T x)
 /// 0 < x < inf (x not NaN) by bits: scalars give bool; SIMD batches (xsimd's batch<T, A>, found by
 /// argument-dependent lookup) give their batch_bool. The guard of a refined hardware estimate
 /// (keep the estimate itself where it is 0 or inf), which -ffinite-math-only would fold to x > 0.
-template <class T> PHONG_HD constexpr bool positive_finite(T x)
+template <class T> PHONG_INLINE constexpr bool positive_finite(T x)
 {
     static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
     const bits_of<T> b = std::bit_cast<bits_of<T>>(x);

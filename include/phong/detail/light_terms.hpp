@@ -34,14 +34,14 @@ struct folded_sums {
 /// Which sum a term goes to: its own in light_sums, the one total in folded_sums.
 enum class term_kind : unsigned char { ambient, diffuse, specular };
 template <term_kind K, class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q>& sum_of(light_sums<T, Q>& sums)
+PHONG_INLINE constexpr glm::vec<3, T, Q>& sum_of(light_sums<T, Q>& sums)
 {
     if constexpr (K == term_kind::ambient) return sums.ambient;
     else if constexpr (K == term_kind::diffuse) return sums.diffuse;
     else return sums.specular;
 }
 template <term_kind K, class T, glm::qualifier Q>
-PHONG_HD constexpr glm::vec<3, T, Q>& sum_of(folded_sums<T, Q>& sums)
+PHONG_INLINE constexpr glm::vec<3, T, Q>& sum_of(folded_sums<T, Q>& sums)
 {
     return sums.total;
 }
@@ -49,7 +49,7 @@ PHONG_HD constexpr glm::vec<3, T, Q>& sum_of(folded_sums<T, Q>& sums)
 /// A light's vector in the arithmetic type T: the vector itself when it already is (a reference,
 /// no copy), else widened exactly (float lights in the stable mode's double arithmetic).
 template <class T, int N, class U, glm::qualifier Q>
-PHONG_HD constexpr decltype(auto) in_type(const glm::vec<N, U, Q>& v)
+PHONG_INLINE constexpr decltype(auto) in_type(const glm::vec<N, U, Q>& v)
 {
     if constexpr (std::is_same_v<U, T>) return (v);
     else return glm::vec<N, T, Q>(v);
@@ -57,7 +57,7 @@ PHONG_HD constexpr decltype(auto) in_type(const glm::vec<N, U, Q>& v)
 
 /// The light's w as F knows it: 1 for positional, 0 for directional lights, else L.position.w.
 template <features F, class T, class Light>
-PHONG_HD constexpr T light_w([[maybe_unused]] const Light& L)
+PHONG_INLINE constexpr T light_w([[maybe_unused]] const Light& L)
 {
     if constexpr (F.lights == light_kind::positional) return T(1);
     else if constexpr (F.lights == light_kind::directional) return T(0);
@@ -67,7 +67,7 @@ PHONG_HD constexpr T light_w([[maybe_unused]] const Light& L)
 /// x * 0 is 0 for finite x and NaN for NaN or inf: the NaN policy's poison of a point (its
 /// position, normal, and the view input F reads: the given view vector or the eye point).
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr T poison_of(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr T poison_of(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                [[maybe_unused]] const glm::vec<3, T, Q>& given_view, [[maybe_unused]] const environment<T, Q>& env)
 {
     const glm::vec<3, T, Q> zero(T(0));
@@ -82,7 +82,7 @@ struct unweighted {};
 
 /// Two-sided lighting: the sign that faces the normal n toward the viewer (or the caller's flag).
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v, mask_t<T> front_facing)
+PHONG_INLINE constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v, mask_t<T> front_facing)
 {
     if constexpr (F.two_sided == facing::view) return viewer_facing_sign(n, v);
     else return phong::select(front_facing, T(1), T(-1));
@@ -99,7 +99,7 @@ PHONG_HD constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T
 /// scalar type, whose attenuation floor applies (float lights widened to double by the caller name
 /// float here, detail/simd/stable_lanes.hpp).
 template <features F, class T, glm::qualifier Q, class Light, class W, class LightScalar = light_scalar_t<Light>>
-PHONG_HD constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
+PHONG_INLINE constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
                                   [[maybe_unused]] const glm::vec<3, T, Q>& l, [[maybe_unused]] W visibility)
 {
     using U = light_scalar_t<Light>;
@@ -134,7 +134,7 @@ PHONG_HD constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_unuse
 
 /// The light's ambient term: La_i f (or La_i, without features::attenuate_ambient).
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light>
-PHONG_HD constexpr void add_ambient(Sums<T, Q>& sums, [[maybe_unused]] const Light& L, [[maybe_unused]] T f)
+PHONG_INLINE constexpr void add_ambient(Sums<T, Q>& sums, [[maybe_unused]] const Light& L, [[maybe_unused]] T f)
 {
     if constexpr (F.light_ambient) {
         if constexpr (F.attenuate_ambient) sum_of<term_kind::ambient>(sums) += in_type<T>(ambient_of(L)) * f;
@@ -149,7 +149,7 @@ template <features F> inline constexpr bool gated = F.specular_gate || F.specula
 /// The diffuse term Ld_i f max(n.l, 0) of a lit pair (on: the lanes that are lit; gated: on
 /// already implies n.l > 0).
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light>
-PHONG_HD constexpr void add_diffuse(Sums<T, Q>& sums, const Light& L, T f, T nl, [[maybe_unused]] mask_t<T> on)
+PHONG_INLINE constexpr void add_diffuse(Sums<T, Q>& sums, const Light& L, T f, T nl, [[maybe_unused]] mask_t<T> on)
 {
     const T lambert = gated<F> ? nl : phong::max(nl, T(0));
     glm::vec<3, T, Q>& sum = sum_of<term_kind::diffuse>(sums);

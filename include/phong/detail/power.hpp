@@ -53,7 +53,7 @@ struct log2_point {
 
 inline constexpr long double wide_ln2 = ce::ln2;
 
-PHONG_HD constexpr std::array<log2_point, (1 << log_table_bits)> make_log2_table()
+PHONG_INLINE constexpr std::array<log2_point, (1 << log_table_bits)> make_log2_table()
 {
     std::array<log2_point, (1 << log_table_bits)> t{};
     for (int i = 0; i < (1 << log_table_bits); ++i) {
@@ -67,7 +67,7 @@ PHONG_HD constexpr std::array<log2_point, (1 << log_table_bits)> make_log2_table
 }
 
 // Entry j holds bits(2^(j/64)) - (j << 46): adding (round(64 y) << 46) then gives 2^(round(64 y)/64).
-PHONG_HD constexpr std::array<u64, (1 << exp_table_bits)> make_exp2_table()
+PHONG_INLINE constexpr std::array<u64, (1 << exp_table_bits)> make_exp2_table()
 {
     std::array<u64, (1 << exp_table_bits)> t{};
     for (int j = 0; j < (1 << exp_table_bits); ++j) {
@@ -95,7 +95,7 @@ inline constexpr double b1 = double(wide_ln2), b2 = double(wide_ln2 * wide_ln2 /
 /// float's degree-5 polynomial (truncation below r^6/6 < 2^-50 absolute, which only matters times
 /// m where m |log2 x| < 150, else the float result is 0) instead of degree 7.
 template <bool Short = false>
-PHONG_HD constexpr double log2_normal(double x)
+PHONG_INLINE constexpr double log2_normal(double x)
 {
     const u64 u = std::bit_cast<u64>(x);
     const u64 tmp = u - log_offset;
@@ -113,7 +113,7 @@ PHONG_HD constexpr double log2_normal(double x)
 /// 2^y for y in [-1022, 0] (a normal result). Short: float's degree-3 polynomial (truncation below
 /// 4e-11 relative) instead of degree 5.
 template <bool Short = false>
-PHONG_HD constexpr double exp2_nonpositive(double y)
+PHONG_INLINE constexpr double exp2_nonpositive(double y)
 {
     constexpr double shift = 0x1.8p52 / (1 << exp_table_bits); // ulp 1/64 around it: y + shift rounds 64 y
     const auto [shifted, rounded] = ieee::round_by_shift(y, shift);
@@ -131,7 +131,7 @@ PHONG_HD constexpr double exp2_nonpositive(double y)
 /// The kernels' value outside their domain: IEEE pow's (Ieee: std::pow at run time, the
 /// long-double kernel in constant evaluation), or NaN without any call to libm.
 template <bool Ieee, class F>
-PHONG_HD constexpr F outside_domain(F x, F m)
+PHONG_INLINE constexpr F outside_domain(F x, F m)
 {
     if constexpr (!Ieee) {
         return std::numeric_limits<F>::quiet_NaN();
@@ -143,7 +143,7 @@ PHONG_HD constexpr F outside_domain(F x, F m)
 
 /// float's kernel: the same tables with the short polynomials, enough for a float result.
 template <bool Ieee>
-PHONG_HD constexpr float pow_unit_kernel(float xf, float mf)
+PHONG_INLINE constexpr float pow_unit_kernel(float xf, float mf)
 {
     const double x = xf, m = mf;
     if (x > 0.0) [[likely]] { // every positive float is a normal double
@@ -158,7 +158,7 @@ PHONG_HD constexpr float pow_unit_kernel(float xf, float mf)
 
 /// double's kernel; a subnormal x is scaled into the normal range.
 template <bool Ieee>
-PHONG_HD constexpr double pow_unit_kernel(double x, double m)
+PHONG_INLINE constexpr double pow_unit_kernel(double x, double m)
 {
     if (x > 0.0) [[likely]] {
         const double y = x >= 0x1p-1022 ? m * log2_normal(x) : m * (log2_normal(x * 0x1p64) - 64.0);
@@ -175,8 +175,8 @@ PHONG_HD constexpr double pow_unit_kernel(double x, double m)
 /// domain: x > 1 with m < 0 (a result <= 1) runs the same kernel, with the same accuracy and flush;
 /// everything else (x > 1 with m > 0, x < 0, NaN, inf) returns IEEE pow's value (std::pow at run
 /// time, the long-double kernel in constant evaluation).
-PHONG_HD constexpr float pow_unit(float x, float m) { return pow_unit_kernel<true>(x, m); }
-PHONG_HD constexpr double pow_unit(double x, double m) { return pow_unit_kernel<true>(x, m); }
+PHONG_INLINE constexpr float pow_unit(float x, float m) { return pow_unit_kernel<true>(x, m); }
+PHONG_INLINE constexpr double pow_unit(double x, double m) { return pow_unit_kernel<true>(x, m); }
 
 /// x^m for x in [0, 1] and a finite m >= 0 (a validated shininess): pow_unit's value there, with
 /// no fallback to libm's pow outside that domain. NaN x, NaN m, x < 0, x > 1 with m > 0, or m < 0
@@ -184,8 +184,8 @@ PHONG_HD constexpr double pow_unit(double x, double m) { return pow_unit_kernel<
 /// NaN for x = 1. Why a second entry point: the mere
 /// presence of a call (all vector registers caller-saved) made g++ keep a light loop's sums in
 /// memory in every iteration, and the shading loop never needs the fallback.
-PHONG_HD constexpr float pow_unit_in_domain(float x, float m) { return pow_unit_kernel<false>(x, m); }
-PHONG_HD constexpr double pow_unit_in_domain(double x, double m) { return pow_unit_kernel<false>(x, m); }
+PHONG_INLINE constexpr float pow_unit_in_domain(float x, float m) { return pow_unit_kernel<false>(x, m); }
+PHONG_INLINE constexpr double pow_unit_in_domain(double x, double m) { return pow_unit_kernel<false>(x, m); }
 #endif
 
 } // namespace phong::detail::power

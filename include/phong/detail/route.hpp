@@ -24,7 +24,7 @@ using frame_t = std::conditional_t<F.mode == evaluation::stable, stable::surface
 /// The point's frame (unit normal, view vector, whether both exist, poison), by F's route.
 /// given_view: the view vector for view_model::given (not read otherwise).
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                             const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
                                             mask_t<T> front_facing)
 {
@@ -36,7 +36,7 @@ PHONG_HD constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, c
 /// through light_traits; m: the shininess, T, or exact::lane_shininess<T> / integer_exponent<T> in
 /// shade_batch's lanes; visibility: unweighted, or a weight that multiplies f).
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent, class W = unweighted>
-PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const Light& L, const Exponent& m,
+PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const Light& L, const Exponent& m,
                                   W visibility = {})
 {
     if constexpr (F.mode == evaluation::stable) stable::add_light<F>(sums, s, L, m, visibility);
@@ -51,7 +51,7 @@ template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::t
 /// single-pass range of lights is read once. Every light is checked as the light<U> it stands for
 /// (to_light: a copy, in debug builds and constant evaluation only).
 template <class Light>
-PHONG_HD constexpr void check_light([[maybe_unused]] const Light& L)
+PHONG_INLINE constexpr void check_light([[maybe_unused]] const Light& L)
 {
     if constexpr (std::is_floating_point_v<light_scalar_t<Light>>) {
 #if defined(NDEBUG)
@@ -66,7 +66,7 @@ PHONG_HD constexpr void check_light([[maybe_unused]] const Light& L)
 /// negative or NaN colour). As check_light: a compile error in constant evaluation, the handler
 /// in debug builds, nothing under NDEBUG.
 template <class W>
-PHONG_HD constexpr void check_weight([[maybe_unused]] W weight)
+PHONG_INLINE constexpr void check_weight([[maybe_unused]] W weight)
 {
     if constexpr (std::is_floating_point_v<W>) {
 #if defined(NDEBUG)
@@ -102,16 +102,22 @@ inline constexpr features without_specular = [] {
     return f;
 }();
 
+/// The lights of a std::array, unrolled at compile time (each_light; a function rather than a
+/// lambda, so that it carries the same inlining attribute as every step of the light loop).
+template <features F, class Sums, class Frame, class Lights, class M, std::size_t... I>
+PHONG_INLINE constexpr void each_array_light(Sums& sums, const Frame& s, const Lights& lights, M m, std::index_sequence<I...>)
+{
+    ((check_light(lights[I]), detail::add_light<F>(sums, s, lights[I], m, unweighted{})), ...);
+}
+
 /// Every light's terms added to the sums: a std::array unrolled at compile time, a masked or
 /// weighted list (visibility.hpp), or any input range of lights (views included).
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Frame, class Lights>
-PHONG_HD constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&& lights, T m) // Frame: frame_t<F, T, Q>
+PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&& lights, T m) // Frame: frame_t<F, T, Q>
 {
     using R = std::remove_cvref_t<Lights>;
     if constexpr (is_std_array<R>::value) {
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            ((check_light(lights[I]), detail::add_light<F>(sums, s, lights[I], m, unweighted{})), ...);
-        }(std::make_index_sequence<std::tuple_size_v<R>>{});
+        each_array_light<F>(sums, s, lights, m, std::make_index_sequence<std::tuple_size_v<R>>{});
     } else if constexpr (is_masked<R>::value) {
         std::uint64_t bits = lights.mask;
         for (auto&& L : lights.lights) {
@@ -146,7 +152,7 @@ PHONG_HD constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&& li
 /// eye, or a zero given v) keeps its diffuse term, which does not need v, and has no specular
 /// term: scalars run it with F's specular term removed (no per-light test), SIMD lanes mask it.
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Lights>
-PHONG_HD constexpr void add_lights(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
+PHONG_INLINE constexpr void add_lights(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
 {
     if constexpr (F.specular != specular_model::none && std::is_floating_point_v<T>) {
         if (s.defined && !s.sees_viewer) [[unlikely]] {

@@ -47,7 +47,7 @@ struct twofold_vector {
 /// directions are computed on the exact d: w Q is a rounded product (error by fma), the
 /// difference's error by TwoSum.
 template <light_kind K, class T, glm::qualifier Q>
-PHONG_HD constexpr twofold_vector<T, Q> difference_twofold(const glm::vec<3, T, Q>& xyz, T w, const glm::vec<3, T, Q>& point)
+PHONG_INLINE constexpr twofold_vector<T, Q> difference_twofold(const glm::vec<3, T, Q>& xyz, T w, const glm::vec<3, T, Q>& point)
 {
     twofold_vector<T, Q> d{xyz, glm::vec<3, T, Q>(T(0))};
     if constexpr (K == light_kind::positional) {
@@ -69,7 +69,7 @@ PHONG_HD constexpr twofold_vector<T, Q> difference_twofold(const glm::vec<3, T, 
 /// given v, E.xyz - E.w Q). features::unit_inputs does not skip this: the twofold unit vectors are
 /// what the stable mode's accuracy rests on.
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
                                                mask_t<T> front_facing)
 {
@@ -147,7 +147,7 @@ struct light_unit {
 
 /// l and n.l to about eps^2 (detail/twofold.hpp), from the exact d = hi + lo.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr light_unit<T, Q> light_twofold(const surface_frame<T, Q>& s, const twofold_vector<T, Q>& d)
+PHONG_INLINE constexpr light_unit<T, Q> light_twofold(const surface_frame<T, Q>& s, const twofold_vector<T, Q>& d)
 {
     const unit_twofold<T, Q> u = unit_of(d.hi, d.lo); // rescaled: any finite nonzero d
     light_unit<T, Q> r{u.hi, u.lo, T(0), T(0), u.inv_scaled, u.length};
@@ -158,7 +158,7 @@ PHONG_HD constexpr light_unit<T, Q> light_twofold(const surface_frame<T, Q>& s, 
 /// l rounded once from d rescaled by a power of two (exact: huge and tiny d survive), and n.l
 /// compensated on the exact d = hi + lo and the exact (rescaled) normal.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr light_unit<T, Q> light_rounded_once(const surface_frame<T, Q>& s, const twofold_vector<T, Q>& d)
+PHONG_INLINE constexpr light_unit<T, Q> light_rounded_once(const surface_frame<T, Q>& s, const twofold_vector<T, Q>& d)
 {
     using vec3 = glm::vec<3, T, Q>;
     const T largest_d = phong::max_abs(d.hi);
@@ -184,7 +184,7 @@ PHONG_HD constexpr light_unit<T, Q> light_rounded_once(const surface_frame<T, Q>
 /// A SIMD batch computes the second power only when one of its lanes needs it.
 /// Edges: x >= 1 (c <= 0) gives 0, and 1 for m = 0 (pow(0, 0) = 1).
 template <class T>
-PHONG_HD constexpr T power_of_cosine(const cosine_complement<T>& p, T m)
+PHONG_INLINE constexpr T power_of_cosine(const cosine_complement<T>& p, T m)
 {
     const mask_t<T> near_peak = p.complement <= T(0.5);
     if (math_traits<T>::all(near_peak)) return phong::pow_one_minus(p.complement, m);
@@ -197,7 +197,7 @@ PHONG_HD constexpr T power_of_cosine(const cosine_complement<T>& p, T m)
 /// rounded-once steps, or detail/twofold.hpp's twofold ones with the cosine itself where it is
 /// small: power_of_cosine).
 template <features F, class T, glm::qualifier Q>
-PHONG_HD constexpr T specular_factor(const surface_frame<T, Q>& s, const light_unit<T, Q>& u, bool twofold, T m)
+PHONG_INLINE constexpr T specular_factor(const surface_frame<T, Q>& s, const light_unit<T, Q>& u, bool twofold, T m)
 {
     if constexpr (F.specular == specular_model::phong) {
         if (twofold) return power_of_cosine(one_minus_rv(s.normal, s.normal_lo, u.nl, u.nl_lo, u.l, u.l_lo, s.view, s.view_lo), m);
@@ -210,7 +210,7 @@ PHONG_HD constexpr T specular_factor(const surface_frame<T, Q>& s, const light_u
 
 /// One light's terms added to the sums. A SIMD batch takes the twofold depth when any lane needs it.
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class W>
-PHONG_HD constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, T m, W visibility)
+PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, T m, W visibility)
 {
     using vec3 = glm::vec<3, T, Q>;
     const T w = light_w<F, T>(L);

@@ -27,7 +27,7 @@ namespace phong::detail {
 /// m = 1e3 in float). An fma result is never contracted again, and fma(a, b, +0) = fl(a b) (up to
 /// the sign of a zero), at the cost of one instruction like a multiplication. Without FMA
 /// instructions nothing can be fused, and the plain product is kept.
-template <class T> PHONG_HD constexpr T rounded_product(T a, T b)
+template <class T> PHONG_INLINE constexpr T rounded_product(T a, T b)
 {
 #if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
     return ieee::opaque(phong::fma(a, b, T(0)));
@@ -38,7 +38,7 @@ template <class T> PHONG_HD constexpr T rounded_product(T a, T b)
 
 /// The twofold route's TwoSum (math.hpp's two_sum_error), refused at compile time where the
 /// compiler may reassociate additions.
-template <class T> PHONG_HD constexpr T twofold_sum_error(T a, T b, T hi)
+template <class T> PHONG_INLINE constexpr T twofold_sum_error(T a, T b, T hi)
 {
     static_assert(ieee::twofold_allowed<T>,
                   "phong: the stable mode's twofold arithmetic (double, or features::precision = twofold) needs IEEE "
@@ -49,7 +49,7 @@ template <class T> PHONG_HD constexpr T twofold_sum_error(T a, T b, T hi)
 }
 
 /// a - b = hi + lo exactly (TwoSum on a + (-b)); returns lo for hi = fl(a - b).
-template <class T> PHONG_HD constexpr T difference_error(T a, T b, T hi)
+template <class T> PHONG_INLINE constexpr T difference_error(T a, T b, T hi)
 {
     return twofold_sum_error(a, -b, hi);
 }
@@ -72,7 +72,7 @@ struct unit_twofold {
 /// e.g. L.xyz - w Q with |w Q| > max although L, w and Q are finite) gives 0, inv_scaled = 0 and
 /// length = inf, never NaN: like a light at infinity with no direction.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& dlo)
+PHONG_INLINE constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& dlo)
 {
     using vec3 = glm::vec<3, T, Q>;
     // Renormalize d + dlo first (then |dlo| <= ulp(d) / 2): where d cancels, as L.xyz - w Q does
@@ -125,7 +125,7 @@ PHONG_HD constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const 
 /// (ah + al) . (bh + bl) as a twofold value, returned rounded in hi and its error in lo:
 /// Dot2 on the high parts (exact products, TwoSum accumulation) plus the first-order cross terms.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr void dot_twofold(const glm::vec<3, T, Q>& ah, const glm::vec<3, T, Q>& al, const glm::vec<3, T, Q>& bh,
+PHONG_INLINE constexpr void dot_twofold(const glm::vec<3, T, Q>& ah, const glm::vec<3, T, Q>& al, const glm::vec<3, T, Q>& bh,
                                     const glm::vec<3, T, Q>& bl, T& hi, T& lo)
 {
     T p = rounded_product(ah[0], bh[0]);
@@ -155,7 +155,7 @@ struct cosine_complement {
 /// below eps^2): the sum hi + lo is renormalized (Fast2Sum, |lo| <= |hi|), halved exactly, and the
 /// cosine is (1 - x) - x_lo, whose first difference is exact for x in [1/2, 2] (Sterbenz).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& c_lo)
+PHONG_INLINE constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& c_lo)
 {
     T hi = rounded_product(c[0], c[0]);
     T lo = phong::fma(c[0], c[0], -hi) + T(2) * c[0] * c_lo[0];
@@ -176,7 +176,7 @@ PHONG_HD constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>& c, 
 /// of about 1 eps however close r is to v, and the cosine r.v too however close it is to 0
 /// (down to a few eps^2). Pre: n, l, v unit (or 0).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, T nl_hi,
+PHONG_INLINE constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, T nl_hi,
                                                     T nl_lo, const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
                                                     const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
 {
@@ -198,7 +198,7 @@ PHONG_HD constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh
 /// 1 - n.h = |n - h|^2 / 2 and n.h for twofold unit n and h (chord and square to O(eps^2), each
 /// rounded once).
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
+PHONG_INLINE constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
                                                     const glm::vec<3, T, Q>& hh, const glm::vec<3, T, Q>& hlo)
 {
     glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
@@ -215,7 +215,7 @@ PHONG_HD constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>& nh
 /// formed twofold and renormalized, h = unit_of(sum) twofold, then one_minus_nh.
 /// Pre: n, l, v unit (or 0). Edge: l = -v (no halfway vector) gives 1 and n.h = 0.
 template <class T, glm::qualifier Q>
-PHONG_HD constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
+PHONG_INLINE constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
                                                          const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
                                                          const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
 {

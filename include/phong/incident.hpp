@@ -1,0 +1,252 @@
+// phong: shading with what the renderer already has: each light's unit direction and distance
+// (a ray tracer's shadow ray, a rasterizer's constant directional light), the normal, and the view
+// vector (given per call, or one fixed direction); no position.
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "shade.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+namespace phong {
+
+/// One light as seen from the shaded point Q, when the renderer has computed it already:
+///   direction = l = (L.xyz - w Q) / |L.xyz - w Q|   (unit, from Q toward the light),
+///   distance  = |L.xyz - Q|                          (positional lights; read only by attenuation).
+/// A shadow ray's direction and length are exactly these.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct incident {
+    glm::vec<3, T, Q> direction{T(0), T(0), T(1)}; ///< l, unit length (within 1e-3)
+    T distance = T(0);                             ///< |L.xyz - Q| >= 0, finite; read only with attenuation
+};
+
+/// A point's surface data as texture maps give it (kd, ks and the exponent per pixel): the terms
+/// of material<T, Q> that vary per point, without emission (0) and alpha (1). shade_incident
+/// takes it or a material<T, Q>.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct surface {
+    glm::vec<3, T, Q> ka{T(0)};
+    glm::vec<3, T, Q> kd{T(0)};
+    glm::vec<3, T, Q> ks{T(0)};
+    T shininess = T(1);
+};
+
+namespace detail {
+
+template <class S> struct is_surface : std::false_type {};
+template <class T, glm::qualifier Q> struct is_surface<surface<T, Q>> : std::true_type {};
+
+/// The material a surface stands for (emission 0, alpha 1): built where it is read, so only the
+/// fields F reads are kept by the compiler.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr material<T, Q> material_of(const surface<T, Q>& s)
+{
+    return {s.ka, s.kd, s.ks, glm::vec<3, T, Q>(T(0)), s.shininess, T(1)};
+}
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr const material<T, Q>& material_of(const material<T, Q>& m)
+{
+    return m;
+}
+
+/// features::unit_inputs' check of a given light direction (debug builds, constant evaluation).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr void check_incident([[maybe_unused]] const incident<T, Q>& in)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+#if defined(NDEBUG)
+        if (!std::is_constant_evaluated()) return;
+#endif
+        const T ll = phong::dot(in.direction, in.direction);
+        require(ll >= T(0.998) && ll <= T(1.002), "phong::incident: direction must be unit length");
+        require(in.distance >= T(0) && in.distance <= std::numeric_limits<T>::max(), "phong::incident: distance must be finite and >= 0");
+    }
+}
+
+/// The per-point frame without a position: unit normal, view vector (given, or environment::eye's
+/// direction for fixed_direction; used as is under unit_inputs), whether both exist, the poison
+/// (NaN when the normal or the view input is not finite), n.v.
+template <features F, class T, glm::qualifier Q>
+PHONG_INLINE constexpr exact::surface_frame<T, Q> incident_frame(const glm::vec<3, T, Q>& normal, const glm::vec<3, T, Q>& given_view,
+                                                                 const environment<T, Q>& env, bool front_facing)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    using exact::unit_vector;
+    const vec3 view_input = F.view == view_model::given ? given_view : vec3(env.eye.x, env.eye.y, env.eye.z);
+    unit_vector<T, Q> n{normal, T(1), true};
+    if constexpr (!F.unit_inputs) n = exact::unit_of(normal);
+    unit_vector<T, Q> v{view_input, T(1), true};
+    if constexpr (!F.unit_inputs) v = exact::view_unit<F>(view_input, T(1));
+    T poison = T(0);
+    if (!(n.square <= largest<T>() && v.square <= largest<T>())) [[unlikely]] {
+        const vec3 zero(T(0));
+        poison = phong::dot(normal, zero) + phong::dot(view_input, zero);
+    }
+    const bool defined = n.ok && poison == T(0);
+    vec3 unit_normal = n.unit;
+    if constexpr (F.two_sided != facing::none) unit_normal = unit_normal * facing_sign<F>(unit_normal, v.unit, front_facing);
+    else (void)front_facing;
+    T nv = T(0);
+    if constexpr (F.specular != specular_model::none) nv = phong::dot(unit_normal, v.unit);
+    return {vec3(T(0)), unit_normal, v.unit, defined, v.ok, poison, nv, {}};
+}
+
+/// One light's terms from its given direction l and distance: f (attenuation of the distance,
+/// spot of l), the ambient term, and for a lit pair (the point has a normal and, where gated,
+/// n.l > 0) the diffuse term and the specular term (Phong: r.v = 2 (n.l)(n.v) - l.v; Blinn:
+/// n.h = (n.l + n.v) / |l + v|), as the exact route forms them from d = l, |d| = 1.
+template <features F, class T, glm::qualifier Q, class Light, class U>
+PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
+                                               const incident<U, Q>& in, T m)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    check_incident(in);
+    const vec3 l(in.direction);
+    const T w = light_w<F, T>(L);
+    const T f = light_factor<F>(L, T(in.distance), w, l, unweighted{});
+    add_ambient<F>(sums, L, f);
+    const T nl = phong::dot(s.normal, l);
+    if (!(s.defined && (!gated<F> || nl > T(0)))) return;
+    if constexpr (F.specular != specular_model::none) {
+        if (s.sees_viewer) {
+            if constexpr (F.specular == specular_model::phong)
+                exact::add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nl, s.nv, l, s.view), T(1), m, true);
+            else
+                exact::add_specular<F.mode>(sums, L, f, nl + s.nv, exact::route_inverse_halfway_length<F.mode>(l, s.view), m, true);
+        }
+    }
+    if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, true);
+}
+
+/// The lights with their incidents (incidents[i] belongs to the i-th light of the list, masked
+/// or not): masked() skips the lights whose bit is 0.
+template <features F, class T, glm::qualifier Q, class Lights, class Incidents>
+PHONG_INLINE constexpr void add_incident_lights(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Lights& lights,
+                                                const Incidents& incidents, T m)
+{
+    using R = std::remove_cvref_t<Lights>;
+    std::size_t i = 0;
+    if constexpr (is_masked<R>::value) {
+        std::uint64_t bits = lights.mask;
+        for (auto&& L : lights.lights) {
+            check_light(L);
+            PHONG_ASSERT(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights");
+            if (bits & 1u) add_incident_light<F>(sums, s, L, incidents[i], m);
+            bits >>= 1;
+            ++i;
+        }
+    } else {
+        for (auto&& L : lights) {
+            check_light(L);
+            PHONG_ASSERT(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights");
+            add_incident_light<F>(sums, s, L, incidents[i], m);
+            ++i;
+        }
+    }
+}
+
+/// The widened incident list of the stable mode's wider route is read lazily: incident<float>
+/// converted to double per light (exact).
+template <features F, class T, glm::qualifier Q, class Surface, class Lights, class Incidents>
+PHONG_INLINE constexpr shading_terms<T, Q> evaluate_incident(const glm::vec<3, T, Q>& normal, const glm::vec<3, T, Q>& view,
+                                                             const Surface& surf, const Lights& lights, const Incidents& incidents,
+                                                             const environment<T, Q>& env, bool front_facing)
+{
+    const material<T, Q>& mat = material_of(surf);
+    const exact::surface_frame<T, Q> s = incident_frame<F>(normal, view, env, front_facing);
+    light_sums<T, Q> sums{};
+    add_incident_lights<F>(sums, s, lights, incidents, mat.shininess);
+    return terms_of<F>(sums, s, mat, env);
+}
+
+/// shade_incident's body: checks, then the exact formulas in T, or in double for float's stable
+/// mode with wider precision.
+template <features F, class T, glm::qualifier Q, class Surface, class Lights, class Incidents>
+PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>& normal, const glm::vec<3, T, Q>& view, const Surface& surf,
+                                                        const Lights& lights, const Incidents& incidents, const environment<T, Q>& env,
+                                                        bool front_facing)
+{
+    static_assert(light_list<Lights>, "phong: the lights must be a range of phong::light<T> or of a type with a "
+                                      "phong::light_traits specialization (see light.hpp), or masked() of one");
+    static_assert(!is_weighted<std::remove_cvref_t<Lights>>::value, "shade_incident: weighted() lists are not supported (use masked())");
+    static_assert(F.view == view_model::given || F.view == view_model::fixed_direction,
+                  "shade_incident reads no position: features::view must be given or fixed_direction");
+    static_assert(!is_surface<Surface>::value || (!F.emission && !F.alpha), "phong::surface has no emission or alpha: pass a material");
+    const material<T, Q>& mat = material_of(surf);
+    check_parameters(mat, env);
+    if constexpr (F.unit_inputs) {
+        check_unit(normal, "shade_incident: normal must be unit length (features::unit_inputs)");
+        if constexpr (F.view == view_model::given) check_unit(view, "shade_incident: view vector must be unit length (features::unit_inputs)");
+        else check_unit(glm::vec<3, T, Q>(env.eye), "shade_incident: environment::eye.xyz must be unit length (features::unit_inputs)");
+    }
+    if constexpr (widened<F, T>) {
+        using W = double;
+        constexpr features E = exact_of<F>;
+        return color<F, T, Q>(total_of<F>(evaluate_incident<E>(glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view), widen<W>(mat), lights,
+                                                                 incidents, widen<W>(env), front_facing)));
+    } else {
+        // the twofold route's formulas start from an error-free L - Q: from a given l, the exact ones
+        constexpr features G = [] {
+            features g = F;
+            if (g.mode == evaluation::stable) g.mode = evaluation::exact;
+            return g;
+        }();
+        return total_of<F>(evaluate_incident<G>(normal, view, mat, lights, incidents, env, front_facing));
+    }
+}
+
+} // namespace detail
+
+/// The full model of shade<F> from what the renderer already has, for a feature set that reads no
+/// position (features::view = view_model::given or fixed_direction):
+///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0) + ks sum_i f_i Ls_i s_i,
+/// with l_i = incidents[i].direction given (unit) and, for attenuation, d_i = incidents[i].distance:
+/// nothing of L_i - Q is recomputed, and no position is passed. s_i and f_i as shade<F>, from l_i.
+///
+/// normal: n (any length, normalized here; unit and used as given with features::unit_inputs).
+/// surf: a material<T, Q>, or a surface<T, Q> (ka, kd, ks, shininess per point, e.g. from texture
+/// maps: nothing else built per call). lights: a range of light<T> or of the renderer's own light
+/// type (light_traits), or masked(lights, bits); only the lights' colours, attenuation and spot
+/// are read (not their position, except w with light_kind::any). incidents: a random-access range
+/// (std::span, std::array, a C array) with incidents[i] for the i-th light of the list, masked
+/// or not (the light's direction from this point, and its distance).
+/// The viewer: view_model::given, the overload below with v; fixed_direction: environment::eye.xyz,
+/// normalized once per call, or used as given (unit) with features::unit_inputs.
+///
+/// Pre: every incident's direction unit length (within 1e-3), distance finite and >= 0; n and v unit
+/// with unit_inputs (and environment::eye.xyz for fixed_direction); validate(surf as a material),
+/// validate(env), validate(light) for every light (all checked in debug builds and in constant
+/// evaluation, nothing under NDEBUG).
+/// Edges: normal = 0: no diffuse or specular term; a zero view vector: no specular term; NaN or inf
+/// in the normal or the view input read: every channel NaN; Blinn with l = -v: n.h taken as 0;
+/// m = 0: the specular base^0 = 1 wherever the specular term is on; a light whose distance is 0
+/// with c0 = 0: f capped as in shade<F>.
+/// Modes: exact and fast as shade<F> (the fast power); stable: float evaluated in double (the wider
+/// route), as shade<F>; T = double and stable_precision::twofold run the exact formulas (the given l
+/// is already rounded to T: the twofold route's error-free L - Q is not available).
+/// Result: shade<F>'s colour at the point for those l_i, d_i, within the exact bound of
+/// phong::accuracy for the same inputs (bit for bit in many cases).
+template <features F, class T, glm::qualifier Q, class Surface, class Lights, class Incidents>
+PHONG_INLINE constexpr color<F, T, Q> shade_incident(const glm::vec<3, T, Q>& normal, const Surface& surf, const Lights& lights,
+                                                     const Incidents& incidents, const environment<T, Q>& env = {},
+                                                     bool front_facing = true)
+{
+    static_assert(F.view == view_model::fixed_direction, "view_model::given: pass the view vector, shade_incident<F>(normal, view, ...)");
+    return detail::shade_incident_at<F>(normal, glm::vec<3, T, Q>(T(0)), surf, lights, incidents, env, front_facing);
+}
+
+/// shade_incident<F> with the view vector v given per call (features::view = view_model::given):
+/// v from the point toward the viewer (a ray tracer's -ray.dir), any length (unit with unit_inputs).
+template <features F, class T, glm::qualifier Q, class Surface, class Lights, class Incidents>
+PHONG_INLINE constexpr color<F, T, Q> shade_incident(const glm::vec<3, T, Q>& normal, const glm::vec<3, T, Q>& view, const Surface& surf,
+                                                     const Lights& lights, const Incidents& incidents, const environment<T, Q>& env = {},
+                                                     bool front_facing = true)
+{
+    static_assert(F.view == view_model::given, "a view vector is read only with features::view = view_model::given");
+    return detail::shade_incident_at<F>(normal, view, surf, lights, incidents, env, front_facing);
+}
+
+} // namespace phong
