@@ -464,9 +464,9 @@ template <class T> constexpr exact_limits exact_class_limits(input_class c) { re
 /// [exp(-4.5), 1]; with n.v near 0 the same angle(r, v) puts (n.h)^m anywhere down to 0, a
 /// different class (the stable mode's error grows like |m ln c| u there).
 struct near_peak_limits {
-    double max_angle_sqrt_m = 3;
-    double min_nv = 0.5;
-    double min_nl = 0.05;
+    double max_angle_sqrt_m = 3; ///< angle(r, v) <= max_angle_sqrt_m / sqrt(m)
+    double min_nv = 0.5;         ///< n.v >= min_nv
+    double min_nl = 0.05;        ///< n.l > min_nl
 };
 inline constexpr near_peak_limits near_peak{};
 

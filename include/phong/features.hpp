@@ -127,7 +127,7 @@ struct features {
 /// `template <class Set> __global__ void k(...)` calling shade<Set::value>, launched as
 /// k<phong::feature_set<F>><<<...>>>(...). Any other code may use it too (docs/cuda.md).
 template <features F> struct feature_set {
-    static constexpr features value = F;
+    static constexpr features value = F; ///< the feature set, for shade<Set::value>
 };
 
 /// Ready-made feature sets, named for the model they compute. docs/models.md maps each source

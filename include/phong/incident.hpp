@@ -28,10 +28,10 @@ struct incident {
 /// takes it or a material<T, Q>.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct surface {
-    glm::vec<3, T, Q> ka{T(0)};
-    glm::vec<3, T, Q> kd{T(0)};
-    glm::vec<3, T, Q> ks{T(0)};
-    T shininess = T(1);
+    glm::vec<3, T, Q> ka{T(0)}; ///< ambient reflectivity, as material::ka
+    glm::vec<3, T, Q> kd{T(0)}; ///< diffuse reflectivity, as material::kd
+    glm::vec<3, T, Q> ks{T(0)}; ///< specular reflectivity, as material::ks
+    T shininess = T(1);         ///< the specular exponent m >= 0, as material::shininess
 };
 
 namespace detail {
