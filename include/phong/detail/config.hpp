@@ -25,13 +25,21 @@
 /// the inliner's size heuristics (which differ between compilers and between -O2 and -O3).
 /// It includes PHONG_HD. g++ and clang++: inline __attribute__((always_inline)) when optimizing
 /// (-O1 and up: __OPTIMIZE__; at -O0, where nothing is fast anyway, plain inline, so that debug
-/// builds compile as quickly as without it); MSVC: __forceinline; CUDA: __host__ __device__
-/// __forceinline__. Define PHONG_NO_FORCE_INLINE to get
+/// builds compile as quickly as without it; and under AddressSanitizer, whose checks on one fully
+/// inlined shading loop make a sanitized build much slower to compile and to run, docs/compilers.md);
+/// MSVC: __forceinline; CUDA: __host__ __device__ __forceinline__. Define PHONG_NO_FORCE_INLINE to get
 /// plain `inline` (e.g. to step through phong in a debugger), or define PHONG_INLINE yourself
 /// before including any phong header. always_inline and constexpr combine: constant evaluation
 /// is unaffected. A renderer's light_traits functions may use it too.
+#if defined(__SANITIZE_ADDRESS__) // g++
+#  define PHONG_DETAIL_ASAN 1
+#elif defined(__has_feature)
+#  if __has_feature(address_sanitizer) // clang++
+#    define PHONG_DETAIL_ASAN 1
+#  endif
+#endif
 #if !defined(PHONG_INLINE)
-#  if defined(PHONG_NO_FORCE_INLINE)
+#  if defined(PHONG_NO_FORCE_INLINE) || defined(PHONG_DETAIL_ASAN)
 #    define PHONG_INLINE PHONG_HD inline
 #  elif defined(__CUDACC__)
 #    define PHONG_INLINE __host__ __device__ __forceinline__
