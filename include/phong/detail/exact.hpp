@@ -372,7 +372,7 @@ PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, 
     glm::vec<3, T, Q>& sum = sum_of<term_kind::specular>(sums);
     if constexpr (std::is_floating_point_v<T>) {
         if (x > T(0)) sum += in_type<T>(specular_of(L)) * (f * route_cosine_power<M>(x, scale, m));
-        else if (m == T(0)) sum += in_type<T>(specular_of(L)) * f; // cosine_power's pow(0, 0) = 1
+        else if (m == T(0)) sum += in_type<T>(specular_of(L)) * f; // 0^m = 1 for m = 0 (power_of_zero), no product by 0^m
     } else if constexpr (is_integer_exponent<Exponent, T>) {
         // The fast power x^n, n >= 1, of the base c zeroed where the lane is off or c <= 0 (then
         // its power is 0): the mask goes into the product that forms the base, and max(c, 0) in
