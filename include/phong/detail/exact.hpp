@@ -107,7 +107,7 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T
 /// unit_inputs), or normalize(E.xyz - E.w Q)
 /// (eye_point). Its square tells whether the inputs may be non-finite (fixed_direction: |Q|^2 does).
 template <features F, class T, glm::qualifier Q>
-PHONG_INLINE constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& given_view,
+PHONG_INLINE constexpr unit_vector<T, Q> view_at(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& given_view,
                                                  const environment<T, Q>& env)
 {
     using vec3 = glm::vec<3, T, Q>;
@@ -177,7 +177,7 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
     using vec3 = glm::vec<3, T, Q>;
     unit_vector<T, Q> n{normal, T(1), mask_t<T>(true)}; // unit_inputs: unit by precondition
     if constexpr (!F.unit_inputs) n = unit_of(normal);
-    const unit_vector<T, Q> v = view_vector<F>(position, given_view, env);
+    const unit_vector<T, Q> v = view_at<F>(position, given_view, env);
     // A NaN point has every channel NaN through poison; its terms are off, so no NaN power runs.
     T poison;
     mask_t<T> defined;
