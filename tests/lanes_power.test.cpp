@@ -228,25 +228,25 @@ TEST_CASE("shade_batch's float power without its select: the same bits where the
 }
 
 #if PHONG_STABLE_LANES
-TEST_CASE("stable_lanes: float lanes split to double and back exactly; the double 1/sqrt within 3 ulp over the float-derived range")
+TEST_CASE("stable_lanes: float lanes widened to double and back exactly; the double 1/sqrt within 3 ulp over the float-derived range")
 {
     namespace sl = phong::detail::stable_lanes;
     using D = sl::double_t<V>;
     constexpr std::size_t H = W / 2;
-    // split/join: lane k of the float batch is lane k % H of half k / H, exactly (floats are
-    // doubles); join rounds each lane once (exact here: the values came from floats).
+    // widen/join: lane k of the float batch is lane k % H of part k / H (lower, upper), exactly
+    // (floats are doubles); join rounds each lane once (exact here: the values came from floats).
     alignas(64) float in[W], back[W];
     for (std::size_t k = 0; k < W; ++k) in[k] = std::ldexp(1.0f + float(k) / 64, int(k) * 9 - 70); // 2^-70 .. 2^65
     in[1] = std::numeric_limits<float>::denorm_min();
-    const sl::halves<V> h = sl::split(V::load_aligned(in));
+    const sl::lane_parts<V> h = sl::widen(V::load_aligned(in));
     alignas(64) double lo[H], hi[H];
-    h.lo.store_aligned(lo);
-    h.hi.store_aligned(hi);
+    h.lower.store_aligned(lo);
+    h.upper.store_aligned(hi);
     for (std::size_t k = 0; k < H; ++k) {
         CHECK(lo[k] == double(in[k]));
         CHECK(hi[k] == double(in[H + k]));
     }
-    sl::join<V>(h.lo, h.hi).store_aligned(back);
+    sl::join<V>(h.lower, h.upper).store_aligned(back);
     for (std::size_t k = 0; k < W; ++k) CHECK(back[k] == in[k]);
 
     // 1/sqrt(x) against the wide type's, log-uniform over [2^-298, 2^257] (the squares of float

@@ -153,7 +153,7 @@ PHONG_INLINE constexpr V pow_unit(V x, V m)
     const V y = m * detail::log2_positive(x);
     const V p = detail::exp2_nonpositive(phong::min(y, V(S(0))));
     const auto positive = x > V(S(0));
-    return phong::select(positive, phong::select(m == V(S(0)), V(S(1)), p), phong::select(m == V(S(0)), V(S(1)), V(S(0))));
+    return phong::select(positive, phong::select(m == V(S(0)), V(S(1)), p), phong::detail::power_of_zero(m));
 }
 
 /// Largest exponent fast::pow_integer takes (its error grows like the exponent).

@@ -63,8 +63,9 @@ inline constexpr double rsqrt_sfu_max_rel = sfu_rsqrt_rel;
 namespace detail {
 
 /// fast::pow_unit on the SFU: 2^min(m lg2(x), 0), with fast::pow_unit's edges (m = 0 gives 1 for
-/// every x; x >= 1 gives exactly 1, which lg2.approx's documented error alone would not promise;
-/// x = 0 or NaN gives 0 for m > 0). Bound: pow_unit_sfu_max_rel(m).
+/// every x, detail::power_of_zero's convention, here folded into one select; x >= 1 gives exactly
+/// 1, which lg2.approx's documented error alone would not promise; x = 0 or NaN gives 0 for m > 0).
+/// Bound: pow_unit_sfu_max_rel(m).
 __device__ inline float pow_unit_sfu(float x, float m)
 {
     const float p = exp2f(fminf(m * __log2f(x), 0.0f));

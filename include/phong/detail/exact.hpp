@@ -107,7 +107,7 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T
 /// unit_inputs), or normalize(E.xyz - E.w Q)
 /// (eye_point). Its square tells whether the inputs may be non-finite (fixed_direction: |Q|^2 does).
 template <features F, class T, glm::qualifier Q>
-PHONG_INLINE constexpr unit_vector<T, Q> view_vector(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& given_view,
+PHONG_INLINE constexpr unit_vector<T, Q> view_at(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& given_view,
                                                  const environment<T, Q>& env)
 {
     using vec3 = glm::vec<3, T, Q>;
@@ -177,7 +177,7 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
     using vec3 = glm::vec<3, T, Q>;
     unit_vector<T, Q> n{normal, T(1), mask_t<T>(true)}; // unit_inputs: unit by precondition
     if constexpr (!F.unit_inputs) n = unit_of(normal);
-    const unit_vector<T, Q> v = view_vector<F>(position, given_view, env);
+    const unit_vector<T, Q> v = view_at<F>(position, given_view, env);
     // A NaN point has every channel NaN through poison; its terms are off, so no NaN power runs.
     T poison;
     mask_t<T> defined;
@@ -372,7 +372,7 @@ PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, 
     glm::vec<3, T, Q>& sum = sum_of<term_kind::specular>(sums);
     if constexpr (std::is_floating_point_v<T>) {
         if (x > T(0)) sum += in_type<T>(specular_of(L)) * (f * route_cosine_power<M>(x, scale, m));
-        else if (m == T(0)) sum += in_type<T>(specular_of(L)) * f; // cosine_power's pow(0, 0) = 1
+        else if (m == T(0)) sum += in_type<T>(specular_of(L)) * f; // 0^m = 1 for m = 0 (power_of_zero), no product by 0^m
     } else if constexpr (is_integer_exponent<Exponent, T>) {
         // The fast power x^n, n >= 1, of the base c zeroed where the lane is off or c <= 0 (then
         // its power is 0): the mask goes into the product that forms the base, and max(c, 0) in

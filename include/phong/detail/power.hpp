@@ -38,6 +38,26 @@
 #  pragma nv_diag_suppress 20208
 #endif
 
+namespace phong::detail {
+
+/// 0^m for an exponent m >= 0: 1 for m = 0, 0 for m > 0. Every power of the lighting model (the
+/// specular factor, the spot cone's exponent; pow_unit, fast::pow_unit, the SIMD lanes' powers)
+/// takes this value at the base 0, the convention pow(0, 0) = 1 of IEEE pow: a shininess or spot
+/// exponent of 0 gives the factor 1 wherever its term is on, the cosine's sign included (the limit
+/// of x^0 as x -> 0). Scalars and SIMD lanes alike (lanes: their select, found by argument-dependent
+/// lookup). The same test is written out in the scalar power kernels below (through the call g++
+/// lays out the routes that inline them differently) and where the edge shares one select or
+/// branch with the base's test: the lanes' kernels (x > 0 || m == 0, detail/simd/lanes_power.hpp),
+/// the SFU power (fast_sfu.hpp) and the scalar add_specular (detail/exact.hpp).
+template <class M>
+PHONG_INLINE constexpr M power_of_zero(M m)
+{
+    if constexpr (std::is_arithmetic_v<M>) return m == M(0) ? M(1) : M(0);
+    else return select(m == M(0), M(1), M(0));
+}
+
+} // namespace phong::detail
+
 namespace phong::detail::power {
 
 using u64 = std::uint64_t;
@@ -151,7 +171,7 @@ PHONG_INLINE constexpr float pow_unit_kernel(float xf, float mf)
         if (y >= -1022.0 && y <= 0.0) [[likely]] return static_cast<float>(exp2_nonpositive<true>(y));
         if (y < -1022.0) return 0.0f;
     } else if (x == 0.0 && m >= 0.0) {
-        return m == 0.0 ? 1.0f : 0.0f;
+        return m == 0.0 ? 1.0f : 0.0f; // 0^m: power_of_zero, written out
     }
     return outside_domain<Ieee>(xf, mf);
 }
@@ -165,7 +185,7 @@ PHONG_INLINE constexpr double pow_unit_kernel(double x, double m)
         if (y >= -1022.0 && y <= 0.0) [[likely]] return exp2_nonpositive(y);
         if (y < -1022.0) return 0.0;
     } else if (x == 0.0 && m >= 0.0) {
-        return m == 0.0 ? 1.0 : 0.0;
+        return m == 0.0 ? 1.0 : 0.0; // 0^m: power_of_zero, written out
     }
     return outside_domain<Ieee>(x, m);
 }

@@ -93,7 +93,7 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
         // (0, 0, 0, 1e-5) with Q ~ 1e-315 gave 2e-3 against the model; E.w first (2^a before 2^b)
         // lost subnormal E.xyz bits, 0.34 with E.xyz, Q ~ 1e-322 and E.w = 50. Where no
         // intermediate is subnormal or overflows, every value is the unscaled one times a power of
-        // two: unit_of gives the same bits; and |E.w Q| > max leaves the viewer a direction.
+        // two: unit_twofold_of gives the same bits; and |E.w Q| > max leaves the viewer a direction.
         using S = scalar_t<T>;
         constexpr bool is_float = std::is_same_v<S, float>;
         const T b = math_traits<T>::inverse_pow2_scale(phong::max(phong::max_abs(eye), phong::max_abs(position)));
@@ -114,10 +114,10 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
             e = difference_twofold<light_kind::any>(eye_ab * up, w_a, position_up);
         }
     }
-    const unit_twofold<T, Q> uv = unit_of(e.hi, e.lo);
+    const unit_twofold<T, Q> uv = unit_twofold_of(e.hi, e.lo);
     s.view = uv.hi;
     s.view_lo = uv.lo;
-    const unit_twofold<T, Q> un = unit_of(normal, vec3(T(0)));
+    const unit_twofold<T, Q> un = unit_twofold_of(normal, vec3(T(0)));
     s.normal = un.hi;
     s.normal_lo = un.lo;
     s.normal_scaled = phong::rescaled(normal);
@@ -149,7 +149,7 @@ struct light_unit {
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr light_unit<T, Q> light_twofold(const surface_frame<T, Q>& s, const twofold_vector<T, Q>& d)
 {
-    const unit_twofold<T, Q> u = unit_of(d.hi, d.lo); // rescaled: any finite nonzero d
+    const unit_twofold<T, Q> u = unit_twofold_of(d.hi, d.lo); // rescaled: any finite nonzero d
     light_unit<T, Q> r{u.hi, u.lo, T(0), T(0), u.inv_scaled, u.length};
     dot_twofold(s.normal, s.normal_lo, u.hi, u.lo, r.nl, r.nl_lo);
     return r;

@@ -72,7 +72,7 @@ struct unit_twofold {
 /// e.g. L.xyz - w Q with |w Q| > max although L, w and Q are finite) gives 0, inv_scaled = 0 and
 /// length = inf, never NaN: like a light at infinity with no direction.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr unit_twofold<T, Q> unit_of(const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& dlo)
+PHONG_INLINE constexpr unit_twofold<T, Q> unit_twofold_of(const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& dlo)
 {
     using vec3 = glm::vec<3, T, Q>;
     // Renormalize d + dlo first (then |dlo| <= ulp(d) / 2): where d cancels, as L.xyz - w Q does
@@ -212,7 +212,7 @@ PHONG_INLINE constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>
 }
 
 /// 1 - n.h = |n - h|^2 / 2 for h = normalize(l + v), from twofold n, l and v: the sum l + v is
-/// formed twofold and renormalized, h = unit_of(sum) twofold, then one_minus_nh.
+/// formed twofold and renormalized, h = unit_twofold_of(sum) twofold, then one_minus_nh.
 /// Pre: n, l, v unit (or 0). Edge: l = -v (no halfway vector) gives 1 and n.h = 0.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
@@ -223,13 +223,13 @@ PHONG_INLINE constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, 
     for (int k = 0; k < 3; ++k) {
         sum[k] = lh[k] + vh[k];
         sum_lo[k] = twofold_sum_error(lh[k], vh[k], sum[k]) + (llo[k] + vlo[k]);
-        // Renormalized: where l and v cancel in the high parts, lo can exceed hi, and unit_of
+        // Renormalized: where l and v cancel in the high parts, lo can exceed hi, and unit_twofold_of
         // (which scales by the high parts) would then overflow lo to inf.
         const T t = sum[k] + sum_lo[k];
         sum_lo[k] = twofold_sum_error(sum[k], sum_lo[k], t);
         sum[k] = t;
     }
-    const unit_twofold<T, Q> h = unit_of(sum, sum_lo);
+    const unit_twofold<T, Q> h = unit_twofold_of(sum, sum_lo);
     const cosine_complement<T> x = one_minus_nh(nh, nlo, h.hi, h.lo);
     const mask_t<T> exists = h.inv_scaled > T(0);
     return {phong::select(exists, x.complement, T(1)), phong::select(exists, x.cosine, T(0))};

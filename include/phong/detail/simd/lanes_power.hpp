@@ -118,7 +118,8 @@ template <class V, bool Finite = false> PHONG_LANES_INLINE V power_of_log2(const
 template <class V> PHONG_LANES_INLINE V pow_unit(const V& x, const V& m, const typename V::batch_bool_type& m_is_zero)
 {
     const V power = power_of_log2(x, m);
-    // pow(0, m > 0) = 0 (2^(-126 m) above is not 0 for m < 1); pow(0, 0) = 1 comes out of y = 0.
+    // 0^m (detail::power_of_zero) in the same select: pow(0, m > 0) = 0 (2^(-126 m) above is not 0
+    // for m < 1); pow(0, 0) = 1 comes out of y = 0.
     return xsimd::select(x > V(0.0f) || m_is_zero, power, V(0.0f));
 }
 
@@ -156,7 +157,7 @@ template <class V> PHONG_LANES_INLINE V pow_cosine(const V& x, const V& c, const
     const auto near_one = c >= V(0.70710677f); // then e = 0 and t_split = c - 1
     const V log2_base = log2_of_split(xsimd::select(near_one, -x, t_split), xsimd::select(near_one, V(0.0f), e));
     const V power = exp2_nonpositive(m * log2_base);
-    return xsimd::select(c > V(0.0f) || m == V(0.0f), power, V(0.0f));
+    return xsimd::select(c > V(0.0f) || m == V(0.0f), power, V(0.0f)); // 0^m as pow_unit's select
 }
 
 /// (1 - x)^m lane-wise for x in [0, 1], m >= 0 finite: the stable mode's power of 1 - r.v or

@@ -111,7 +111,7 @@ struct math_traits<xsimd::batch<T, A>> {
     PHONG_LANES_INLINE static V pow(const V& x, const V& y)
     {
         const V p = exp(y * xsimd::log(xsimd::select(x > V(T(0)), x, V(T(1)))));
-        return xsimd::select(x > V(T(0)), p, xsimd::select(y == V(T(0)), V(T(1)), V(T(0))));
+        return xsimd::select(x > V(T(0)), p, detail::power_of_zero(y));
     }
     /// x^m for x in [0, 1], m >= 0 (the specular and spot powers of the exact mode). Float lanes:
     /// detail/simd/lanes_power.hpp's polynomial kernel, relative error <= (3.5 |m log2 x| + 2.5) u
@@ -144,7 +144,7 @@ struct math_traits<xsimd::batch<T, A>> {
         const auto inside = xc < V(T(1));
         const V lg = xsimd::log1p(-xsimd::select(inside, xc, V(T(0))));
         const V r = exp(m * lg);
-        return xsimd::select(inside, r, xsimd::select(m == V(T(0)), V(T(1)), V(T(0))));
+        return xsimd::select(inside, r, detail::power_of_zero(m));
     }
     /// a * b + c rounded once (detail::simd::fma: the fused instruction, or Dekker's exact product).
     PHONG_LANES_INLINE static V fma(const V& a, const V& b, const V& c) { return detail::simd::fma(a, b, c); }

@@ -61,11 +61,12 @@ template <class A> struct double_of<xsimd::batch<float, A>> {
 };
 template <class V> using double_t = typename double_of<V>::type;
 
-/// Lanes [0, W/2) and [W/2, W) of a float batch, as doubles (exact).
-template <class V> struct halves {
-    double_t<V> lo, hi;
+/// The lower lanes [0, W/2) and the upper lanes [W/2, W) of a float batch, as two double batches
+/// (exact): the two parts of the lanes that this route computes in double.
+template <class V> struct lane_parts {
+    double_t<V> lower, upper;
 };
-template <class V> inline halves<V> split(const V& x)
+template <class V> inline lane_parts<V> widen(const V& x)
 {
     using D = double_t<V>;
     if constexpr (sizeof(V) == 64) {
@@ -84,35 +85,35 @@ template <class V> inline halves<V> split(const V& x)
         return {D(_mm_cvtps_pd(r)), D(_mm_cvtps_pd(_mm_movehl_ps(r, r)))};
     }
 }
-/// The float batch of two double halves, each lane rounded once.
-template <class V> inline V join(const double_t<V>& lo, const double_t<V>& hi)
+/// The float batch of its two double parts (lower, upper lanes), each lane rounded once.
+template <class V> inline V join(const double_t<V>& lower, const double_t<V>& upper)
 {
     if constexpr (sizeof(V) == 64) {
 #  if defined(__AVX512F__)
-        const __m256 a = _mm512_cvtpd_ps(lo), b = _mm512_cvtpd_ps(hi);
+        const __m256 a = _mm512_cvtpd_ps(lower), b = _mm512_cvtpd_ps(upper);
         return V(_mm512_castpd_ps(_mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_castps_pd(a)), _mm256_castps_pd(b), 1)));
 #  endif
     } else if constexpr (sizeof(V) == 32) {
 #  if defined(__AVX__)
-        return V(_mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps(lo)), _mm256_cvtpd_ps(hi), 1));
+        return V(_mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps(lower)), _mm256_cvtpd_ps(upper), 1));
 #  endif
     } else {
-        return V(_mm_movelh_ps(_mm_cvtpd_ps(lo), _mm_cvtpd_ps(hi)));
+        return V(_mm_movelh_ps(_mm_cvtpd_ps(lower), _mm_cvtpd_ps(upper)));
     }
 }
 
-/// The float mask of two double masks (lanes [0, W/2) from lo).
-template <class V> inline mask_t<V> join_mask(const xsimd::batch_bool<double, typename V::arch_type>& lo,
-                                              const xsimd::batch_bool<double, typename V::arch_type>& hi)
+/// The float mask of two double masks (lanes [0, W/2) from lower).
+template <class V> inline mask_t<V> join_mask(const xsimd::batch_bool<double, typename V::arch_type>& lower,
+                                              const xsimd::batch_bool<double, typename V::arch_type>& upper)
 {
 #  if defined(__AVX512F__)
     if constexpr (sizeof(V) == 64) {
-        const __mmask8 a = lo, b = hi;
+        const __mmask8 a = lower, b = upper;
         return mask_t<V>(typename mask_t<V>::register_type(__mmask16(unsigned(a) | unsigned(b) << 8)));
     }
 #  endif
     using D = double_t<V>;
-    return join<V>(xsimd::select(lo, D(1.0), D(0.0)), xsimd::select(hi, D(1.0), D(0.0))) > V(0.0f);
+    return join<V>(xsimd::select(lower, D(1.0), D(0.0)), xsimd::select(upper, D(1.0), D(0.0))) > V(0.0f);
 }
 
 /// 1/sqrt(x) for x a positive normal double (other x: unspecified). AVX-512: the estimate y
@@ -146,7 +147,7 @@ template <class D> inline D inverse_length(const D& dd)
 /// point) or in [2^-298, 2^257] (finite input; min and max of double are far outside), or NaN or
 /// inf (non-finite input: the lane is poisoned, its value does not matter). One test: dd > 0.
 /// Pre: d's components are differences of floats (or floats).
-/// Blinn's |l + v|^2 (half_light) takes it too: l = d / |d| and v = e / |e| rounded, with d and e
+/// Blinn's |l + v|^2 (part_light) takes it too: l = d / |d| and v = e / |e| rounded, with d and e
 /// float-derived, so a nonzero component of l or v is at least 2^-149 / 2^130 = 2^-279 (float's
 /// least step over the longest float vector) and a nonzero component of l + v at least an ulp of
 /// that, 2^-331: a nonzero |l + v|^2 is above 2^-662, far inside double's normal range, and at
@@ -157,9 +158,9 @@ template <class D> inline D inverse_length_of_float_difference(const D& dd)
     return xsimd::select(dd > D(0.0), rsqrt_normal(dd), D(0.0));
 }
 
-/// One half of a step's per-point frame, in double.
+/// One part (the lower or upper lanes) of a step's per-point frame, in double.
 template <class D, glm::qualifier Q>
-struct half_frame {
+struct part_frame {
     glm::vec<3, D, Q> position;
     glm::vec<3, D, Q> normal{D(0.0)}; ///< unit, after two-sided negation (0 if undefined)
     glm::vec<3, D, Q> view{D(0.0)};   ///< unit (0 if undefined)
@@ -169,19 +170,19 @@ struct half_frame {
     xsimd::batch_bool<double, typename D::arch_type> sees_viewer; ///< the view vector exists
 };
 
-/// The per-point frame of a step: two double halves, and the float poison of finish.
+/// The per-point frame of a step: its two double parts (lower, upper lanes), and the float poison of finish.
 template <class V, glm::qualifier Q>
 struct surface_frame {
-    half_frame<double_t<V>, Q> half[2];
+    part_frame<double_t<V>, Q> part[2];
     V poison; ///< 0, or NaN when the point's inputs are not finite (poison_of)
 };
 
 template <class V, glm::qualifier Q>
-inline void split3(const glm::vec<3, V, Q>& v, glm::vec<3, double_t<V>, Q>& lo, glm::vec<3, double_t<V>, Q>& hi)
+inline void widen3(const glm::vec<3, V, Q>& v, glm::vec<3, double_t<V>, Q>& lower, glm::vec<3, double_t<V>, Q>& upper)
 {
     for (int k = 0; k < 3; ++k) {
-        const halves<V> h = split(v[k]);
-        lo[k] = h.lo, hi[k] = h.hi;
+        const lane_parts<V> h = widen(v[k]);
+        lower[k] = h.lower, upper[k] = h.upper;
     }
 }
 
@@ -198,22 +199,22 @@ inline surface_frame<V, Q> prepare(const glm::vec<3, V, Q>& position, const glm:
     s.poison = poison_of<F>(position, normal, given_view, env);
     vec3 pos[2], nrm[2], given[2], eye[2];
     D eye_w[2] = {D(0.0), D(0.0)}, front[2] = {D(1.0), D(1.0)};
-    split3(position, pos[0], pos[1]);
-    split3(normal, nrm[0], nrm[1]);
-    if constexpr (F.view == view_model::given) split3(given_view, given[0], given[1]);
+    widen3(position, pos[0], pos[1]);
+    widen3(normal, nrm[0], nrm[1]);
+    if constexpr (F.view == view_model::given) widen3(given_view, given[0], given[1]);
     if constexpr (F.view == view_model::fixed_direction || F.view == view_model::eye_point) {
-        split3(glm::vec<3, V, Q>(env.eye.x, env.eye.y, env.eye.z), eye[0], eye[1]);
-        const halves<V> w = split(env.eye.w);
-        eye_w[0] = w.lo, eye_w[1] = w.hi;
+        widen3(glm::vec<3, V, Q>(env.eye.x, env.eye.y, env.eye.z), eye[0], eye[1]);
+        const lane_parts<V> w = widen(env.eye.w);
+        eye_w[0] = w.lower, eye_w[1] = w.upper;
     }
     if constexpr (F.two_sided == facing::flag) {
-        const halves<V> f = split(phong::select(front_facing, V(1.0f), V(0.0f)));
-        front[0] = f.lo, front[1] = f.hi;
+        const lane_parts<V> f = widen(phong::select(front_facing, V(1.0f), V(0.0f)));
+        front[0] = f.lower, front[1] = f.upper;
     } else {
         (void)front_facing;
     }
     for (int h = 0; h < 2; ++h) {
-        half_frame<D, Q>& f = s.half[h];
+        part_frame<D, Q>& f = s.part[h];
         f.position = pos[h];
         vec3 e = eye[h];                                                            // fixed_direction
         if constexpr (F.view == view_model::eye_at_origin) e = -pos[h];
@@ -235,9 +236,9 @@ inline surface_frame<V, Q> prepare(const glm::vec<3, V, Q>& position, const glm:
     return s;
 }
 
-/// One half of a pair's geometry: the diffuse weight f max(n.l, 0) (0 where off), the specular
+/// One part (the lower or upper lanes) of a pair's geometry: the diffuse weight f max(n.l, 0) (0 where off), the specular
 /// weight f (0 where off), the specular cosine c (r.v or n.h) and its complement x = 1 - c, and f.
-template <class D> struct half_terms {
+template <class D> struct part_terms {
     D diffuse, specular, x, c, f;
     xsimd::batch_bool<double, typename D::arch_type> specular_on; ///< where specular is (f = 1: the weight)
 };
@@ -250,7 +251,7 @@ inline constexpr bool unit_factor = (F.attenuation == attenuation_model::none ||
 /// L: the light in double (exact: its float values widened). f as the wider route takes it:
 /// float's cap on the attenuation (light_factor with U = float).
 template <features F, class D, glm::qualifier Q>
-inline half_terms<D> half_light(const half_frame<D, Q>& s, const light<double, Q>& L)
+inline part_terms<D> part_light(const part_frame<D, Q>& s, const light<double, Q>& L)
 {
     using vec3 = glm::vec<3, D, Q>;
     const D w = light_w<F, D>(L);
@@ -275,7 +276,7 @@ inline half_terms<D> half_light(const half_frame<D, Q>& s, const light<double, Q
     if constexpr (gated<F>) on = on && (nd > D(0.0));
     else on = on && (inv > D(0.0));
     const D nl = nd * inv;
-    half_terms<D> t{D(0.0), D(0.0), D(1.0), D(0.0), f, on};
+    part_terms<D> t{D(0.0), D(0.0), D(1.0), D(0.0), f, on};
     if constexpr (F.diffuse) t.diffuse = xsimd::select(on, f * (gated<F> ? nl : xsimd::max(nl, D(0.0))), D(0.0));
     if constexpr (F.specular != specular_model::none) {
         if constexpr (F.specular == specular_model::phong) {
@@ -295,12 +296,12 @@ inline half_terms<D> half_light(const half_frame<D, Q>& s, const light<double, Q
 /// The specular power c^m of a step in float lanes: x and c rounded to float apiece (each keeps its
 /// relative accuracy where the kernel reads it: x near a highlight, c far from it), then
 /// detail/simd/lanes_power.hpp's pow_cosine.
-template <class V, class D> inline V power(const half_terms<D>& lo, const half_terms<D>& hi, const V& m)
+template <class V, class D> inline V power(const part_terms<D>& lower, const part_terms<D>& upper, const V& m)
 {
-    return detail::lanes::pow_cosine(xsimd::max(join<V>(lo.x, hi.x), V(0.0f)), join<V>(lo.c, hi.c), m);
+    return detail::lanes::pow_cosine(xsimd::max(join<V>(lower.x, upper.x), V(0.0f)), join<V>(lower.c, upper.c), m);
 }
 
-/// One light's terms added to the float sums of a step: the geometry of both halves in double,
+/// One light's terms added to the float sums of a step: the geometry of both parts in double,
 /// then the weights, x and c rounded to float once, the power c^m and the sums in float.
 /// L: the light's float lanes (its colours, with the material when folded); wide: the same light
 /// in double (position, attenuation, spot).
@@ -309,18 +310,18 @@ inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const ligh
                                   const light<double, Q>& wide, const V& m)
 {
     using D = double_t<V>;
-    const half_terms<D> lo = half_light<F>(s.half[0], wide), hi = half_light<F>(s.half[1], wide);
-    if constexpr (F.light_ambient) add_ambient<F>(sums, L, F.attenuate_ambient ? join<V>(lo.f, hi.f) : V(1.0f));
-    if constexpr (F.diffuse) sum_of<term_kind::diffuse>(sums) += L.diffuse * join<V>(lo.diffuse, hi.diffuse);
+    const part_terms<D> lower = part_light<F>(s.part[0], wide), upper = part_light<F>(s.part[1], wide);
+    if constexpr (F.light_ambient) add_ambient<F>(sums, L, F.attenuate_ambient ? join<V>(lower.f, upper.f) : V(1.0f));
+    if constexpr (F.diffuse) sum_of<term_kind::diffuse>(sums) += L.diffuse * join<V>(lower.diffuse, upper.diffuse);
     if constexpr (F.specular != specular_model::none) {
         if constexpr (unit_factor<F>) { // the weight is 1 where on
-            const mask_t<V> on = join_mask<V>(lo.specular_on, hi.specular_on);
+            const mask_t<V> on = join_mask<V>(lower.specular_on, upper.specular_on);
             if (!xsimd::any(on)) return;
-            sum_of<term_kind::specular>(sums) += L.specular * xsimd::select(on, power(lo, hi, m), V(0.0f));
+            sum_of<term_kind::specular>(sums) += L.specular * xsimd::select(on, power(lower, upper, m), V(0.0f));
         } else {
-            const V weight = join<V>(lo.specular, hi.specular);
+            const V weight = join<V>(lower.specular, upper.specular);
             if (!xsimd::any(weight != V(0.0f))) return;
-            sum_of<term_kind::specular>(sums) += L.specular * (weight * power(lo, hi, m));
+            sum_of<term_kind::specular>(sums) += L.specular * (weight * power(lower, upper, m));
         }
     }
 }
