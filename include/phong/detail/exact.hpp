@@ -542,9 +542,9 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
     }
     // Scalars with separate sums (light_sums): the diffuse term is added after the specular one,
     // the same bits in either order, so that a light colour read for both terms (an adaptor
-    // returning one field as diffuse and specular) is not held in registers across the power
-    // (g++ 12 spills it). SIMD lanes and one sum (folded_sums): diffuse first (the faster order
-    // there; docs/batch.md).
+    // returning one field as diffuse and specular) is not held in registers across the power,
+    // which needs them all (docs/batch.md). SIMD lanes and one sum (folded_sums): diffuse first
+    // (the better order there; docs/batch.md).
     constexpr bool diffuse_last = std::is_floating_point_v<T> && std::is_same_v<Sums<T, Q>, light_sums<T, Q>>;
     if constexpr (F.diffuse && !diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
     // Phong with the fast integer power (n >= 1): a point without a view vector has v = 0, so its
