@@ -75,9 +75,13 @@ inline constexpr float log2_p[8] = {0x1.715476p+0f,  -0x1.71552cp-1f, 0x1.ec756e
 inline constexpr float exp2_e[6] = {0x1p+0f, 0x1.62e43p-1f, 0x1.ebf906p-3f, 0x1.c6af6cp-5f, 0x1.3d107p-7f, 0x1.5f089p-10f};
 
 /// log2 x for x > 0 finite (subnormal x included). Other x give a finite value (no NaN): the
-/// callers select them away. x = 2^k f, f in [sqrt(1/2), sqrt(2)), log2 x = k + r P(r), r = f - 1.
+/// callers select them away. x = 2^k f, f in [sqrt(1/2), sqrt(2)), log2 x = k + r P(r), r = f - 1,
+/// P of degree 7 by Estrin's scheme. One template for every width: scalars and SIMD lanes differ
+/// only in V (lanes<V>'s bit access). Beside it: power.hpp's tables (the exact scalar power) and
+/// lanes::log2_of_split (detail/simd/lanes_power.hpp: the exact mode's float lanes, a degree-8 fit
+/// for their tighter bound).
 template <class V>
-PHONG_INLINE constexpr V log2_positive(V x)
+PHONG_INLINE constexpr V log2_estrin(V x)
 {
     using S = scalar_t<V>;
     using fmt = format<S>;
@@ -103,10 +107,15 @@ PHONG_INLINE constexpr V log2_positive(V x)
     return L::madd(r, p, k - phong::select(subnormal, V(fmt::subnormal_log2), V(S(0))));
 }
 
-/// 2^y for y <= 0: y rounded to an integer n plus t in [-1/2, 1/2], 2^n from the exponent bits.
+/// 2^y for y <= 0: y rounded to an integer n plus t in [-1/2, 1/2], 2^n from the exponent bits,
+/// 2^t = E(t) of degree 5 by Estrin's scheme (float's accuracy, 2.1e-7, whatever V).
 /// y below the smallest normal exponent (or -inf) gives 0 (flushed); y > 0 is outside the domain.
+/// The fast mode's exp2 at every width (scalars and lanes: one template). Its two siblings are
+/// for tighter bounds: power::exp2_tabulated (detail/power.hpp: the exact scalar power, tables in
+/// double) and lanes::exp2_horner (detail/simd/lanes_power.hpp: the exact mode's float lanes,
+/// degree 6, within 2.5 u).
 template <class V>
-PHONG_INLINE constexpr V exp2_nonpositive(V y)
+PHONG_INLINE constexpr V exp2_estrin(V y)
 {
     using S = scalar_t<V>;
     using fmt = format<S>;
@@ -150,8 +159,8 @@ PHONG_INLINE constexpr V pow_unit(V x, V m)
     if constexpr (std::is_same_v<V, float>)
         if (!std::is_constant_evaluated()) return detail::pow_unit_sfu(x, m);
 #endif
-    const V y = m * detail::log2_positive(x);
-    const V p = detail::exp2_nonpositive(phong::min(y, V(S(0))));
+    const V y = m * detail::log2_estrin(x);
+    const V p = detail::exp2_estrin(phong::min(y, V(S(0))));
     const auto positive = x > V(S(0));
     return phong::select(positive, phong::select(m == V(S(0)), V(S(1)), p), phong::detail::power_of_zero(m));
 }
