@@ -270,6 +270,25 @@ PHONG_INLINE constexpr V reciprocal_normal(V x)
 /// (1.5 (1.5 2^-28)^2 plus the roundings, 2.5 2^-53): 3.3e-16, published 4e-16; measured 2.7e-16.
 template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7 : 4e-16;
 
+namespace detail {
+
+/// One Newton step for 1/sqrt(x) in product form, r (3/2 - (x/2) r^2), from an estimate r and
+/// half_x = x/2: the fast mode's step at every width (float scalars after rsqrtss, double AVX-512
+/// lanes twice after rsqrt14; lanes<V>::madd, contracted to an fma where the target has one).
+/// It squares the estimate's relative error (1.5 e0^2) and adds about 2.5 u of roundings
+/// (rsqrt_max_rel). Why not the correction form r + (r/2)(1 - x r^2) of the exact mode's float
+/// lanes (math_traits<xsimd::batch>::rsqrt_newton_correction, detail/simd/math_traits.hpp), which
+/// rounds less: without a fused 1 - x r^2 (baseline x86-64 scalars have no fma) the correction
+/// form's residual loses what it gains, and this form is within the fast mode's bound everywhere;
+/// the two round differently, so one in place of the other would change the fast mode's bits.
+template <class V>
+PHONG_INLINE constexpr V rsqrt_newton_product(V half_x, V r)
+{
+    return r * lanes<V>::madd(-half_x, r * r, V(scalar_t<V>(1.5)));
+}
+
+} // namespace detail
+
 /// Fast 1/sqrt(x) for a positive normal x: a hardware estimate refined by one Newton step,
 ///   r1 = r0 (3/2 - x/2 r0^2),
 /// relative error rsqrt_max_rel<T>. Float scalars on x86 (SSE): rsqrtss. Double scalars and other
@@ -299,7 +318,7 @@ PHONG_INLINE constexpr V rsqrt(V x)
                 r0 = x;
                 __asm__("rsqrtss %0, %0" : "+x"(r0));
 #  endif
-                const float r1 = r0 * (1.5f - (0.5f * x) * (r0 * r0));
+                const float r1 = detail::rsqrt_newton_product(0.5f * x, r0);
                 return phong::detail::ieee::positive_finite(r0) ? r1 : r0;
             }
         }

@@ -119,10 +119,13 @@ template <class V> inline mask_t<V> join_mask(const xsimd::batch_bool<double, ty
 /// 1/sqrt(x) for x a positive normal double (other x: unspecified). AVX-512: the estimate y
 /// (|rel err| < 2^-14) corrected once to fourth order: with r = 1 - x y^2 (|r| < 2^-12.9, one
 /// fma), 1/sqrt(x) = y (1 - r)^(-1/2) = y (1 + r/2 + 3 r^2/8 + 5 r^3/16 + 35 r^4/128 ...); the
-/// truncation 35 r^4/128 < 2^-53, the roundings about 2 u (u = 2^-53): |rel err| < 3 u. Six
-/// instructions where two Newton steps take eight. Elsewhere a division by the correctly rounded
-/// square root (two roundings: 1.5 u). Measured (tests/lanes_power.test.cpp, 20000 log-uniform x in
-/// [2^-298, 2^257]): 1.24 u (AVX-512), 1.47 u (SSE2).
+/// truncation 35 r^4/128 < 2^-53, the roundings about 2 u (u = 2^-53): |rel err| < 3 u. Elsewhere
+/// a division by the correctly rounded square root (two roundings: 1.5 u). Measured
+/// (tests/lanes_power.test.cpp, 20000 log-uniform x in [2^-298, 2^257]): 1.24 u (AVX-512), 1.47 u
+/// (SSE2). Why not a Newton step as the other lanes take (math_traits<xsimd::batch>::
+/// rsqrt_newton_correction for float, fast::detail::rsqrt_newton_product for the fast mode's
+/// double): one step from 2^-14 leaves 2^-27, and two take more instructions than this one
+/// correction for double's accuracy.
 template <class D> inline D rsqrt_normal(const D& x)
 {
 #  if defined(__AVX512F__)
