@@ -219,10 +219,7 @@ inline surface_frame<V, Q> prepare(const glm::vec<3, V, Q>& position, const glm:
     for (int h = 0; h < 2; ++h) {
         part_frame<D, Q>& f = s.part[h];
         f.position = pos[h];
-        vec3 e = eye[h];                                                            // fixed_direction
-        if constexpr (F.view == view_model::eye_at_origin) e = -pos[h];
-        if constexpr (F.view == view_model::given) e = given[h];
-        if constexpr (F.view == view_model::eye_point) e = detail::homogeneous_difference(eye[h], eye_w[h], pos[h]); // w Q exact in double
+        const vec3 e = detail::unnormalized_view<F.view>(pos[h], given[h], eye[h], eye_w[h]); // eye_point: w Q exact in double
         const D ee = phong::dot(e, e), nn = phong::dot(nrm[h], nrm[h]);
         const D inv_e = inverse_length(ee), inv_n = inverse_length(nn);
         f.view = e * inv_e;
