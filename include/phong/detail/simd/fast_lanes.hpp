@@ -24,7 +24,8 @@ struct lanes<xsimd::batch<T, A>> {
     static V from_bits(const bits_t& u) { return xsimd::bitwise_cast<V>(u); }
     /// a * b + c: the fused instruction where the target has one (xsimd 8.1's fma is a separate
     /// multiply and add on AVX-512), else a multiply and an add (not math_traits' exact fma:
-    /// Dekker's split costs ten times more and the kernels do not need the single rounding).
+    /// Dekker's split takes many operations where this takes one, and the kernels do not need the
+    /// single rounding).
     static V madd(const V& a, const V& b, const V& c)
     {
 #  if defined(__FMA__) || defined(__AVX512F__)

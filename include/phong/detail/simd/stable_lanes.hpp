@@ -8,7 +8,7 @@
 // rounded once to 2^-53; and unit vectors, n.l, the specular cosine c (r.v or n.h) and its
 // complement x = 1 - c carry absolute errors of a few 2^-53 (about 10 at most for x, with |l + v|
 // of order 1), below float's u^2 = 2^-48 (what the twofold route of detail/stable.hpp reaches with
-// error-free transformations, at about three times the instructions). Rounded to float once, n.l
+// error-free transformations, with many more operations). Rounded to float once, n.l
 // and the weights f n.l are within u / 2 (u = 2^-24) of their exact values; x and c are each
 // rounded to float, within u / 2 relative plus that absolute part, which the power c^m
 // (lanes_power.hpp's pow_cosine: from x where c >= sqrt(1/2), from c below) amplifies by m:
