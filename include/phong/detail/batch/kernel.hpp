@@ -96,24 +96,6 @@ PHONG_LANES_INLINE void shade_stable_steps(const step_stream<V, T>& io, std::siz
 }
 #endif
 
-/// One step's colour from its frame s (shade_lanes' step loop, after prepare): every (visible)
-/// light, then finish. m: the shininess in the form the light loop takes (V, exact::lane_shininess<V> or
-/// exact::integer_exponent<V>); step_bits: the step's W light masks, null without masks (Masks
-/// false). Folded and without masks, the lights' ambient terms are hoisted out of the loop where
-/// the features allow it (ambient_hoisted: env.ambient carries their sum, shade_lanes' doc).
-template <features F, class V, class T, glm::qualifier Q, bool Folded, bool Masks, class M>
-PHONG_LANES_INLINE color<F, V, Q> shade_step(const frame_t<F, V, Q>& s, const material<V, Q>& mat, const M& m,
-                                             std::span<const light<V, Q>> lights, const environment<V, Q>& env,
-                                             const std::uint64_t* step_bits, std::size_t count)
-{
-    using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
-    constexpr features G = Folded && ambient_hoistable<F> && !Masks ? ambient_hoisted<F> : F;
-    Sums sums{};
-    if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
-    add_masked_lights<G, V, T, Q>(sums, s, lights, m, step_bits, count);
-    return finish<G>(sums, s, mat, env);
-}
-
 /// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
 /// steps from step `first` of the stream (its step first + k in, its colour first + k out). The
 /// caller passes the stream it built, unchanged (a copy per call, offset to the step, costs time:
@@ -145,6 +127,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
     const step_stream<V, T> io = stream; // a copy the colour stores cannot alias: its pointers stay in registers
+    using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
 #if PHONG_STABLE_LANES
     if constexpr (stable_lanes_route<F, V>) {
         // The stable mode's geometry in double lanes, unless a lane's shininess is above that
@@ -167,7 +150,13 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
             const step_lanes<V, Q> in = io.template lanes<F, Q, Flags>(first + k);
             if (k > 0) io.template put<F, Q, Flags>(first + k - 1, pending);
             const frame_t<F, V, Q> s = prepare<F>(in.position, in.normal, in.view, env, in.front);
-            if constexpr (!Folded && std::is_same_v<std::decay_t<decltype(call_m)>, exact::lane_shininess<V>>) {
+            Sums sums{};
+            if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
+            if constexpr (Folded && ambient_hoistable<F> && !Masks) {
+                constexpr features G = ambient_hoisted<F>;
+                add_masked_lights<G, V, T, Q>(sums, s, lights, call_m, step_bits, count);
+                pending = finish<G>(sums, s, mat, env);
+            } else if constexpr (!Folded && std::is_same_v<std::decay_t<decltype(call_m)>, exact::lane_shininess<V>>) {
                 // Per-step materials: the step's shininess tested for 0 here, as once per call otherwise.
                 // A table's step looks its ids up here, in the loop: their loads and, for mixed
                 // ids, the lanes' permutes overlap the shading of the steps around them.
@@ -177,9 +166,11 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
                                                                   : mat;
                 exact::lane_shininess<V> m = call_m;
                 if (table || step_materials) m = shininess_lanes(step_mat.shininess);
-                pending = shade_step<F, V, T, Q, Folded, Masks>(s, step_mat, m, lights, env, step_bits, count);
+                add_masked_lights<F, V, T, Q>(sums, s, lights, m, step_bits, count);
+                pending = finish<F>(sums, s, step_mat, env);
             } else {
-                pending = shade_step<F, V, T, Q, Folded, Masks>(s, mat, call_m, lights, env, step_bits, count);
+                add_masked_lights<F, V, T, Q>(sums, s, lights, call_m, step_bits, count);
+                pending = finish<F>(sums, s, mat, env);
             }
         }
         if (steps > 0) io.template put<F, Q, Flags>(first + steps - 1, pending);
