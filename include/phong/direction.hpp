@@ -22,6 +22,24 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> homogeneous_difference(const glm::vec<3
     else if constexpr (K == light_kind::positional) return xyz - point;
     else return xyz - point * w;
 }
+
+/// The view vector before normalization, e, for the view model V: -Q (eye_at_origin), the given
+/// vector (given), E.xyz (fixed_direction) or E.xyz - E.w Q (eye_point; the homogeneous rule
+/// above). The one place the view models are told apart: each route normalizes e in its own
+/// arithmetic (the exact mode's unit_of, the stable mode's twofold unit vector, the stable float
+/// lanes' double) and calls this on that type. Two routes keep a model of their own, each said
+/// where: the exact mode's eye_at_origin (-Q folded into the sign of 1/|Q|) and fixed_direction
+/// (E.xyz with |Q|^2 for the NaN test), and the stable mode's eye_point (rescaled, twofold).
+template <view_model V, class T, glm::qualifier Q>
+PHONG_INLINE constexpr glm::vec<3, T, Q> unnormalized_view([[maybe_unused]] const glm::vec<3, T, Q>& position,
+                                                       [[maybe_unused]] const glm::vec<3, T, Q>& given_view,
+                                                       [[maybe_unused]] const glm::vec<3, T, Q>& eye_xyz, [[maybe_unused]] T eye_w)
+{
+    if constexpr (V == view_model::eye_at_origin) return -position;
+    else if constexpr (V == view_model::given) return given_view;
+    else if constexpr (V == view_model::eye_point) return homogeneous_difference(eye_xyz, eye_w, position);
+    else return eye_xyz;
+}
 } // namespace detail
 
 /// A unit direction and the distance along it.

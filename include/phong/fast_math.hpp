@@ -75,9 +75,13 @@ inline constexpr float log2_p[8] = {0x1.715476p+0f,  -0x1.71552cp-1f, 0x1.ec756e
 inline constexpr float exp2_e[6] = {0x1p+0f, 0x1.62e43p-1f, 0x1.ebf906p-3f, 0x1.c6af6cp-5f, 0x1.3d107p-7f, 0x1.5f089p-10f};
 
 /// log2 x for x > 0 finite (subnormal x included). Other x give a finite value (no NaN): the
-/// callers select them away. x = 2^k f, f in [sqrt(1/2), sqrt(2)), log2 x = k + r P(r), r = f - 1.
+/// callers select them away. x = 2^k f, f in [sqrt(1/2), sqrt(2)), log2 x = k + r P(r), r = f - 1,
+/// P of degree 7 by Estrin's scheme. One template for every width: scalars and SIMD lanes differ
+/// only in V (lanes<V>'s bit access). Beside it: power.hpp's tables (the exact scalar power) and
+/// lanes::log2_of_split (detail/simd/lanes_power.hpp: the exact mode's float lanes, a degree-8 fit
+/// for their tighter bound).
 template <class V>
-PHONG_INLINE constexpr V log2_positive(V x)
+PHONG_INLINE constexpr V log2_estrin(V x)
 {
     using S = scalar_t<V>;
     using fmt = format<S>;
@@ -103,10 +107,15 @@ PHONG_INLINE constexpr V log2_positive(V x)
     return L::madd(r, p, k - phong::select(subnormal, V(fmt::subnormal_log2), V(S(0))));
 }
 
-/// 2^y for y <= 0: y rounded to an integer n plus t in [-1/2, 1/2], 2^n from the exponent bits.
+/// 2^y for y <= 0: y rounded to an integer n plus t in [-1/2, 1/2], 2^n from the exponent bits,
+/// 2^t = E(t) of degree 5 by Estrin's scheme (float's accuracy, 2.1e-7, whatever V).
 /// y below the smallest normal exponent (or -inf) gives 0 (flushed); y > 0 is outside the domain.
+/// The fast mode's exp2 at every width (scalars and lanes: one template). Its two siblings are
+/// for tighter bounds: power::exp2_tabulated (detail/power.hpp: the exact scalar power, tables in
+/// double) and lanes::exp2_horner (detail/simd/lanes_power.hpp: the exact mode's float lanes,
+/// degree 6, within 2.5 u).
 template <class V>
-PHONG_INLINE constexpr V exp2_nonpositive(V y)
+PHONG_INLINE constexpr V exp2_estrin(V y)
 {
     using S = scalar_t<V>;
     using fmt = format<S>;
@@ -150,8 +159,8 @@ PHONG_INLINE constexpr V pow_unit(V x, V m)
     if constexpr (std::is_same_v<V, float>)
         if (!std::is_constant_evaluated()) return detail::pow_unit_sfu(x, m);
 #endif
-    const V y = m * detail::log2_positive(x);
-    const V p = detail::exp2_nonpositive(phong::min(y, V(S(0))));
+    const V y = m * detail::log2_estrin(x);
+    const V p = detail::exp2_estrin(phong::min(y, V(S(0))));
     const auto positive = x > V(S(0));
     return phong::select(positive, phong::select(m == V(S(0)), V(S(1)), p), phong::detail::power_of_zero(m));
 }
@@ -261,6 +270,25 @@ PHONG_INLINE constexpr V reciprocal_normal(V x)
 /// (1.5 (1.5 2^-28)^2 plus the roundings, 2.5 2^-53): 3.3e-16, published 4e-16; measured 2.7e-16.
 template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7 : 4e-16;
 
+namespace detail {
+
+/// One Newton step for 1/sqrt(x) in product form, r (3/2 - (x/2) r^2), from an estimate r and
+/// half_x = x/2: the fast mode's step at every width (float scalars after rsqrtss, double AVX-512
+/// lanes twice after rsqrt14; lanes<V>::madd, contracted to an fma where the target has one).
+/// It squares the estimate's relative error (1.5 e0^2) and adds about 2.5 u of roundings
+/// (rsqrt_max_rel). Why not the correction form r + (r/2)(1 - x r^2) of the exact mode's float
+/// lanes (math_traits<xsimd::batch>::rsqrt_newton_correction, detail/simd/math_traits.hpp), which
+/// rounds less: without a fused 1 - x r^2 (baseline x86-64 scalars have no fma) the correction
+/// form's residual loses what it gains, and this form is within the fast mode's bound everywhere;
+/// the two round differently, so one in place of the other would change the fast mode's bits.
+template <class V>
+PHONG_INLINE constexpr V rsqrt_newton_product(V half_x, V r)
+{
+    return r * lanes<V>::madd(-half_x, r * r, V(scalar_t<V>(1.5)));
+}
+
+} // namespace detail
+
 /// Fast 1/sqrt(x) for a positive normal x: a hardware estimate refined by one Newton step,
 ///   r1 = r0 (3/2 - x/2 r0^2),
 /// relative error rsqrt_max_rel<T>. Float scalars on x86 (SSE): rsqrtss. Double scalars and other
@@ -290,7 +318,7 @@ PHONG_INLINE constexpr V rsqrt(V x)
                 r0 = x;
                 __asm__("rsqrtss %0, %0" : "+x"(r0));
 #  endif
-                const float r1 = r0 * (1.5f - (0.5f * x) * (r0 * r0));
+                const float r1 = detail::rsqrt_newton_product(0.5f * x, r0);
                 return phong::detail::ieee::positive_finite(r0) ? r1 : r0;
             }
         }

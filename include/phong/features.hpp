@@ -106,7 +106,7 @@ struct features {
     stable_precision precision = stable_precision::wider; ///< stable mode only: wider (float in double) or twofold
     /// Stable mode with twofold precision only: 0 (the default) carries every pair twofold, the accuracy that
     /// phong/accuracy.hpp publishes. M > 0 rounds each component once for pairs with shininess
-    /// m <= M (Blinn: unless l + v nearly cancels), less than half the cost, at an error that
+    /// m <= M (Blinn: unless l + v nearly cancels), at a lower cost, at an error that
     /// grows like sqrt(m) eps (figures: docs/accuracy.md, tests/stable_hybrid.test.cpp); every
     /// target of the stable mode is met. Higher m stays twofold.
     /// Not read by float SIMD batches on x86 (their double-lane route is more accurate than

@@ -112,17 +112,16 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_at(const glm::vec<3, T, Q>& positi
 {
     using vec3 = glm::vec<3, T, Q>;
     const vec3 eye(env.eye.x, env.eye.y, env.eye.z);
-    if constexpr (F.view == view_model::given) {
-        if constexpr (F.unit_inputs) return {given_view, T(1), mask_t<T>(true)}; // unit by precondition
-        else return view_unit<F>(given_view, T(1));
+    if constexpr (F.view == view_model::given && F.unit_inputs) {
+        return {given_view, T(1), mask_t<T>(true)}; // unit by precondition
     } else if constexpr (F.view == view_model::fixed_direction) {
         if constexpr (F.unit_inputs) return {eye, phong::dot(position, position), mask_t<T>(true)}; // unit by precondition
         const vec3 v = phong::normalize(eye);
         return {v, phong::dot(position, position), phong::dot(v, v) > T(0)};
     } else if constexpr (F.view == view_model::eye_at_origin) {
-        return view_unit<F>(position, T(-1)); // -Q, as Q times -1/|Q|
+        return view_unit<F>(position, T(-1)); // -Q, as Q times -1/|Q|: no negation of Q's components
     } else {
-        return view_unit<F>(detail::homogeneous_difference(eye, env.eye.w, position), T(1));
+        return view_unit<F>(detail::unnormalized_view<F.view>(position, given_view, eye, env.eye.w), T(1));
     }
 }
 

@@ -130,10 +130,15 @@ PHONG_INLINE constexpr double log2_normal(double x)
     return (k + log2_table[i].log2_c) + p;
 }
 
-/// 2^y for y in [-1022, 0] (a normal result). Short: float's degree-3 polynomial (truncation below
-/// 4e-11 relative) instead of degree 5.
+/// 2^y for y in [-1022, 0] (a normal result), from the 64-entry table and a short polynomial in
+/// double. Short: float's degree-3 polynomial (truncation below 4e-11 relative) instead of degree 5.
+/// One of three exp2 kernels, each for its own accuracy: this one is the scalar exact and stable
+/// modes' (pow_unit, whose error the header states: float nearly always correctly rounded);
+/// fast::detail::exp2_estrin (fast_math.hpp) is the fast mode's float-accurate polynomial at every
+/// width; lanes::exp2_horner (detail/simd/lanes_power.hpp) is the exact mode's float SIMD lanes',
+/// with no table (a table lookup per lane would be a gather).
 template <bool Short = false>
-PHONG_INLINE constexpr double exp2_nonpositive(double y)
+PHONG_INLINE constexpr double exp2_tabulated(double y)
 {
     constexpr double shift = 0x1.8p52 / (1 << exp_table_bits); // ulp 1/64 around it: y + shift rounds 64 y
     const auto [shifted, rounded] = ieee::round_by_shift(y, shift);
@@ -168,7 +173,7 @@ PHONG_INLINE constexpr float pow_unit_kernel(float xf, float mf)
     const double x = xf, m = mf;
     if (x > 0.0) [[likely]] { // every positive float is a normal double
         const double y = m * log2_normal<true>(x);
-        if (y >= -1022.0 && y <= 0.0) [[likely]] return static_cast<float>(exp2_nonpositive<true>(y));
+        if (y >= -1022.0 && y <= 0.0) [[likely]] return static_cast<float>(exp2_tabulated<true>(y));
         if (y < -1022.0) return 0.0f;
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0f : 0.0f; // 0^m: power_of_zero, written out
@@ -182,7 +187,7 @@ PHONG_INLINE constexpr double pow_unit_kernel(double x, double m)
 {
     if (x > 0.0) [[likely]] {
         const double y = x >= 0x1p-1022 ? m * log2_normal(x) : m * (log2_normal(x * 0x1p64) - 64.0);
-        if (y >= -1022.0 && y <= 0.0) [[likely]] return exp2_nonpositive(y);
+        if (y >= -1022.0 && y <= 0.0) [[likely]] return exp2_tabulated(y);
         if (y < -1022.0) return 0.0;
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0 : 0.0; // 0^m: power_of_zero, written out

@@ -77,10 +77,10 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
     surface_frame<T, Q> s{};
     s.position = position;
     const vec3 eye(env.eye.x, env.eye.y, env.eye.z);
-    twofold_vector<T, Q> e{eye, vec3(T(0))};                                             // fixed_direction
-    if constexpr (F.view == view_model::eye_at_origin) e.hi = -position;
-    if constexpr (F.view == view_model::given) e.hi = given_view;
-    if constexpr (F.view == view_model::eye_point) {
+    twofold_vector<T, Q> e{eye, vec3(T(0))};
+    if constexpr (F.view != view_model::eye_point) {
+        e.hi = detail::unnormalized_view<F.view>(position, given_view, eye, env.eye.w);
+    } else {
         // d = E.xyz - E.w Q is formed as 2^(a+b) d = 2^a (E.xyz 2^b) - (E.w 2^a)(Q 2^b), which has
         // d's direction exactly: 2^b brings the larger of E.xyz and Q to [1, 2), then 2^a the
         // larger of E.xyz 2^b and E.w (E is homogeneous). In that order tiny E.xyz and Q are scaled

@@ -24,7 +24,8 @@ struct lanes<xsimd::batch<T, A>> {
     static V from_bits(const bits_t& u) { return xsimd::bitwise_cast<V>(u); }
     /// a * b + c: the fused instruction where the target has one (xsimd 8.1's fma is a separate
     /// multiply and add on AVX-512), else a multiply and an add (not math_traits' exact fma:
-    /// Dekker's split costs ten times more and the kernels do not need the single rounding).
+    /// Dekker's split takes many operations where this takes one, and the kernels do not need the
+    /// single rounding).
     static V madd(const V& a, const V& b, const V& c)
     {
 #  if defined(__FMA__) || defined(__AVX512F__)
@@ -34,16 +35,16 @@ struct lanes<xsimd::batch<T, A>> {
 #  endif
     }
     /// 1/sqrt(x), relative error fast::rsqrt_max_rel<T>. Float: math_traits' estimate + one Newton
-    /// step (AVX, AVX-512; 1/sqrt elsewhere). Double with AVX-512: rsqrt14 (2^-14) + two Newton
-    /// steps (below 1e-15 after the roundings); elsewhere 1/sqrt. x = 0: inf, x = inf: 0.
+    /// step in correction form (AVX, AVX-512; 1/sqrt elsewhere). Double with AVX-512: rsqrt14
+    /// (2^-14) + two of the fast mode's product-form steps (detail::rsqrt_newton_product; below
+    /// 1e-15 after the roundings); elsewhere 1/sqrt. x = 0: inf, x = inf: 0.
     static V rsqrt(const V& x)
     {
 #  if defined(__AVX512F__)
         if constexpr (std::is_same_v<T, double> && sizeof(V) == 64) {
             const V r0(_mm512_rsqrt14_pd(x));
             const V half_x = V(0.5) * x;
-            const V r1 = r0 * math_traits<V>::fma(-half_x, r0 * r0, V(1.5));
-            const V r2 = r1 * math_traits<V>::fma(-half_x, r1 * r1, V(1.5));
+            const V r2 = detail::rsqrt_newton_product(half_x, detail::rsqrt_newton_product(half_x, r0));
             return xsimd::select(phong::detail::ieee::positive_finite(r0), r2, r0);
         }
 #  endif

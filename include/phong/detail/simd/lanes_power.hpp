@@ -67,7 +67,8 @@ template <class V> PHONG_LANES_INLINE V split_exponent(const V& x, V& e)
     return ieee::opaque(xsimd::bitwise_cast<V>(bits - (ei << 23)) - V(1.0f)); // -ffast-math: kept as one value
 }
 
-/// e + log2(1 + t) = e + t P(t) for t in [sqrt(1/2) - 1, sqrt(2) - 1].
+/// e + log2(1 + t) = e + t P(t) for t in [sqrt(1/2) - 1, sqrt(2) - 1], P of degree 8 by Horner's
+/// scheme (fast::detail::log2_estrin, fast_math.hpp, is the fast mode's degree-7 fit: coarser).
 template <class V> PHONG_LANES_INLINE V log2_of_split(const V& t, const V& e)
 {
     V p(log2_coefficients[0]);
@@ -75,11 +76,15 @@ template <class V> PHONG_LANES_INLINE V log2_of_split(const V& t, const V& e)
     return fused(t, p, e);
 }
 
-/// 2^y for y <= 0: k = round(y), r = y - k, 2^r = 1 + r R(r), times 2^k exactly (y clamped below
-/// where 2^y is 0 in float anyway; a NaN y is clamped like -inf). Finite: y known finite (not NaN),
-/// so AVX-512's scalef, which takes any k (2^r 2^k is 0 for k < -150 as for the clamped k = -150),
-/// needs no clamp; exponent-field arithmetic keeps it.
-template <class V, bool Finite = false> PHONG_LANES_INLINE V exp2_nonpositive(const V& y_in)
+/// 2^y for y <= 0: k = round(y), r = y - k, 2^r = 1 + r R(r) by Horner's scheme, times 2^k exactly
+/// (y clamped below where 2^y is 0 in float anyway; a NaN y is clamped like -inf). Finite: y known
+/// finite (not NaN), so AVX-512's scalef, which takes any k (2^r 2^k is 0 for k < -150 as for the
+/// clamped k = -150), needs no clamp; exponent-field arithmetic keeps it.
+/// Why a third exp2 beside power::exp2_tabulated (detail/power.hpp) and fast::detail::exp2_estrin
+/// (fast_math.hpp): the tables would be a gather per lane, and the fast mode's degree-5 polynomial
+/// is too coarse for the exact mode's bound (pow_unit_lanes_error); different coefficients, so
+/// merging either would change the bits of one mode.
+template <class V, bool Finite = false> PHONG_LANES_INLINE V exp2_horner(const V& y_in)
 {
     using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
 #if defined(__AVX512F__)
@@ -104,12 +109,12 @@ template <class V, bool Finite = false> PHONG_LANES_INLINE V exp2_nonpositive(co
 }
 
 /// 2^(m log2 x) for x in [0, 1] (0 and subnormals taken as 2^-126), m >= 0 finite; Finite: m <= 2^100
-/// (exp2_nonpositive: y = m log2 x is then finite, |y| <= 126 2^100).
+/// (exp2_horner: y = m log2 x is then finite, |y| <= 126 2^100).
 template <class V, bool Finite = false> PHONG_LANES_INLINE V power_of_log2(const V& x, const V& m)
 {
     V e;
     const V t = split_exponent(xsimd::max(x, V(std::numeric_limits<float>::min())), e); // 0, subnormals: 2^-126
-    return exp2_nonpositive<V, Finite>(m * log2_of_split(t, e));
+    return exp2_horner<V, Finite>(m * log2_of_split(t, e));
 }
 
 /// x^m lane-wise for x in [0, 1], m >= 0 finite (see the header comment for the method and bound),
@@ -156,7 +161,7 @@ template <class V> PHONG_LANES_INLINE V pow_cosine(const V& x, const V& c, const
     const V t_split = split_exponent(xsimd::max(c, V(std::numeric_limits<float>::min())), e);
     const auto near_one = c >= V(0.70710677f); // then e = 0 and t_split = c - 1
     const V log2_base = log2_of_split(xsimd::select(near_one, -x, t_split), xsimd::select(near_one, V(0.0f), e));
-    const V power = exp2_nonpositive(m * log2_base);
+    const V power = exp2_horner(m * log2_base);
     return xsimd::select(c > V(0.0f) || m == V(0.0f), power, V(0.0f)); // 0^m as pow_unit's select
 }
 

@@ -45,9 +45,9 @@ struct math_traits<xsimd::batch<T, A>> {
     PHONG_LANES_INLINE static V rsqrt_normal(const V& x)
     {
         if constexpr (float_lanes && std::is_base_of_v<xsimd::avx512f, A>) {
-            return newton_step(x, V(_mm512_rsqrt14_ps(x)));
+            return rsqrt_newton_correction(x, V(_mm512_rsqrt14_ps(x)));
         } else if constexpr (float_lanes && std::is_base_of_v<xsimd::avx, A>) {
-            return newton_step(x, V(_mm256_rsqrt_ps(x)));
+            return rsqrt_newton_correction(x, V(_mm256_rsqrt_ps(x)));
         } else {
             return V(T(1)) / xsimd::sqrt(x);
         }
@@ -180,14 +180,20 @@ private:
     /// Correction form y0 + (y0 / 2)(1 - (x y0) y0) with fused multiply-adds: the step squares the
     /// estimate's error (1.5 e0^2), and the roundings add about 1.5 u (x y0 rounded, halved by
     /// y0 / 2; the last fma): 1.6 u with AVX-512's 2^-14 estimate, 4.9 u with AVX's 1.5 2^-12.
-    PHONG_LANES_INLINE static V newton_step(const V& x, const V& estimate)
+    /// The exact mode's bounds count that 1.6 u (accuracy.hpp). Beside it, two other refinements
+    /// on purpose: the fast mode's product form r (3/2 - (x/2) r^2) (fast::detail::rsqrt_newton_product,
+    /// fast_math.hpp: about 2.5 u of roundings, and no fma needed for its scalar route) and the
+    /// stable lanes' fourth-order correction in double (stable_lanes::rsqrt_normal, for
+    /// double's accuracy in one step). Each rounds differently: one in place of another would
+    /// change that mode's bits or loosen its bound.
+    PHONG_LANES_INLINE static V rsqrt_newton_correction(const V& x, const V& estimate)
     {
         const V residual = fma(-(x * estimate), estimate, V(T(1))); // 1 - x y0^2
         return fma(estimate * V(T(0.5)), residual, estimate);
     }
     static V newton_rsqrt(const V& x, const V& estimate)
     {
-        const V refined = newton_step(x, estimate);
+        const V refined = rsqrt_newton_correction(x, estimate);
         const auto finite_nonzero = phong::detail::ieee::positive_finite(estimate);
         return xsimd::select(finite_nonzero, refined, estimate);
     }

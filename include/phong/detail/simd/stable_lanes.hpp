@@ -8,7 +8,7 @@
 // rounded once to 2^-53; and unit vectors, n.l, the specular cosine c (r.v or n.h) and its
 // complement x = 1 - c carry absolute errors of a few 2^-53 (about 10 at most for x, with |l + v|
 // of order 1), below float's u^2 = 2^-48 (what the twofold route of detail/stable.hpp reaches with
-// error-free transformations, at about three times the instructions). Rounded to float once, n.l
+// error-free transformations, with many more operations). Rounded to float once, n.l
 // and the weights f n.l are within u / 2 (u = 2^-24) of their exact values; x and c are each
 // rounded to float, within u / 2 relative plus that absolute part, which the power c^m
 // (lanes_power.hpp's pow_cosine: from x where c >= sqrt(1/2), from c below) amplifies by m:
@@ -119,10 +119,13 @@ template <class V> inline mask_t<V> join_mask(const xsimd::batch_bool<double, ty
 /// 1/sqrt(x) for x a positive normal double (other x: unspecified). AVX-512: the estimate y
 /// (|rel err| < 2^-14) corrected once to fourth order: with r = 1 - x y^2 (|r| < 2^-12.9, one
 /// fma), 1/sqrt(x) = y (1 - r)^(-1/2) = y (1 + r/2 + 3 r^2/8 + 5 r^3/16 + 35 r^4/128 ...); the
-/// truncation 35 r^4/128 < 2^-53, the roundings about 2 u (u = 2^-53): |rel err| < 3 u. Six
-/// instructions where two Newton steps take eight. Elsewhere a division by the correctly rounded
-/// square root (two roundings: 1.5 u). Measured (tests/lanes_power.test.cpp, 20000 log-uniform x in
-/// [2^-298, 2^257]): 1.24 u (AVX-512), 1.47 u (SSE2).
+/// truncation 35 r^4/128 < 2^-53, the roundings about 2 u (u = 2^-53): |rel err| < 3 u. Elsewhere
+/// a division by the correctly rounded square root (two roundings: 1.5 u). Measured
+/// (tests/lanes_power.test.cpp, 20000 log-uniform x in [2^-298, 2^257]): 1.24 u (AVX-512), 1.47 u
+/// (SSE2). Why not a Newton step as the other lanes take (math_traits<xsimd::batch>::
+/// rsqrt_newton_correction for float, fast::detail::rsqrt_newton_product for the fast mode's
+/// double): one step from 2^-14 leaves 2^-27, and two take more instructions than this one
+/// correction for double's accuracy.
 template <class D> inline D rsqrt_normal(const D& x)
 {
 #  if defined(__AVX512F__)
@@ -216,10 +219,7 @@ inline surface_frame<V, Q> prepare(const glm::vec<3, V, Q>& position, const glm:
     for (int h = 0; h < 2; ++h) {
         part_frame<D, Q>& f = s.part[h];
         f.position = pos[h];
-        vec3 e = eye[h];                                                            // fixed_direction
-        if constexpr (F.view == view_model::eye_at_origin) e = -pos[h];
-        if constexpr (F.view == view_model::given) e = given[h];
-        if constexpr (F.view == view_model::eye_point) e = detail::homogeneous_difference(eye[h], eye_w[h], pos[h]); // w Q exact in double
+        const vec3 e = detail::unnormalized_view<F.view>(pos[h], given[h], eye[h], eye_w[h]); // eye_point: w Q exact in double
         const D ee = phong::dot(e, e), nn = phong::dot(nrm[h], nrm[h]);
         const D inv_e = inverse_length(ee), inv_n = inverse_length(nn);
         f.view = e * inv_e;
