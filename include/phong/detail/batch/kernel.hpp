@@ -118,14 +118,6 @@ PHONG_LANES_INLINE void shade_stable_steps(const step_stream<V, T>& io, std::siz
 /// (table_lanes::step; step_materials null). The fast mode's integer exponent and the stable
 /// mode's route are decided per call from mat: those modes take one step per call with
 /// per-step materials.
-/// Routes, decided once per call: the stable mode on float lanes of x86 takes its geometry in
-/// double lanes (shade_stable_steps) unless a lane's shininess is above that route's limit (then
-/// the twofold route of the step loop here); the fast mode with one integer shininess n >= 1 in
-/// every lane (a shared material, or a step of equal ones) takes the power by binary powering,
-/// its schedule made once here rather than per pair (m = 0, pow(0, 0) = 1 on every lane that is
-/// on, takes lane_shininess). The step loop is compiled four times: with light masks or
-/// without (a call without masks tests nothing per step), and testing io's layout flags per step
-/// or not (a loop of its own, so that SoA steps test nothing).
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
 PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size_t first, std::size_t steps, const material<V, Q>& mat,
                                       std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
@@ -138,12 +130,17 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
     using Sums = std::conditional_t<Folded, folded_sums<V, Q>, light_sums<V, Q>>;
 #if PHONG_STABLE_LANES
     if constexpr (stable_lanes_route<F, V>) {
+        // The stable mode's geometry in double lanes, unless a lane's shininess is above that
+        // route's limit: then the twofold route below.
         if (!xsimd::any(mat.shininess > V(stable_lanes::max_shininess)))
             return shade_stable_steps<F, V, T, Q, Folded>(io, first, steps, mat, lights, wide_lights, env, bits, count);
     }
 #else
     (void)wide_lights;
 #endif
+    // The steps with masks or without: two loops, so that a call without masks tests nothing per step.
+    // Flags: the loop that tests io's layout flags per step (a loop of its own, so that SoA steps
+    // test nothing).
     const auto run_steps = [&]<bool Masks, bool Flags>(const auto& call_m) {
         // Step k's colour is stored after step k + 1's lanes are loaded: stored before, it held up
         // those loads where the spans share their offset in a page (docs/batch.md).
@@ -189,14 +186,20 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
         if (bits) run_steps.template operator()<true, false>(m);
         else run_steps.template operator()<false, false>(m);
     };
-    if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) { // one integer shininess n >= 1 in every lane
+    if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) {
+        // One integer shininess in every lane (a shared material, or a step of equal ones):
+        // the fast power by binary powering, its schedule made here once rather than per pair
+        // (n >= 1; m = 0, pow(0, 0) = 1 on every lane that is on, takes lane_shininess below).
         const T m0 = mat.shininess.get(0);
         if (m0 >= T(1) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
             math_traits<V>::all(mat.shininess == V(m0)))
             return run(exact::integer_exponent<V>::of(unsigned(m0)));
     }
-    if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) run(shininess_lanes(mat.shininess)); // m == 0 tested once
-    else run(mat.shininess);
+    if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
+        run(shininess_lanes(mat.shininess)); // m == 0 tested once
+    } else {
+        run(mat.shininess);
+    }
 }
 
 #undef PHONG_BATCH_NOINLINE
