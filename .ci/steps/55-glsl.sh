@@ -6,7 +6,8 @@
 #     in GLSL 330 core and 300 es against the model, seed 003's phong.vert verbatim, the recipe. Built
 #     by step 10 (gcc-debug) already; it must exist: no EGL headers here is a failure, not a skip, and
 #     PHONG_GLSL_ALLOW_SKIP is cleared so that a missing EGL display fails too;
-#  4. the throughput benchmark, short (the bench preset; docs/glsl.md has the full run's command).
+#  4. the same tests through EGL's device platform (Mesa's software device), the path NVIDIA's EGL needs;
+#  5. the throughput benchmark, short (the bench preset; docs/glsl.md has the full run's command).
 set -euo pipefail
 root="$PWD"
 tests/glsl/validate.sh
@@ -21,6 +22,7 @@ cmake --build build/gcc-debug --target phong_glsl_tests -j2
 export EGL_PLATFORM=surfaceless LIBGL_ALWAYS_SOFTWARE=1
 unset PHONG_GLSL_ALLOW_SKIP
 build/gcc-debug/tests/glsl/phong_glsl_tests
+PHONG_EGL_PLATFORM=device build/gcc-debug/tests/glsl/phong_glsl_tests | grep -E 'EGL device|Status'
 [[ -f build/bench/CMakeCache.txt ]] || cmake --preset bench >/dev/null
 cmake --build build/bench --target phong_glsl_bench -j2
 build/bench/benchmarks/glsl/phong_glsl_bench 131072 21

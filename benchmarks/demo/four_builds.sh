@@ -5,12 +5,18 @@
 # the shadow rays' l and distance; screen space: directional lights given, no position, surface per
 # fragment), over the expert inline lighting (median thread CPU time, methods interleaved in one
 # binary), at 1, 2 and 4 lights. Every run also checks its images (within one 8-bit level).
-# Usage: benchmarks/demo/four_builds.sh [--size WxH] [--reps N]   (default 640x480, 9 reps)
+# Usage: benchmarks/demo/four_builds.sh [--all-builds] [--size WxH] [--reps N]   (default 640x480, 9 reps)
+# --all-builds: eight builds, -O3 without -march and -O2 -march=native added for both compilers.
 # Builds go to build/demo-<compiler>-<level>; the renderers' own reports to <build>/demo_renderers.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-args=("$@")
 builds=("g++|-O2" "g++|-O3 -march=native" "clang++|-O2" "clang++|-O3 -march=native")
+if [[ "${1:-}" == --all-builds ]]; then
+  shift
+  builds=("g++|-O2" "g++|-O3" "g++|-O2 -march=native" "g++|-O3 -march=native"
+          "clang++|-O2" "clang++|-O3" "clang++|-O2 -march=native" "clang++|-O3 -march=native")
+fi
+args=("$@")
 declare -A ratio
 status=0
 for b in "${builds[@]}"; do

@@ -37,7 +37,7 @@ int main(int argc, char** argv)
     }
     try {
         glt::context c(glt::api::gl41_core);
-        std::printf("%s: %s\n", c.renderer().c_str(), c.version().c_str());
+        std::printf("%s: %s (EGL %s)\n", c.renderer().c_str(), c.version().c_str(), c.platform().c_str());
         glt::feedback_program seed(c, glt::seed003_source(PHONG_SEED003_VERT), "LightIntensity");
         glt::feedback_program twin(c, glt::twin_ads_source(), "LightIntensity");
         glt::feedback_program pass(c, R"(#version 410

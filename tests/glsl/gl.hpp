@@ -1,7 +1,10 @@
-// Headless OpenGL for phong's GLSL tests and benchmark: an EGL context on Mesa's surfaceless
-// platform (no window system, no GPU needed: llvmpipe), desktop GL core or GLES 3, the GL entry
-// points through eglGetProcAddress, and one helper that runs a vertex shader over N vertices with
-// transform feedback and reads its output back.
+// Headless OpenGL for phong's GLSL tests and benchmark: an EGL context with no window system,
+// desktop GL core or GLES 3, the GL entry points through eglGetProcAddress, and one helper that
+// runs a vertex shader over N vertices with transform feedback and reads its output back.
+// The display: PHONG_EGL_PLATFORM=surfaceless (Mesa's EGL_MESA_platform_surfaceless: llvmpipe, no
+// GPU needed), =device (EGL_EXT_platform_device: the first device whose display initializes,
+// hardware before Mesa's software device; NVIDIA's EGL offers only this one), or unset: surfaceless,
+// then device.
 #pragma once
 
 #include <EGL/egl.h>
@@ -74,14 +77,7 @@ class context {
 public:
     explicit context(api a) : api_(a)
     {
-        const auto get_platform_display =
-            reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-        if (!get_platform_display) throw std::runtime_error("EGL: no eglGetPlatformDisplayEXT (EGL_EXT_platform_base)");
-        display_ = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-        EGLint major = 0, minor = 0;
-        if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, &major, &minor))
-            throw std::runtime_error("EGL: no display on the surfaceless platform (EGL_MESA_platform_surfaceless; "
-                                     "Debian: libegl-mesa0 libgl1-mesa-dri), eglGetError() = " + std::to_string(eglGetError()));
+        display_ = open_display();
         const bool gl = a != api::gles30;
         if (!eglBindAPI(gl ? EGL_OPENGL_API : EGL_OPENGL_ES_API)) throw std::runtime_error("EGL: eglBindAPI failed");
         const EGLint config_attributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
@@ -125,17 +121,66 @@ public:
     context& operator=(const context&) = delete;
 
     const functions& gl() const { return gl_; }
+    /// The EGL platform the display came from: "surfaceless" or "device".
+    const std::string& platform() const { return platform_; }
     api which() const { return api_; }
     const std::string& renderer() const { return renderer_; }
     const std::string& version() const { return version_; }
 
 private:
+    /// An initialized display on the platform PHONG_EGL_PLATFORM names (see the top of this file).
+    EGLDisplay open_display()
+    {
+        const auto get_platform_display =
+            reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+        if (!get_platform_display) throw std::runtime_error("EGL: no eglGetPlatformDisplayEXT (EGL_EXT_platform_base)");
+        const char* wanted = std::getenv("PHONG_EGL_PLATFORM");
+        const std::string choice = wanted ? wanted : "";
+        if (choice != "" && choice != "surfaceless" && choice != "device")
+            throw std::runtime_error("PHONG_EGL_PLATFORM must be surfaceless or device, not '" + choice + "'");
+        const auto initialized = [](EGLDisplay d) {
+            EGLint major = 0, minor = 0;
+            return d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor) == EGL_TRUE;
+        };
+        if (choice != "device") {
+            const EGLDisplay d = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+            if (initialized(d)) {
+                platform_ = "surfaceless";
+                return d;
+            }
+        }
+        if (choice != "surfaceless") {
+            const auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+            const auto query_string = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
+            EGLDeviceEXT devices[16];
+            EGLint count = 0;
+            if (query_devices && query_devices(16, devices, &count)) {
+                const auto is_software = [&](EGLDeviceEXT dev) {
+                    const char* ext = query_string ? query_string(dev, EGL_EXTENSIONS) : nullptr;
+                    return ext && std::strstr(ext, "EGL_MESA_device_software") != nullptr;
+                };
+                for (const bool software : {false, true})
+                    for (EGLint i = 0; i < count; ++i) {
+                        if (is_software(devices[i]) != software) continue;
+                        const EGLDisplay d = get_platform_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+                        if (initialized(d)) {
+                            platform_ = "device";
+                            return d;
+                        }
+                    }
+            }
+        }
+        throw std::runtime_error("EGL: no display on the " + (choice.empty() ? std::string("surfaceless or device") : choice) +
+                                 " platform (Mesa: EGL_MESA_platform_surfaceless, Debian: libegl-mesa0 libgl1-mesa-dri; NVIDIA: "
+                                 "EGL_EXT_platform_device), eglGetError() = " + std::to_string(eglGetError()));
+    }
+
     api api_;
     EGLDisplay display_ = EGL_NO_DISPLAY;
     EGLContext context_ = EGL_NO_CONTEXT;
     functions gl_;
     GLuint framebuffer_ = 0, renderbuffer_ = 0;
-    std::string renderer_, version_;
+    std::string renderer_, version_, platform_;
 };
 
 /// A linked program: a vertex shader whose out variable `varying` (vec4, or vec3) is captured by

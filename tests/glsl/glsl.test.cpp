@@ -51,7 +51,7 @@ std::unique_ptr<glt::context> open(glt::api a)
 {
     try {
         auto c = std::make_unique<glt::context>(a);
-        MESSAGE(glt::api_name(a) << ": " << c->renderer() << ", " << c->version());
+        MESSAGE(glt::api_name(a) << ": " << c->renderer() << ", " << c->version() << " (EGL " << c->platform() << ")");
         return c;
     } catch (const std::exception& e) {
         if (glt::skip_allowed()) {
@@ -59,7 +59,7 @@ std::unique_ptr<glt::context> open(glt::api a)
             return nullptr;
         }
         const std::string what = std::string(e.what()) +
-                                 " (set EGL_PLATFORM=surfaceless; Debian: libegl-mesa0 libgl1-mesa-dri; PHONG_GLSL_ALLOW_SKIP=1 to skip)";
+                                 " (Mesa: set EGL_PLATFORM=surfaceless; Debian: libegl-mesa0 libgl1-mesa-dri; PHONG_EGL_PLATFORM=device for a GPU without the surfaceless platform; PHONG_GLSL_ALLOW_SKIP=1 to skip)";
         FAIL(what);
         return nullptr;
     }
