@@ -9,7 +9,8 @@
 #  2. shade_batch's exact and fast lanes on every class (tests/batch_accuracy.test.cpp) and the
 #     NaN-policy tests (tests/nan_policy.test.cpp) but those of NaN/inf inputs and outputs (the
 #     documented -ffinite-math-only exception), compiled with -ffast-math and linked without it
-#     (IEEE subnormals: FTZ/DAZ is item 1's exception);
+#     (IEEE subnormals: FTZ/DAZ is item 1's exception), and fast::pow_unit inlined into a loop of
+#     bases near 1 (tests/fast_math_loops.test.cpp);
 #  3. the stable mode's twofold route (double; float with precision = twofold) refuses to compile,
 #     naming the flag (tests/nan_policy/fast_math_reject.cpp).
 # clang++ uses the long-double reference (Debian's clang++ 14 has no quadmath.h).
@@ -25,8 +26,9 @@ for cxx in g++ clang++; do
   wait
   "$cxx" "${flags[@]}" -c tests/main.cpp -o "$out-main.o" &
   "$cxx" "${flags[@]}" -c tests/nan_policy.test.cpp -o "$out-nan.o" &
+  "$cxx" "${flags[@]}" -c tests/fast_math_loops.test.cpp -o "$out-loops.o" &
   wait
-  "$cxx" "$out-main.o" "$out-batch.o" "$out-nan.o" -o "$out-tests" "${libs[@]}"
+  "$cxx" "$out-main.o" "$out-batch.o" "$out-nan.o" "$out-loops.o" -o "$out-tests" "${libs[@]}"
   for args in "5000 3" "5000 4 --fast"; do
     # shellcheck disable=SC2086
     if ! "$out-table" $args --bounds >"$out-table.txt"; then grep "ABOVE BOUND" "$out-table.txt"; exit 1; fi
