@@ -2,12 +2,17 @@
 // and constant exponents, against long double's pow within the published bound. In IEEE builds this
 // is what tests/fast_math.test.cpp checks; .ci/steps/36-fast-math.sh compiles this file with
 // -ffast-math (with and without -march=native), where g++ reassociated log2's exponent k with the
-// polynomial and returned 1 for every base near 1 (docs/compilers.md, "-ffast-math").
+// polynomial and returned 1 for every base near 1, and where clang++ at the x86-64 baseline (SSE2)
+// saw through xsimd's rounding of the float lanes' 2^y (nearbyint returned y itself)
+// (docs/compilers.md, "-ffast-math").
+#include <phong/batch.hpp>
 #include <phong/fast_math.hpp>
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace {
 
@@ -36,3 +41,30 @@ TEST_CASE_TEMPLATE("fast::pow_unit in a loop of bases near 1 with constant expon
 {
     CHECK(worst_pow_unit_error<T>() <= phong::fast::pow_unit_max_rel);
 }
+
+#if PHONG_HAS_XSIMD
+// The exact mode's float lanes' power (detail/simd/lanes_power.hpp, through math_traits), bases and
+// exponents varying per lane, against long double's pow within its documented bound
+// (pow_unit_lanes_error(m log2 x), relative, where x^m >= 2^-126).
+TEST_CASE("float lanes' pow_unit in a loop: within pow_unit_lanes_error")
+{
+    using V = xsimd::batch<float>;
+    constexpr std::size_t n = V::size;
+    double worst = 0; // error / bound
+    std::vector<float> xs(n), ms(n), out(n);
+    for (int i = 0; i < 4000; ++i) {
+        for (std::size_t j = 0; j < n; ++j) {
+            xs[j] = float(1.0 - double(i * n + j) * (0.8 / (4000.0 * n)));
+            ms[j] = float(1 + (i % 50) * int(j % 4));
+        }
+        phong::math_traits<V>::pow_unit(V::load_unaligned(xs.data()), V::load_unaligned(ms.data())).store_unaligned(out.data());
+        for (std::size_t j = 0; j < n; ++j) {
+            const long double r = std::pow(static_cast<long double>(xs[j]), static_cast<long double>(ms[j]));
+            if (r < 0x1p-126L) continue;
+            const double bound = phong::detail::lanes::pow_unit_lanes_error(double(ms[j]) * std::log2(double(xs[j])));
+            worst = std::max(worst, static_cast<double>(std::fabs(static_cast<long double>(out[j]) - r) / r) / bound);
+        }
+    }
+    CHECK(worst <= 1.0);
+}
+#endif
