@@ -67,4 +67,39 @@ TEST_CASE("float lanes' pow_unit in a loop: within pow_unit_lanes_error")
     }
     CHECK(worst <= 1.0);
 }
+
+// The double lanes' exp, log, log1p and the powers built on them (math_traits over xsimd), against
+// long double: exp(y log x) carries the rounding of y = m log x times |y|, so the tolerance is
+// 16 (|y| + 1) double epsilons (a few ulp of each kernel, with a margin).
+TEST_CASE("double lanes' exp, log, log1p and pow_unit in a loop: within a few ulp")
+{
+    using V = xsimd::batch<double>;
+    using M = phong::math_traits<V>;
+    constexpr std::size_t n = V::size;
+    constexpr double eps = 0x1p-52;
+    double worst = 0; // error / tolerance
+    std::vector<double> xs(n), ms(n), o[4];
+    for (auto& v : o) v.resize(n);
+    for (int i = 0; i < 3000; ++i) {
+        for (std::size_t j = 0; j < n; ++j) {
+            xs[j] = 1.0 - double(i * n + j) * (0.9 / (3000.0 * n));
+            ms[j] = double(1 + (i % 50) * int(j % 4 + 1));
+        }
+        const V x = V::load_unaligned(xs.data()), m = V::load_unaligned(ms.data());
+        M::exp(-m * x).store_unaligned(o[0].data());
+        M::log(x).store_unaligned(o[1].data());
+        M::log1p(-x).store_unaligned(o[2].data());
+        M::pow_unit(x, m).store_unaligned(o[3].data());
+        for (std::size_t j = 0; j < n; ++j) {
+            const long double X = xs[j], Mj = ms[j], y = Mj * std::log(X);
+            const long double ref[4] = {std::exp(-static_cast<long double>(ms[j] * xs[j])), std::log(X), std::log1p(-X), std::exp(y)};
+            const long double mag[4] = {Mj * X, 1, 1, std::fabs(y)};
+            for (int k = 0; k < 4; ++k) {
+                const long double rel = std::fabs((static_cast<long double>(o[k][j]) - ref[k]) / ref[k]);
+                worst = std::max(worst, static_cast<double>(rel / (16 * eps * (mag[k] + 1))));
+            }
+        }
+    }
+    CHECK(worst <= 1.0);
+}
 #endif
