@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # -ffast-math builds (docs/compilers.md, "-ffast-math"): g++ and clang++, -O3 -march=native
-# -ffast-math, scalar and batch. What each flag does to each mode is in docs/compilers.md; here:
+# -ffast-math, scalar and batch, and shade_batch at the x86-64 baseline (item 4). What each flag
+# does to each mode is in docs/compilers.md; here:
 #  1. the accuracy table (scalar): the exact and fast modes, and float's stable mode (precision =
 #     wider), within their published bounds in every class, no NaN/inf for finite input. Linked with
 #     -ffast-math, i.e. with FTZ/DAZ: the one documented exception is attenuation_c0_zero (a light
@@ -12,7 +13,10 @@
 #     (IEEE subnormals: FTZ/DAZ is item 1's exception), and fast::pow_unit inlined into a loop of
 #     bases near 1 (tests/fast_math_loops.test.cpp);
 #  3. the stable mode's twofold route (double; float with precision = twofold) refuses to compile,
-#     naming the flag (tests/nan_policy/fast_math_reject.cpp).
+#     naming the flag (tests/nan_policy/fast_math_reject.cpp);
+#  4. item 2's batch and loop tests again without -march (SSE2, no FMA instructions), where
+#     xsimd's SSE2 kernels and the lanes' Dekker products run (one documented exception: g++'s
+#     exact double p99 in tiny_directional, tests/batch_accuracy.test.cpp).
 # clang++ uses the long-double reference (Debian's clang++ 14 has no quadmath.h).
 set -euo pipefail
 mkdir -p build/fast-math
@@ -42,4 +46,13 @@ for cxx in g++ clang++; do
     grep -q -- "-fno-associative-math" "$out-reject.txt"
   done
   echo "$cxx -ffast-math: the stable mode's twofold route refuses the build, naming -fno-associative-math"
+  # 4. the x86-64 baseline (SSE2, no FMA: xsimd's SSE2 kernels and the Dekker products of the
+  #    lanes' fma): shade_batch's lanes and fast::pow_unit in a loop, as in item 2.
+  base=(-std=gnu++20 -O3 -ffast-math -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests)
+  if [ "$cxx" = g++ ]; then base+=(-DPHONG_HAVE_QUADMATH=1); fi
+  "$cxx" "${base[@]}" -c tests/batch_accuracy.test.cpp -o "$out-base-batch.o" &
+  "$cxx" "${base[@]}" -c tests/fast_math_loops.test.cpp -o "$out-base-loops.o" &
+  wait
+  "$cxx" "$out-main.o" "$out-base-batch.o" "$out-base-loops.o" -o "$out-base-tests" "${libs[@]}"
+  "$out-base-tests" --no-intro | tail -n 2
 done
