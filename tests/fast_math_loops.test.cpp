@@ -1,10 +1,10 @@
-// fast::pow_unit inlined into a caller's loop, as a renderer writes it: a base computed in the loop
-// and constant exponents, against long double's pow within the published bound. In IEEE builds this
-// is what tests/fast_math.test.cpp checks; .ci/steps/36-fast-math.sh compiles this file with
-// -ffast-math (with and without -march=native), where g++ reassociated log2's exponent k with the
-// polynomial and returned 1 for every base near 1, and where clang++ at the x86-64 baseline (SSE2)
-// saw through xsimd's rounding of the float lanes' 2^y (nearbyint returned y itself)
-// (docs/compilers.md, "-ffast-math").
+// phong's power kernels inlined into a caller's loop, as a renderer writes it, against long double
+// within their bounds: fast::pow_unit (bases near 1, constant exponents) and the exact mode's lane
+// kernels (math_traits over xsimd: float's pow_unit, double's exp, log, log1p and pow_unit). In IEEE
+// builds this repeats tests/fast_math.test.cpp and tests/lanes_power.test.cpp; .ci/steps/36-fast-math.sh
+// compiles this file with -ffast-math, with -march=native and at the x86-64 baseline, where g++
+// reassociated log2's exponent k with the polynomial (every base near 1 gave 1), and clang++ at SSE2
+// saw through xsimd's rounding tricks (docs/compilers.md, "-ffast-math").
 #include <phong/batch.hpp>
 #include <phong/fast_math.hpp>
 
