@@ -87,10 +87,13 @@ template <class T, specular_model S, evaluation M = evaluation::stable, bool int
         CHECK(e.non_finite == 0);
 #if defined(__GNUC__) && !defined(__clang__) && defined(__ASSOCIATIVE_MATH__) && !defined(__FMA__)
         // g++ -ffast-math without FMA instructions: the exact double lanes' p99 in tiny_directional
-        // is 66 to 69 ulp against the published 60 (-fno-reciprocal-math restores 47; max_ulp and
-        // max_rel hold): the open exception of docs/compilers.md, "-ffast-math".
+        // over these 300 scenes is 69 ulp against the published 60; a p99 of 300 scenes is a noisy
+        // statistic (12 to 69 across seeds and builds, IEEE 16 to 50), and over 6000 scenes it is 35
+        // (IEEE 33). So there the p99 is checked on 3000 scenes (docs/compilers.md, "-ffast-math").
         if (M == evaluation::exact && sizeof(T) == 8 && cls == input_class::tiny_directional) {
-            CHECK(e.p99_ulp <= 1.2 * bound.p99_ulp);
+            auto more = make_class<T>(cls, 3000, 500 + c);
+            std::size_t more_disagree = 0;
+            CHECK(measure_batch<F>(more, more_disagree).p99_ulp <= bound.p99_ulp);
         } else {
             CHECK(e.p99_ulp <= bound.p99_ulp);
         }
@@ -186,10 +189,13 @@ TEST_CASE_TEMPLATE("shade_batch stable: a grazing light's specular cosine near 0
         CHECK(e.non_finite == 0);
 #if defined(__GNUC__) && !defined(__clang__) && defined(__ASSOCIATIVE_MATH__) && !defined(__FMA__)
         // g++ -ffast-math without FMA instructions: the exact double lanes' p99 in tiny_directional
-        // is 66 to 69 ulp against the published 60 (-fno-reciprocal-math restores 47; max_ulp and
-        // max_rel hold): the open exception of docs/compilers.md, "-ffast-math".
+        // over these 300 scenes is 69 ulp against the published 60; a p99 of 300 scenes is a noisy
+        // statistic (12 to 69 across seeds and builds, IEEE 16 to 50), and over 6000 scenes it is 35
+        // (IEEE 33). So there the p99 is checked on 3000 scenes (docs/compilers.md, "-ffast-math").
         if (M == evaluation::exact && sizeof(T) == 8 && cls == input_class::tiny_directional) {
-            CHECK(e.p99_ulp <= 1.2 * bound.p99_ulp);
+            auto more = make_class<T>(cls, 3000, 500 + c);
+            std::size_t more_disagree = 0;
+            CHECK(measure_batch<F>(more, more_disagree).p99_ulp <= bound.p99_ulp);
         } else {
             CHECK(e.p99_ulp <= bound.p99_ulp);
         }
