@@ -104,10 +104,8 @@ struct spot_cone {
 /// cutoff, then 0^e (1 for e = 0). e = 0 gives a hard-edged cone of strength 1. spot <= 1: the
 /// base is clamped at 1, since rounding (or an axis accepted by validate within 1e-3 of unit
 /// length) can give c slightly above 1, and (1 + eps)^e overflows for large e.
-// Not PHONG_INLINE: left to the compiler (docs/compilers.md, "Inlining": forcing this one exposed a
-// g++ 12 -O3 vectorization that took the stable route with a spot past its 1-ulp bound).
 template <class T, glm::qualifier Q>
-PHONG_HD inline constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
+PHONG_INLINE constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
 {
     const mask_t<T> no_cone = cos_cutoff <= T(-1);
     if (math_traits<T>::all(no_cone)) return T(1); // 180 degrees: skip the power (every lane of a batch)
@@ -120,9 +118,8 @@ PHONG_HD inline constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::v
 /// spot = t^2 (3 - 2 t) (smoothstep), c = dot(-l, s).
 /// Pre: l, s unit; cos_outer <= cos_inner. Edge: cos_inner == cos_outer gives a hard edge
 /// (1 where c >= cos_outer, else 0), no division by zero; cos_outer = -1 and cos_inner = -1 give 1.
-// Not PHONG_INLINE: as spot_opengl.
 template <class T, glm::qualifier Q>
-PHONG_HD inline constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T cos_inner, T cos_outer)
+PHONG_INLINE constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T cos_inner, T cos_outer)
 {
     const T c = -phong::dot(l, s);
     const T width = cos_inner - cos_outer;

@@ -94,9 +94,12 @@ PHONG_INLINE constexpr V log2_estrin(V x)
     // nonnegative for every positive normal x, so a logical shift (unsigned) does.
     const U biased = (u - U(fmt::sqrt_half_bits) + U(fmt::one_bits)) >> fmt::mantissa_bits;
     const V f = L::from_bits(u - (biased << fmt::mantissa_bits) + U(fmt::one_bits)); // x / 2^k in [sqrt(1/2), sqrt(2))
-    // k as a V without an integer conversion: the bits of shift + (k + bias), minus shift + bias
-    // (opaque: g++ -ffast-math otherwise rewrites it on SSE2 lanes into a wrong k).
-    const V k = phong::detail::ieee::opaque(L::from_bits(biased + L::bits(V(fmt::shift)))) - V(fmt::shift + S(fmt::bias));
+    // k as a V without an integer conversion: the bits of shift + (k + bias), minus shift + bias.
+    // Both steps opaque: the first, or g++ -ffast-math rewrites it on SSE2 lanes into a wrong k;
+    // the difference, or it reassociates r P + (that number - (shift + bias)) into
+    // (r P + that number) - (shift + bias), where r P is lost in the rounding to shift's ulp 1.
+    const V k = phong::detail::ieee::opaque(phong::detail::ieee::opaque(L::from_bits(biased + L::bits(V(fmt::shift)))) -
+                                            V(fmt::shift + S(fmt::bias)));
     const V r = phong::detail::ieee::opaque(f - V(S(1))); // the reduced argument, not re-expanded as f P - P
     // Estrin's scheme: three dependent multiply-adds instead of Horner's seven (the power's latency
     // is what a light loop waits for; the same number of operations within two multiplications).

@@ -44,7 +44,18 @@ class scene_gen {
 public:
     explicit scene_gen(std::uint64_t seed) : rng_(seed) {}
 
-    T uniform(double lo, double hi) { return T(std::uniform_real_distribution<double>(lo, hi)(rng_)); }
+    /// d rounded once to T, through a volatile, so that the scene holds T values whatever the
+    /// optimizer does: g++ 12 (-O2 and up) folds a rounding to float and phong's widening back to
+    /// double, once SLP-vectorized in pairs, (vector(2) double)(vector(2) float) x, to x (a wrong-code
+    /// fold of its value numbering), so with shade<F> inlined into the generating loop the wider
+    /// route saw the unrounded doubles (docs/compilers.md, "Inlining").
+    static T rounded(double d)
+    {
+        volatile T r = static_cast<T>(d);
+        return r;
+    }
+
+    T uniform(double lo, double hi) { return rounded(std::uniform_real_distribution<double>(lo, hi)(rng_)); }
     int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
     bool coin(double p = 0.5) { return std::bernoulli_distribution(p)(rng_); }
 
@@ -60,7 +71,7 @@ public:
             x = g(rng_), y = g(rng_), z = g(rng_);
             n = std::sqrt(x * x + y * y + z * z);
         } while (n < 1e-3);
-        return {T(x / n), T(y / n), T(z / n)};
+        return {rounded(x / n), rounded(y / n), rounded(z / n)};
     }
 
     /// A surface point in front of the eye (eye coordinates look down -z).
@@ -89,10 +100,10 @@ public:
         if (directional) {
             const glm::vec<3, T> d = direction();
             const double s = uniform(0.5, 4);
-            L.position = {T(d.x * s), T(d.y * s), T(d.z * s), T(0)};
+            L.position = {rounded(d.x * s), rounded(d.y * s), rounded(d.z * s), T(0)};
             to_light = glm::vec<3, double>(L.position);
         } else {
-            const glm::vec<3, T> p = {T(Q.x + uniform(-5, 5)), T(Q.y + uniform(-5, 5)), T(Q.z + uniform(-5, 5))};
+            const glm::vec<3, T> p = {rounded(Q.x + uniform(-5, 5)), rounded(Q.y + uniform(-5, 5)), rounded(Q.z + uniform(-5, 5))};
             // validate(light) accepts w = 1 only for a positional light (issue 15): the draws that
             // picked w = 0.5 or 2 here are kept, so the rest of the random stream is unchanged.
             if (any_w && coin(0.3)) (void)coin();
@@ -106,16 +117,16 @@ public:
         L.attenuation.linear = uniform(0, 0.5);
         L.attenuation.quadratic = uniform(0, 0.25);
         const double dist = std::sqrt(to_light.x * to_light.x + to_light.y * to_light.y + to_light.z * to_light.z);
-        L.attenuation.range = T(dist * double(uniform(1.1, 3)));
+        L.attenuation.range = rounded(dist * double(uniform(1.1, 3)));
         // Spot axis: from the light toward Q, tilted by up to ~25 degrees.
         glm::vec<3, double> axis = -to_light / dist;
         const glm::vec<3, T> jitter = direction();
         axis += glm::vec<3, double>(jitter) * double(uniform(0, 0.45));
         axis /= std::sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
-        const glm::vec<3, T> axis_t(axis);
+        const glm::vec<3, T> axis_t(rounded(axis.x), rounded(axis.y), rounded(axis.z));
         const phong::spot_cone<T> gl = phong::spot_cone<T>::opengl(axis_t, uniform(0, 8), coin(0.2) ? T(180) : uniform(15, 90));
         const double inner = double(uniform(2, 30));
-        const phong::spot_cone<T> sm = phong::spot_cone<T>::smooth(axis_t, T(inner), T(inner + double(uniform(0, 30))));
+        const phong::spot_cone<T> sm = phong::spot_cone<T>::smooth(axis_t, rounded(inner), rounded(inner + double(uniform(0, 30))));
         L.spot = gl;
         L.spot.cos_inner = sm.cos_inner;
         L.spot.cos_outer = sm.cos_outer;

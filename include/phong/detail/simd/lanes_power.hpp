@@ -96,7 +96,14 @@ template <class V, bool Finite = false> PHONG_LANES_INLINE V exp2_horner(const V
     constexpr float y_min = scalef ? -150.0f : -127.0f;
     V y = y_in;
     if constexpr (!(Finite && scalef)) y = xsimd::max(y_in, V(y_min));
+#if PHONG_FP_BARRIER
+    // Where the compiler may reassociate: y rounded by the shift (ieee.hpp), |y| <= 150 < 2^22.
+    // xsimd's nearbyint without a rounding instruction (SSE2) is the same trick with a barrier
+    // that clang -ffast-math sees through, which gave k = y.
+    const V k = ieee::round_by_shift(y, V(0x1.8p23f)).value;
+#else
     const V k = xsimd::nearbyint(y);
+#endif
     const V r = ieee::opaque(y - k); // -ffast-math: not re-expanded as y R - k R
     V q(exp2_coefficients[0]);
     for (int j = 1; j < 6; ++j) q = fused(q, r, V(exp2_coefficients[j]));

@@ -14,6 +14,17 @@
 
 #include "diagnostics_push.hpp"
 
+#if PHONG_FP_BARRIER && (defined(__x86_64__) || defined(__i386__)) && !defined(__SSE4_1__)
+#  define PHONG_DETAIL_LANEWISE_EXP 1 // math_traits<batch>::exp below
+#else
+#  define PHONG_DETAIL_LANEWISE_EXP 0
+#endif
+#if PHONG_FP_BARRIER && (defined(__x86_64__) || defined(__i386__)) && !defined(__AVX512DQ__)
+#  define PHONG_DETAIL_LANEWISE_LOG 1 // math_traits<batch>::log and log1p below
+#else
+#  define PHONG_DETAIL_LANEWISE_LOG 0
+#endif
+
 namespace phong {
 
 /// math_traits for xsimd batches: every kernel of math.hpp, lane-wise. exp, log and log1p are
@@ -96,21 +107,49 @@ struct math_traits<xsimd::batch<T, A>> {
     /// double, or pow(x, y) with y = 1e38 in float. The clamp cannot change a result: xsimd's exp
     /// returns exactly 0 for every x <= minlog and +inf for every x >= maxlog (its final selects),
     /// so exp(clamp(x)) == exp(x) for every non-NaN x; and exp(NaN) = NaN here as before.
+    /// -ffast-math on x86 (PHONG_FP_BARRIER): two of xsimd 8.1's rounding tricks have no barrier
+    /// that clang++ respects. Without SSE4.1, exp rounds x / ln 2 by (v + 2^52) - 2^52 behind a
+    /// volatile read back through a non-volatile cast, folded to v; below AVX-512DQ, double's log
+    /// and log1p convert their int64 exponent to double by magic-number sums, reassociated into a
+    /// wrong exponent. There these kernels run std:: lane by lane (slower, in those builds only).
+    template <class F> PHONG_LANES_INLINE static V lanewise(const V& x, F f)
+    {
+        alignas(A::alignment()) T lanes[V::size];
+        x.store_aligned(lanes);
+        for (T& e : lanes) e = f(e);
+        return V::load_aligned(lanes);
+    }
     PHONG_LANES_INLINE static V exp(const V& x)
     {
         const V lo = xsimd::constants::minlog<V>(), hi = xsimd::constants::maxlog<V>();
         const V clamped = xsimd::select(x > lo, xsimd::select(x < hi, x, hi), lo); // NaN: lo
+#if PHONG_DETAIL_LANEWISE_EXP
+        return xsimd::select(x == x, lanewise(clamped, [](T e) { return std::exp(e); }), x);
+#else
         return xsimd::select(x == x, xsimd::exp(clamped), x);
+#endif
     }
     /// log and log1p: xsimd's (no integer conversion of the argument: defined for every input).
-    PHONG_LANES_INLINE static V log(const V& x) { return xsimd::log(x); }
-    PHONG_LANES_INLINE static V log1p(const V& x) { return xsimd::log1p(x); }
+    PHONG_LANES_INLINE static V log(const V& x)
+    {
+#if PHONG_DETAIL_LANEWISE_LOG
+        if constexpr (!float_lanes) return lanewise(x, [](T e) { return std::log(e); });
+#endif
+        return xsimd::log(x);
+    }
+    PHONG_LANES_INLINE static V log1p(const V& x)
+    {
+#if PHONG_DETAIL_LANEWISE_LOG
+        if constexpr (!float_lanes) return lanewise(x, [](T e) { return std::log1p(e); });
+#endif
+        return xsimd::log1p(x);
+    }
     /// x^y for x in [0, 1], y >= 0 (the lighting model's domain): exp(y log x) with xsimd's
     /// kernels (exp clamped as above: y log x is -inf or below -1e300 for large y), pow(0, 0) = 1,
     /// pow(0, y > 0) = 0 (xsimd's own pow returns 0 for pow(0, 0)).
     PHONG_LANES_INLINE static V pow(const V& x, const V& y)
     {
-        const V p = exp(y * xsimd::log(xsimd::select(x > V(T(0)), x, V(T(1)))));
+        const V p = exp(y * log(xsimd::select(x > V(T(0)), x, V(T(1)))));
         return xsimd::select(x > V(T(0)), p, detail::power_of_zero(y));
     }
     /// x^m for x in [0, 1], m >= 0 (the specular and spot powers of the exact mode). Float lanes:
@@ -142,7 +181,7 @@ struct math_traits<xsimd::batch<T, A>> {
         if constexpr (float_lanes) return detail::lanes::pow_one_minus(xsimd::max(x, V(T(0))), m);
         const V xc = xsimd::min(x, V(T(1)));
         const auto inside = xc < V(T(1));
-        const V lg = xsimd::log1p(-xsimd::select(inside, xc, V(T(0))));
+        const V lg = log1p(-xsimd::select(inside, xc, V(T(0))));
         const V r = exp(m * lg);
         return xsimd::select(inside, r, detail::power_of_zero(m));
     }
