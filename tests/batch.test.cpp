@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <type_traits>
@@ -644,5 +645,57 @@ TEST_CASE_TEMPLATE("shade_batch lanes: normal_square is exactly 'min <= dd <= ma
             CHECK((got_and[k] == T(1)) == (expected && on_values[k] == T(1)));
         }
     }
+}
+#endif
+
+#if PHONG_LANES_WITHOUT_FMA
+namespace {
+/// shade_batch on aos_points with per-point views, light masks and a material table, against
+/// shade<F> point by point: equal bit for bit (x86 without FMA instructions: shade_batch shades
+/// point by point there, PHONG_LANES_WITHOUT_FMA).
+template <features F, class T>
+void one_by_one_equals_shade()
+{
+    std::mt19937 rng(2711);
+    std::uniform_real_distribution<T> u(T(-1), T(1));
+    const std::size_t n = 37;
+    std::vector<glm::vec<3, T>> p(n), nrm(n), v(n), out(n);
+    std::vector<std::uint64_t> masks(n);
+    std::vector<std::uint32_t> ids(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        p[i] = {u(rng), u(rng), u(rng) - T(3)};
+        nrm[i] = {u(rng), u(rng), u(rng) + T(1.5)};
+        v[i] = -p[i];
+        masks[i] = rng() & 7u;
+        ids[i] = std::uint32_t(rng() % 2);
+    }
+    std::vector<material<T>> table(2);
+    table[1].shininess = T(64);
+    table[1].ks = glm::vec<3, T>(T(0.7));
+    std::vector<light<T>> lights{light<T>::with_strength({1, 2, 1, 1}, glm::vec<3, T>(1)),
+                                 light<T>::with_strength({-1, 0, 1, 0}, glm::vec<3, T>(T(0.5))),
+                                 light<T>::with_strength({0, -2, 0, 1}, glm::vec<3, T>(T(0.3)))};
+    const environment<T> env{.ambient = glm::vec<3, T>(T(0.1))};
+    shade_batch<F>(aos_points<T>{.positions = p, .normals = nrm, .views = v, .light_masks = masks},
+                   material_table<T>{.materials = table, .ids = ids}, std::span<const light<T>>(lights),
+                   std::span<glm::vec<3, T>>(out), env);
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec<3, T> expected = shade<F>(p[i], nrm[i], v[i], table[ids[i]], masked(lights, masks[i]), env);
+        CAPTURE(i);
+        CHECK(std::memcmp(&expected, &out[i], sizeof expected) == 0);
+    }
+}
+} // namespace
+
+TEST_CASE_TEMPLATE("shade_batch without FMA instructions: shade<F> point by point, bit for bit", T, float, double)
+{
+    constexpr features given = [] {
+        features f = presets::blinn_phong_per_light_ambient;
+        f.view = view_model::given;
+        return f;
+    }();
+    one_by_one_equals_shade<given, T>();
+    one_by_one_equals_shade<presets::with_mode(given, evaluation::stable), T>();
+    one_by_one_equals_shade<presets::with_mode(given, evaluation::fast), T>();
 }
 #endif

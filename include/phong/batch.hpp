@@ -28,7 +28,9 @@ namespace phong {
 /// front_facing[i]) for every i. The kernels are shade<F>'s own templates (detail::prepare,
 /// add_light, finish) run on simd_batch<T>, batch_width<T> points per step; a tail shorter than
 /// the width goes through padded copies. Lights, material and environment are broadcast to the
-/// lanes once per call.
+/// lanes once per call. On x86 without FMA instructions (PHONG_LANES_WITHOUT_FMA: the x86-64
+/// baseline) the points are shaded one by one through shade<F>'s route instead: the same colours
+/// as shade<F>, bit for bit.
 ///   positions, normals: structure of arrays (x, y, z spans of length N), as shade<F> takes them;
 ///   mat: one material for all points, or a span of N materials (one per point);
 ///   out: SoA channels (soa_rgba: r, g, b, and a when F.alpha), or a span of N interleaved

@@ -84,15 +84,15 @@ PHONG_INLINE constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>&
 }
 
 /// prepare, every light, finish: the terms of the model at one point in arithmetic type T (the
-/// lights' scalar type may be narrower: the wider route).
-template <features F, class T, glm::qualifier Q, class Lights>
+/// lights' scalar type may be narrower: the wider route). Check: as each_light's.
+template <features F, bool Check = true, class T, glm::qualifier Q, class Lights>
 PHONG_INLINE constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                 const glm::vec<3, T, Q>& given_view, const material<T, Q>& mat,
                                                 Lights&& lights, const environment<T, Q>& env, bool front_facing)
 {
     const frame_t<F, T, Q> s = detail::prepare<F>(position, normal, given_view, env, front_facing);
     light_sums<T, Q> sums{};
-    add_lights<F>(sums, s, static_cast<Lights&&>(lights), mat.shininess);
+    add_lights<F, Check>(sums, s, static_cast<Lights&&>(lights), mat.shininess);
     return terms_of<F>(sums, s, mat, env);
 }
 
@@ -115,8 +115,9 @@ PHONG_INLINE constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q
 }
 
 /// shade<F>'s body for either view argument: parameters checked, then the route (float's stable
-/// mode: the exact route in double). The terms come in the arithmetic type.
-template <features F, class T, glm::qualifier Q, class Lights>
+/// mode: the exact route in double). The terms come in the arithmetic type. Check = false: no
+/// check of the parameters and lights (shade_batch checked them once per call).
+template <features F, bool Check = true, class T, glm::qualifier Q, class Lights>
 PHONG_INLINE constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                                  const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
                                                                  Lights&& lights, const environment<T, Q>& env, bool front_facing)
@@ -126,13 +127,13 @@ PHONG_INLINE constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::
     if constexpr (!light_list<Lights>) {
         return {}; // not instantiated further: the static_assert above is the one error reported
     } else if constexpr (widened<F, T>) {
-        check_inputs<F>(normal, view, mat, env);
+        if constexpr (Check) check_inputs<F>(normal, view, mat, env);
         using W = double;
-        return evaluate<exact_of<F>>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view),
+        return evaluate<exact_of<F>, Check>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view),
                                      widen<W>(mat), static_cast<Lights&&>(lights), widen<W>(env), front_facing);
     } else {
-        check_inputs<F>(normal, view, mat, env);
-        return evaluate<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing);
+        if constexpr (Check) check_inputs<F>(normal, view, mat, env);
+        return evaluate<F, Check>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing);
     }
 }
 

@@ -110,9 +110,19 @@ PHONG_INLINE constexpr void each_array_light(Sums& sums, const Frame& s, const L
     ((check_light(lights[I]), detail::add_light<F>(sums, s, lights[I], m, unweighted{})), ...);
 }
 
+/// check_light(L) where Check (shade_batch checks its lights once per call, not per point).
+template <bool Check, class Light>
+PHONG_INLINE constexpr void check_light_if(const Light& L)
+{
+    if constexpr (Check) check_light(L);
+    else (void)L;
+}
+
 /// Every light's terms added to the sums: a std::array unrolled at compile time, a masked or
-/// weighted list (visibility.hpp), or any input range of lights (views included).
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Frame, class Lights>
+/// weighted list (visibility.hpp), or any input range of lights (views included). Check: each
+/// light checked against validate() as it is shaded (check_light; false: checked by the caller).
+template <features F, bool Check = true, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Frame,
+          class Lights>
 PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&& lights, T m) // Frame: frame_t<F, T, Q>
 {
     using R = std::remove_cvref_t<Lights>;
@@ -121,7 +131,7 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
     } else if constexpr (is_masked<R>::value) {
         std::uint64_t bits = lights.mask;
         for (auto&& L : lights.lights) {
-            check_light(L);
+            check_light_if<Check>(L);
             if (bits & 1u) detail::add_light<F>(sums, s, L, m, unweighted{});
             bits >>= 1;
         }
@@ -129,7 +139,7 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
         std::size_t i = 0;
         for (auto&& L : lights.lights) {
             PHONG_ASSERT(i < lights.weights.size(), "phong::weighted: fewer weights than lights");
-            check_light(L);
+            check_light_if<Check>(L);
             const auto weight = lights.weights[i++];
             check_weight(weight);
             if (weight != 0) detail::add_light<F>(sums, s, L, m, weight); // 0: the light is not seen
@@ -138,9 +148,9 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
         // The same loop twice, so each copy is compiled knowing whether the point has a normal
         // and a view vector (g++ does not unswitch it by itself).
         if (s.defined) {
-            for (auto&& L : lights) check_light(L), detail::add_light<F>(sums, s, L, m, unweighted{});
+            for (auto&& L : lights) check_light_if<Check>(L), detail::add_light<F>(sums, s, L, m, unweighted{});
         } else {
-            for (auto&& L : lights) check_light(L), detail::add_light<F>(sums, s, L, m, unweighted{});
+            for (auto&& L : lights) check_light_if<Check>(L), detail::add_light<F>(sums, s, L, m, unweighted{});
         }
     } else {
         for (auto&& L : lights) detail::add_light<F>(sums, s, L, m, unweighted{});
@@ -151,17 +161,17 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
 /// shade_batch with one material). A point without a view vector (at the
 /// eye, or a zero given v) keeps its diffuse term, which does not need v, and has no specular
 /// term: scalars run it with F's specular term removed (no per-light test), SIMD lanes mask it.
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Lights>
+template <features F, bool Check = true, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Lights>
 PHONG_INLINE constexpr void add_lights(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
 {
     if constexpr (F.specular != specular_model::none && std::is_floating_point_v<T>) {
         if (s.defined && !s.sees_viewer) [[unlikely]] {
             constexpr features G = without_specular<F>; // a local constant: nvcc 13 cannot take the variable template as an argument
-            each_light<G>(sums, s, static_cast<Lights&&>(lights), m);
+            each_light<G, Check>(sums, s, static_cast<Lights&&>(lights), m);
             return;
         }
     }
-    each_light<F>(sums, s, static_cast<Lights&&>(lights), m);
+    each_light<F, Check>(sums, s, static_cast<Lights&&>(lights), m);
 }
 
 } // namespace phong::detail

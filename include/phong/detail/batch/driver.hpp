@@ -200,18 +200,58 @@ std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t cou
 #  pragma GCC diagnostic pop
 #endif
 
-/// shade_batch over soa_points or aos_points: preconditions checked (debug builds), lights,
-/// shared material (or a material table) and environment broadcast once, then
-/// shade_points_steps per call_steps W points. Materials: material<T, Q> (one for all), a span of N
-/// materials (one per point) or material_table<T, Q> (a table and N ids).
+/// shade_batch point by point through shade<F>'s route (PHONG_LANES_WITHOUT_FMA: x86 without FMA
+/// instructions), after check_batch_inputs: no check per point. A table's id past the table takes
+/// the last entry, as the lanes do.
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
-void shade_points_impl(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
-                       const Output& out, const environment<T, Q>& env)
+void shade_points_one_by_one(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
+                             const Output& out, const environment<T, Q>& env, std::size_t n)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    const auto at = [](const auto& xyz, std::size_t i) -> vec3 {
+        if constexpr (requires { xyz.x; }) return vec3(xyz.x[i], xyz.y[i], xyz.z[i]);
+        else return vec3(xyz[i]);
+    };
+    const auto material_at = [&materials](std::size_t i) -> const material<T, Q>& {
+        if constexpr (std::is_same_v<Materials, material<T, Q>>) return materials;
+        else if constexpr (std::is_same_v<Materials, material_table<T, Q>>)
+            return materials.materials[std::min<std::size_t>(materials.ids[i], materials.materials.size() - 1)];
+        else return materials[i];
+    };
+    const auto run = [&]<bool Masks>() { // the loop twice: a call without masks tests nothing per point
+        for (std::size_t i = 0; i < n; ++i) {
+            const vec3 position = at(points.positions, i), normal = at(points.normals, i);
+            vec3 view(T(0));
+            if constexpr (F.view == view_model::given) view = at(points.views, i);
+            bool front_facing = true;
+            if constexpr (F.two_sided == facing::flag) front_facing = points.front_facing.empty() || points.front_facing[i];
+            const material<T, Q>& mat = material_at(i);
+            color<F, T, Q> c;
+            if constexpr (Masks)
+                c = color<F, T, Q>(total_of<F>(shade_at<F, false>(position, normal, view, mat, masked(lights, points.light_masks[i]), env, front_facing)));
+            else c = color<F, T, Q>(total_of<F>(shade_at<F, false>(position, normal, view, mat, lights, env, front_facing)));
+            if constexpr (std::is_same_v<Output, soa_rgba<T>>) {
+                out.r[i] = c.r;
+                out.g[i] = c.g;
+                out.b[i] = c.b;
+                if constexpr (F.alpha) out.a[i] = c.a;
+            } else {
+                out[i] = c;
+            }
+        }
+    };
+    if (points.light_masks.empty()) run.template operator()<false>();
+    else run.template operator()<true>();
+}
+
+/// shade_points_impl's shading on the lanes of simd_batch<T>: lights, shared material (or a
+/// material table) and environment broadcast once, then shade_points_steps per call_steps W points.
+template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
+void shade_points_lanes(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
+                        const Output& out, const environment<T, Q>& env, std::size_t n)
 {
     using V = simd_batch<T>;
     constexpr std::size_t W = batch_width<T>;
-    const std::size_t n = vec3_count(points.positions);
-    if (!check_batch_inputs<F>(points, materials, lights, out, env, n)) return;
 
     bool fold = false; // one material: folded into the lights where no product is lost
     if constexpr (std::is_same_v<Materials, material<T, Q>>) fold = foldable(materials, lights);
@@ -244,6 +284,20 @@ void shade_points_impl(const Points& points, const Materials& materials, std::sp
     } else {
         run(per_point_lanes<V, T, Q>{materials});
     }
+}
+
+/// shade_batch over soa_points or aos_points: preconditions checked (check_batch_inputs), then the
+/// lanes (shade_points_lanes), or point by point where the lanes would have no fused multiply-add
+/// (PHONG_LANES_WITHOUT_FMA: shade_points_one_by_one). Materials: material<T, Q> (one for all), a
+/// span of N materials (one per point) or material_table<T, Q> (a table and N ids).
+template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
+void shade_points_impl(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,
+                       const Output& out, const environment<T, Q>& env)
+{
+    const std::size_t n = vec3_count(points.positions);
+    if (!check_batch_inputs<F>(points, materials, lights, out, env, n)) return;
+    if constexpr (PHONG_LANES_WITHOUT_FMA) shade_points_one_by_one<F>(points, materials, lights, out, env, n);
+    else shade_points_lanes<F>(points, materials, lights, out, env, n);
 }
 
 /// The soa3 overloads: shade_points_impl on soa_points without views or masks.

@@ -8,7 +8,7 @@
 // lane (docs/batch.md). Define PHONG_NO_XSIMD to force the scalar fallback.
 //
 // Defines PHONG_HAS_XSIMD (0 or 1), PHONG_LANES_INLINE, the fused multiply-add on lanes
-// (detail::simd::fma), simd_arch, simd_batch<T> and batch_width<T>.
+// (detail::simd::fma), simd_arch, simd_batch<T>, batch_width<T> and PHONG_LANES_WITHOUT_FMA.
 #pragma once
 
 #include "../config.hpp"
@@ -118,6 +118,20 @@ template <class T> using simd_batch = T;
 
 /// Lanes per step of shade_batch for T.
 template <class T> inline constexpr std::size_t batch_width = sizeof(simd_batch<T>) / sizeof(T);
+
+/// 1 where simd_batch's lanes would have no fused multiply-add: x86 compiled without FMA
+/// instructions (the x86-64 baseline, no -march; any -m flags short of FMA). The lanes' exact and stable
+/// kernels need multiply-adds rounded once (the power's polynomials, the Newton step of 1/|d|, the
+/// error-free products), which detail::simd::fma then forms by Dekker's split at many times the
+/// cost: such lanes ran shade_batch at about half the speed of shade<F> point by point
+/// (docs/demo.md). There shade_batch shades point by point with shade<F>'s own route (the same
+/// colours as shade<F>, bit for bit). Define PHONG_SIMD_WITHOUT_FMA to keep the lanes anyway.
+#if PHONG_HAS_XSIMD && (defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86)) && \
+    !defined(__FMA__) && !defined(__AVX512F__) && !defined(PHONG_SIMD_WITHOUT_FMA)
+#  define PHONG_LANES_WITHOUT_FMA 1
+#else
+#  define PHONG_LANES_WITHOUT_FMA 0
+#endif
 
 } // namespace phong
 
