@@ -46,13 +46,17 @@ for cxx in g++ clang++; do
     grep -q -- "-fno-associative-math" "$out-reject.txt"
   done
   echo "$cxx -ffast-math: the stable mode's twofold route refuses the build, naming -fno-associative-math"
-  # 4. the x86-64 baseline (SSE2, no FMA: xsimd's SSE2 kernels and the Dekker products of the
-  #    lanes' fma): shade_batch's lanes and fast::pow_unit in a loop, as in item 2.
+  # 4. the x86-64 baseline (SSE2, no FMA): shade_batch point by point (its route there), and with
+  #    -DPHONG_SIMD_WITHOUT_FMA on the SSE2 lanes (xsimd's SSE2 kernels and the Dekker products of
+  #    the lanes' fma); fast::pow_unit in a loop, as in item 2.
   base=(-std=gnu++20 -O3 -ffast-math -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests)
   if [ "$cxx" = g++ ]; then base+=(-DPHONG_HAVE_QUADMATH=1); fi
   "$cxx" "${base[@]}" -c tests/batch_accuracy.test.cpp -o "$out-base-batch.o" &
-  "$cxx" "${base[@]}" -c tests/fast_math_loops.test.cpp -o "$out-base-loops.o" &
+  "$cxx" "${base[@]}" -DPHONG_SIMD_WITHOUT_FMA -c tests/batch_accuracy.test.cpp -o "$out-base-lanes-batch.o" &
   wait
+  "$cxx" "${base[@]}" -c tests/fast_math_loops.test.cpp -o "$out-base-loops.o"
   "$cxx" "$out-main.o" "$out-base-batch.o" "$out-base-loops.o" -o "$out-base-tests" "${libs[@]}"
+  "$cxx" "$out-main.o" "$out-base-lanes-batch.o" -o "$out-base-lanes-tests" "${libs[@]}"
   "$out-base-tests" --no-intro | tail -n 2
+  "$out-base-lanes-tests" --no-intro | tail -n 2
 done
