@@ -25,8 +25,8 @@
 /// the inliner's size heuristics (which differ between compilers and between -O2 and -O3).
 /// It includes PHONG_HD. g++ and clang++: inline __attribute__((always_inline)) when optimizing
 /// (-O1 and up: __OPTIMIZE__; at -O0, where nothing is fast anyway, plain inline, so that debug
-/// builds compile as quickly as without it; and under AddressSanitizer, whose checks on one fully
-/// inlined shading loop make a sanitized build much slower to compile and to run, docs/compilers.md);
+/// builds compile as quickly as without it; and under AddressSanitizer, whose checks multiply
+/// with every inlined copy of the shading loop: measurements in docs/compilers.md, "Inlining");
 /// MSVC: __forceinline; CUDA: __host__ __device__ __forceinline__. Define PHONG_NO_FORCE_INLINE to get
 /// plain `inline` (e.g. to step through phong in a debugger), or define PHONG_INLINE yourself
 /// before including any phong header. always_inline and constexpr combine: constant evaluation

@@ -229,7 +229,8 @@ PHONG_INLINE constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 /// the same clamped cosine (SIMD lanes with one integer shininess m <= fast::pow_integer_max_exponent:
 /// fast::pow_integer, within the same bound). Float SIMD lanes keep cosine_power: the exact mode's power there already
 /// is a polynomial kernel of the same cost (detail/simd/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
-/// fast::pow_unit_max_rel where x^m >= 2^-24), and fast::pow_unit was slower there (docs/batch.md).
+/// fast::pow_unit_max_rel where x^m >= 2^-24), so fast::pow_unit would add work, not remove it
+/// (measured in docs/batch.md).
 template <evaluation M, class T>
 PHONG_INLINE constexpr T route_cosine_power(T x, T scale, T m)
 {
@@ -376,8 +377,8 @@ PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, 
         // The fast power x^n, n >= 1, of the base c zeroed where the lane is off or c <= 0 (then
         // its power is 0): the mask goes into the product that forms the base, and max(c, 0) in
         // place of a compare (on AVX-512 a compare takes a multiplier slot, a max does not) and of
-        // a skip of the steps with no c > 0: every step pays the power (faster all the same:
-        // docs/batch.md). The sum gains +0 where it skipped: the same
+        // a skip of the steps with no c > 0: every step pays the power, a few multiplications
+        // (measured in docs/batch.md). The sum gains +0 where it skipped: the same
         // bits. The base is not clamped to 1: lanes that are on have unit n, d / |d| and v, so
         // c <= 1 up to its rounding error, which c^n amplifies by n with or without a clamp
         // (accuracy.hpp's fast bound), and c^n stays finite (|c| <= 3 |d| for unit vectors); c is

@@ -1,10 +1,10 @@
 // phong: x^m for a base in [0, 1] and an exponent m >= 0, in double arithmetic, inline.
 // SPDX-License-Identifier: MIT
 //
-// The specular and spot powers are the one transcendental every lit pair needs. A call to libm's
-// pow costs more than the call itself: every vector register is caller-saved, so a light loop
-// spills its sums and unit vectors around each call. This kernel is straight-line code with two
-// small tables (2 KiB + 512 B), usable in constant evaluation:
+// The specular and spot powers are the one transcendental every lit pair needs. Why not libm's
+// pow: across a call every vector register is caller-saved, so a light loop must keep its sums
+// and unit vectors in memory (docs/design.md). This kernel is straight-line code with two small
+// tables (2 KiB + 512 B), usable in constant evaluation:
 //   x = 2^k z, z in [0.6875, 1.375)  (offset so that x near 1 has k = 0: no cancellation with k)
 //   log2 x = k + log2(c_i) + log2(1 + r),  r = z / c_i - 1,  |r| <= 2^-7,  c_i: 128 table points
 //   2^y = 2^(n/64) 2^t,  n = round(64 y),  |t| <= 2^-7,  2^(j/64): 64 table entries
