@@ -43,25 +43,15 @@ struct math_traits<xsimd::batch<T, A>> {
     /// (< 2 ulp); elsewhere 1/sqrt(x). rsqrt(0) = inf, rsqrt(inf) = 0.
     PHONG_LANES_INLINE static V rsqrt(const V& x)
     {
-        if constexpr (float_lanes && std::is_base_of_v<xsimd::avx512f, A>) {
-            return newton_rsqrt(x, V(_mm512_rsqrt14_ps(x)));
-        } else if constexpr (float_lanes && std::is_base_of_v<xsimd::avx, A>) {
-            return newton_rsqrt(x, V(_mm256_rsqrt_ps(x)));
-        } else {
-            return V(T(1)) / xsimd::sqrt(x);
-        }
+        if constexpr (has_rsqrt_estimate) return newton_rsqrt(x, rsqrt_estimate(x));
+        else return V(T(1)) / xsimd::sqrt(x);
     }
     /// 1/sqrt(x) for x a positive normal number (detail::rsqrt_normal): rsqrt without the guards
     /// for 0 and inf (other x: unspecified, maybe NaN).
     PHONG_LANES_INLINE static V rsqrt_normal(const V& x)
     {
-        if constexpr (float_lanes && std::is_base_of_v<xsimd::avx512f, A>) {
-            return rsqrt_newton_correction(x, V(_mm512_rsqrt14_ps(x)));
-        } else if constexpr (float_lanes && std::is_base_of_v<xsimd::avx, A>) {
-            return rsqrt_newton_correction(x, V(_mm256_rsqrt_ps(x)));
-        } else {
-            return V(T(1)) / xsimd::sqrt(x);
-        }
+        if constexpr (has_rsqrt_estimate) return rsqrt_newton_correction(x, rsqrt_estimate(x));
+        else return V(T(1)) / xsimd::sqrt(x);
     }
     /// x >= min and x <= max of T (x a positive normal number: the exact mode's test of a squared
     /// length). AVX-512DQ: one vfpclass for every other class (zeros, subnormals, negatives,
@@ -111,7 +101,7 @@ struct math_traits<xsimd::batch<T, A>> {
     /// that clang++ respects. Without SSE4.1, exp rounds x / ln 2 by (v + 2^52) - 2^52 behind a
     /// volatile read back through a non-volatile cast, folded to v; below AVX-512DQ, double's log
     /// and log1p convert their int64 exponent to double by magic-number sums, reassociated into a
-    /// wrong exponent. There these kernels run std:: lane by lane (slower, in those builds only).
+    /// wrong exponent. There these kernels run std:: lane by lane (in those builds only).
     template <class F> PHONG_LANES_INLINE static V lanewise(const V& x, F f)
     {
         alignas(A::alignment()) T lanes[V::size];
@@ -215,6 +205,15 @@ struct math_traits<xsimd::batch<T, A>> {
     }
 
 private:
+    /// Float lanes with a hardware 1/sqrt estimate: AVX-512 (relative error 2^-14) or AVX (1.5 2^-12).
+    static constexpr bool has_rsqrt_estimate =
+        float_lanes && (std::is_base_of_v<xsimd::avx512f, A> || std::is_base_of_v<xsimd::avx, A>);
+    /// That estimate (has_rsqrt_estimate only).
+    PHONG_LANES_INLINE static V rsqrt_estimate(const V& x)
+    {
+        if constexpr (std::is_base_of_v<xsimd::avx512f, A>) return V(_mm512_rsqrt14_ps(x));
+        else return V(_mm256_rsqrt_ps(x));
+    }
     /// One Newton step for 1/sqrt(x) from an estimate.
     /// Correction form y0 + (y0 / 2)(1 - (x y0) y0) with fused multiply-adds: the step squares the
     /// estimate's error (1.5 e0^2), and the roundings add about 1.5 u (x y0 rounded, halved by
