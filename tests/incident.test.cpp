@@ -262,3 +262,48 @@ TEST_CASE_TEMPLATE("shade_incident: edges and modes", T, float, double)
     m0.shininess = T(0);
     CHECK(near(shade_incident<given_phong>(z, z, m0, lights, in, env), vec3<T>(T(0.02 + 0.4 + 0.25)), tolerance<T>::rel(8)));
 }
+
+TEST_CASE_TEMPLATE("shade_incident: the first light outside the loop (masks, indices, the sign of a zero colour)", T, float, double)
+{
+    // The light loop adds the first light before the others, to sums that start at -0. Checked:
+    // every mask of three lights gives the bits of the visible lights passed alone (each with its
+    // own incident: the indices stay aligned when the first is off), and a point that nothing
+    // lights, without ambient, is +0 in every channel, as from sums that start at +0.
+    constexpr features no_ambient = [] {
+        features f = given_phong;
+        f.scene_ambient = false;
+        f.light_ambient = false;
+        return f;
+    }();
+    const vec3<T> z(T(0), T(0), T(1));
+    const material<T> mat = hand_material<T>();
+    std::array<light<T>, 3> lights{hand_light<T>(), hand_light<T>(), hand_light<T>()};
+    lights[1].diffuse = vec3<T>(T(0.5), T(0.25), T(1));
+    lights[2].specular = vec3<T>(T(0.75));
+    const std::array<incident<T>, 3> in{hand_incident<T>(), incident<T>{vec3<T>(T(0.6), T(0), T(0.8)), T(2)},
+                                        incident<T>{vec3<T>(T(0), T(-0.28), T(0.96)), T(1)}};
+    for (unsigned bits = 0; bits < 8; ++bits) {
+        CAPTURE(bits);
+        std::vector<light<T>> alone;
+        std::vector<incident<T>> alone_in;
+        for (unsigned i = 0; i < 3; ++i)
+            if (bits >> i & 1u) alone.push_back(lights[i]), alone_in.push_back(in[i]);
+        const vec3<T> a = shade_incident<given_phong>(z, z, mat, masked(lights, bits), in);
+        const vec3<T> b = shade_incident<given_phong>(z, z, mat, std::span<const light<T>>(alone), alone_in);
+        CHECK(same_bits(a, b));
+        if (bits == 0) CHECK(same_bits(a, vec3<T>(T(0))));
+    }
+    // nothing lit, no ambient: +0, not -0 (an empty list, a light below the surface, a masked one)
+    const std::array<incident<T>, 1> below{incident<T>{vec3<T>(T(0), T(0.6), T(-0.8)), T(5)}};
+    const std::array<light<T>, 1> one{hand_light<T>()};
+    CHECK(same_bits(shade_incident<no_ambient>(z, z, mat, std::span<const light<T>>(), std::span<const incident<T>>()), vec3<T>(T(0))));
+    CHECK(same_bits(shade_incident<no_ambient>(z, z, mat, one, below), vec3<T>(T(0))));
+    CHECK(same_bits(shade_incident<no_ambient>(z, z, mat, masked(one, 0u), below), vec3<T>(T(0))));
+    CHECK(same_bits(shade_incident<no_ambient>(z, z, mat, masked(lights, 0u), in), vec3<T>(T(0))));
+    // and the hand value with the light first, second or last of three (the others below)
+    const std::array<incident<T>, 3> first{hand_incident<T>(), below[0], below[0]}, last{below[0], below[0], hand_incident<T>()};
+    const std::array<light<T>, 3> same{hand_light<T>(), hand_light<T>(), hand_light<T>()};
+    const T expected = T(0.4) + T(0.16); // kd n.l + ks (r.v)^2 of the hand-worked point, no ambient
+    CHECK(near(shade_incident<no_ambient>(z, z, mat, same, first), vec3<T>(expected), tolerance<T>::rel(8)));
+    CHECK(near(shade_incident<no_ambient>(z, z, mat, same, last), vec3<T>(expected), tolerance<T>::rel(8)));
+}

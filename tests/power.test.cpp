@@ -500,6 +500,45 @@ TEST_CASE_TEMPLATE("pow_unit_in_domain: pow_unit's bits for x in 0..1 and m >= 0
     CHECK(std::isnan(phong::detail::pow_unit_in_domain(launder(T(1)), launder(inf))));
 }
 
+TEST_CASE_TEMPLATE("pow_unit_at_most_one: pow_unit's bits for x in 0..1 and m >= 0 without the test y <= 0", T, float, double)
+{
+    // cosine_power's entry point skips the test y = m log2 x <= 0, which holds for every x <= 1
+    // only if the kernel's log2 is never positive there: were it positive, pow_unit (which
+    // tests y) and this entry point would differ. Compared on random bases, on every float of
+    // the last 2^16 below 1 (the interval whose table point c is 1, where log2 x is r / ln 2
+    // with r = x - 1 <= 0) and at 1 itself, for exponents from 0 to 1e5.
+    using bits_t = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    std::mt19937_64 g(20261127);
+    long differ = 0, compared = 0;
+    const auto compare = [&](T x, T m) {
+        const T a = phong::detail::pow_unit_at_most_one(launder(x), launder(m)), b = phong::pow_unit(launder(x), launder(m));
+        ++compared;
+        if (std::bit_cast<bits_t>(a) == std::bit_cast<bits_t>(b)) return;
+        if (++differ <= 5) {
+            CAPTURE(hex(x));
+            CAPTURE(hex(m));
+            FAIL_CHECK("pow_unit_at_most_one differs from pow_unit");
+        }
+    };
+    for (int cls = 0; cls < 3; ++cls)
+        for (long i = 0; i < 20000; ++i) compare(pick_x<T>(g, cls, i), pick_m<T>(g, i));
+    T x = T(1);
+    for (int i = 0; i <= (1 << 16); ++i, x = std::nextafter(x, T(0)))
+        for (T m : {T(0), T(0.5), T(1), T(7), T(128), T(1e5)}) compare(x, m);
+    CHECK(differ == 0);
+    CHECK(compared == 60000 + 6 * ((1 << 16) + 1));
+    // The edges pow_unit_in_domain has inside the domain.
+    CHECK(phong::detail::pow_unit_at_most_one(launder(T(0)), launder(T(0))) == T(1));
+    CHECK(phong::detail::pow_unit_at_most_one(launder(T(0)), launder(T(3))) == T(0));
+    CHECK(phong::detail::pow_unit_at_most_one(launder(T(1)), launder(T(1e5))) == T(1));
+    CHECK(phong::detail::pow_unit_at_most_one(launder(T(0.5)), launder(T(1100))) == T(0));
+    constexpr T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+    CHECK(std::isnan(phong::detail::pow_unit_at_most_one(launder(T(0.5)), launder(nan))));
+    CHECK(std::isnan(phong::detail::pow_unit_at_most_one(launder(nan), launder(T(2)))));
+    CHECK(phong::detail::pow_unit_at_most_one(launder(T(0.5)), launder(inf)) == T(0));
+    CHECK(std::isnan(phong::detail::pow_unit_at_most_one(launder(T(1)), launder(inf))));
+}
+
 // The in-domain entry point in constant evaluation: exact powers of two.
 static_assert(phong::detail::pow_unit_in_domain(0.5, 2.0) == 0.25);
 static_assert(phong::detail::pow_unit_in_domain(0.25f, 0.5f) == 0.5f);

@@ -121,30 +121,45 @@ PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exa
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, true);
 }
 
+/// The i-th light of the list with its incident (incidents[i]), checked.
+template <features F, class T, glm::qualifier Q, class Light, class Incidents>
+PHONG_INLINE constexpr void add_listed_incident_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
+                                                      const Incidents& incidents, std::size_t i, T m)
+{
+    check_light(L);
+    PHONG_ASSERT(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights");
+    add_incident_light<F>(sums, s, L, incidents[i], m);
+}
+
 /// The lights with their incidents (incidents[i] belongs to the i-th light of the list, masked
-/// or not): masked() skips the lights whose bit is 0.
+/// or not): masked() skips the lights whose bit is 0. The first light is added before the loop,
+/// in straight-line code that starts from the sums' -0 (evaluate_incident): there -0 + x = x is
+/// folded away, and a list of one light has no loop at all.
 template <features F, class T, glm::qualifier Q, class Lights, class Incidents>
 PHONG_INLINE constexpr void add_incident_lights(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Lights& lights,
                                                 const Incidents& incidents, T m)
 {
     using R = std::remove_cvref_t<Lights>;
-    std::size_t i = 0;
     if constexpr (is_masked<R>::value) {
         std::uint64_t bits = lights.mask;
-        for (auto&& L : lights.lights) {
-            check_light(L);
-            PHONG_ASSERT(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights");
-            if (bits & 1u) add_incident_light<F>(sums, s, L, incidents[i], m);
+        auto it = std::begin(lights.lights);
+        const auto end = std::end(lights.lights);
+        if (it == end) return;
+        if (bits & 1u) add_listed_incident_light<F>(sums, s, *it, incidents, 0, m);
+        else check_light(*it);
+        std::size_t i = 1;
+        for (++it; it != end; ++it, ++i) {
             bits >>= 1;
-            ++i;
+            if (bits & 1u) add_listed_incident_light<F>(sums, s, *it, incidents, i, m);
+            else check_light(*it);
         }
     } else {
-        for (auto&& L : lights) {
-            check_light(L);
-            PHONG_ASSERT(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights");
-            add_incident_light<F>(sums, s, L, incidents[i], m);
-            ++i;
-        }
+        auto it = std::begin(lights);
+        const auto end = std::end(lights);
+        if (it == end) return;
+        add_listed_incident_light<F>(sums, s, *it, incidents, 0, m);
+        std::size_t i = 1;
+        for (++it; it != end; ++it, ++i) add_listed_incident_light<F>(sums, s, *it, incidents, i, m);
     }
 }
 
@@ -157,7 +172,11 @@ PHONG_INLINE constexpr shading_terms<T, Q> evaluate_incident(const glm::vec<3, T
 {
     const material<T, Q>& mat = material_of(surf);
     const exact::surface_frame<T, Q> s = incident_frame<F>(normal, view, env, front_facing);
-    light_sums<T, Q> sums{};
+    // Every sum starts at -0: -0 + x = x for every x, so the first light's terms become the sums
+    // with no addition (add_incident_lights). The colour has the same bits as from +0: total_of
+    // starts from emission + poison (+0 or more), which turns a -0 term into +0 as a +0 sum would.
+    const glm::vec<3, T, Q> negative_zero(-T(0));
+    light_sums<T, Q> sums{negative_zero, negative_zero, negative_zero};
     add_incident_lights<F>(sums, s, lights, incidents, mat.shininess);
     return terms_of<F>(sums, s, mat, env);
 }

@@ -265,6 +265,16 @@ template <class V> PHONG_INLINE constexpr V pow_unit_in_domain(V x, V m)
 #endif
         return phong::pow_unit(x, m);
 }
+/// pow_unit_in_domain for x in [0, 1] given by construction (x > 1 is not tested: a meaningless
+/// value): cosine_power's power, whose base is clamped to 1.
+template <class V> PHONG_INLINE constexpr V pow_unit_at_most_one(V x, V m)
+{
+#if !defined(__CUDA_ARCH__)
+    if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) return power::pow_unit_at_most_one(x, m);
+    else
+#endif
+        return phong::pow_unit(x, m);
+}
 } // namespace detail
 /// a * b + c rounded once (std::fma). Constant evaluation: exact when c = -fl(a b) (the
 /// error-free products phong uses), else within 1 ulp (float: formed in long double, rounded twice).

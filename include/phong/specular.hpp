@@ -58,7 +58,7 @@ template <class T>
 PHONG_INLINE constexpr T cosine_power(T x, T scale, T m)
 {
     if constexpr (std::is_floating_point_v<T>) {
-        if (x > T(0)) return detail::pow_unit_in_domain(phong::min(x * scale, T(1)), m);
+        if (x > T(0)) return detail::pow_unit_at_most_one(phong::min(x * scale, T(1)), m);
         return detail::power_of_zero(m);
     } else {
         return phong::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);

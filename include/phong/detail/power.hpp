@@ -167,13 +167,15 @@ PHONG_INLINE constexpr F outside_domain(F x, F m)
 }
 
 /// float's kernel: the same tables with the short polynomials, enough for a float result.
-template <bool Ieee>
+/// AtMostOne: x <= 1 is given (a clamped cosine), so y = m log2 x <= 0 is not tested (log2_normal
+/// is <= 0 for every x <= 1: exactly 0 at 1, whose interval has c = 1 and r = x - 1 <= 0).
+template <bool Ieee, bool AtMostOne = false>
 PHONG_INLINE constexpr float pow_unit_kernel(float xf, float mf)
 {
     const double x = xf, m = mf;
     if (x > 0.0) [[likely]] { // every positive float is a normal double
         const double y = m * log2_normal<true>(x);
-        if (y >= -1022.0 && y <= 0.0) [[likely]] return static_cast<float>(exp2_tabulated<true>(y));
+        if (y >= -1022.0 && (AtMostOne || y <= 0.0)) [[likely]] return static_cast<float>(exp2_tabulated<true>(y));
         if (y < -1022.0) return 0.0f;
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0f : 0.0f; // 0^m: power_of_zero, written out
@@ -181,13 +183,13 @@ PHONG_INLINE constexpr float pow_unit_kernel(float xf, float mf)
     return outside_domain<Ieee>(xf, mf);
 }
 
-/// double's kernel; a subnormal x is scaled into the normal range.
-template <bool Ieee>
+/// double's kernel; a subnormal x is scaled into the normal range. AtMostOne: as float's.
+template <bool Ieee, bool AtMostOne = false>
 PHONG_INLINE constexpr double pow_unit_kernel(double x, double m)
 {
     if (x > 0.0) [[likely]] {
         const double y = x >= 0x1p-1022 ? m * log2_normal(x) : m * (log2_normal(x * 0x1p64) - 64.0);
-        if (y >= -1022.0 && y <= 0.0) [[likely]] return exp2_tabulated(y);
+        if (y >= -1022.0 && (AtMostOne || y <= 0.0)) [[likely]] return exp2_tabulated(y);
         if (y < -1022.0) return 0.0;
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0 : 0.0; // 0^m: power_of_zero, written out
@@ -211,6 +213,12 @@ PHONG_INLINE constexpr double pow_unit(double x, double m) { return pow_unit_ker
 /// memory in every iteration, and the shading loop never needs the fallback.
 PHONG_INLINE constexpr float pow_unit_in_domain(float x, float m) { return pow_unit_kernel<false>(x, m); }
 PHONG_INLINE constexpr double pow_unit_in_domain(double x, double m) { return pow_unit_kernel<false>(x, m); }
+
+/// pow_unit_in_domain for a base that is at most 1 by construction (the specular cosine clamped
+/// to 1: cosine_power): the same value for x in [0, 1], with one test fewer (y <= 0 holds there).
+/// x > 1 is not tested: a meaningless value (finite or not), with every table read in bounds.
+PHONG_INLINE constexpr float pow_unit_at_most_one(float x, float m) { return pow_unit_kernel<false, true>(x, m); }
+PHONG_INLINE constexpr double pow_unit_at_most_one(double x, double m) { return pow_unit_kernel<false, true>(x, m); }
 #endif
 
 } // namespace phong::detail::power
