@@ -257,24 +257,21 @@ template <class V> PHONG_INLINE constexpr V pow_unit(V x, V m)
 namespace detail {
 /// pow_unit for x in [0, 1] and a finite m >= 0 only (NaN outside but for 1^m = 1), without pow_unit's libm
 /// fallback (detail/power.hpp): the shading loop's power, whose m validate() has checked.
-template <class V> PHONG_INLINE constexpr V pow_unit_in_domain(V x, V m)
+/// AtMostOne: x <= 1 holds by construction (cosine_power's base, clamped to 1), so the kernel
+/// leaves out its test of y = m log2 x <= 0 (power::pow_unit_at_most_one); x > 1 then gives a
+/// meaningless value.
+template <bool AtMostOne = false, class V> PHONG_INLINE constexpr V pow_unit_in_domain(V x, V m)
 {
 #if !defined(__CUDA_ARCH__)
-    if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) return power::pow_unit_in_domain(x, m);
-    else
+    if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
+        if constexpr (AtMostOne) return power::pow_unit_at_most_one(x, m);
+        else return power::pow_unit_in_domain(x, m);
+    } else
 #endif
         return phong::pow_unit(x, m);
 }
-/// pow_unit_in_domain for x in [0, 1] given by construction (x > 1 is not tested: a meaningless
-/// value): cosine_power's power, whose base is clamped to 1.
-template <class V> PHONG_INLINE constexpr V pow_unit_at_most_one(V x, V m)
-{
-#if !defined(__CUDA_ARCH__)
-    if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) return power::pow_unit_at_most_one(x, m);
-    else
-#endif
-        return phong::pow_unit(x, m);
-}
+/// pow_unit_in_domain<true>: the power of a base at most 1 by construction.
+template <class V> PHONG_INLINE constexpr V pow_unit_at_most_one(V x, V m) { return pow_unit_in_domain<true>(x, m); }
 } // namespace detail
 /// a * b + c rounded once (std::fma). Constant evaluation: exact when c = -fl(a b) (the
 /// error-free products phong uses), else within 1 ulp (float: formed in long double, rounded twice).
