@@ -295,7 +295,7 @@ PHONG_INLINE constexpr V rsqrt_newton_product(V half_x, V r)
 /// Fast 1/sqrt(x) for a positive normal x: a hardware estimate refined by one Newton step,
 ///   r1 = r0 (3/2 - x/2 r0^2),
 /// relative error rsqrt_max_rel<T>. Float scalars on x86 (SSE): rsqrtss. Double scalars and other
-/// targets: the exact 1/sqrt(x) (no faster estimate is worth it there). Float in CUDA device code:
+/// targets: the exact 1/sqrt(x). Float in CUDA device code:
 /// rsqrtf (rsqrt.approx.f32, rsqrt_sfu_max_rel; a subnormal x gives inf under -ftz). SIMD batches: see
 /// detail/simd/fast_lanes.hpp. Edge: x = 0 gives inf, x = inf gives 0 (the estimate, unrefined);
 /// x < 0 or NaN: NaN; a subnormal x gives inf with rsqrtss (it reads the input as 0), the exact

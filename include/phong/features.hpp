@@ -75,12 +75,12 @@ enum class evaluation : unsigned char { exact, stable, fast };
 /// `wider`: float is evaluated in double with the exact mode's formulas and rounded once. Every
 /// float input is exact in double, no square of a float overflows or underflows there, and double
 /// carries 29 more bits than float, so the colour is float's correct rounding of the model but for
-/// near-ties (about 0.5 ulp). The default: on CPUs it is the fastest and most accurate choice, and
-/// on GPUs whose double runs at half float's rate (data-centre GPUs; docs/cuda.md has the figures).
+/// near-ties (about 0.5 ulp). The default: the most accurate choice, for CPUs and for GPUs whose
+/// double runs at half float's rate (data-centre GPUs; docs/cuda.md compares the two).
 /// T without a wider hardware type (double, double SIMD batches) takes `twofold`. `twofold`: T
 /// arithmetic with power-of-two rescaled vectors and twofold unit vectors, n.l and chords
 /// (detail/twofold.hpp); for GPUs whose double runs at a small fraction of float's rate (consumer
-/// GPUs, 1/32 or 1/64: there it should be the faster one, not measured; docs/cuda.md). Float SIMD
+/// GPUs, 1/32 or 1/64 of float's; docs/cuda.md). Float SIMD
 /// batches on x86 (shade_batch) read neither: their geometry runs in double lanes and the power
 /// in float (detail/simd/stable_lanes.hpp), held to the twofold bounds; steps with a shininess above
 /// 2^20 in any lane take the twofold route.

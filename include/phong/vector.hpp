@@ -67,8 +67,8 @@ PHONG_INLINE constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>
         if (std::is_constant_evaluated())
             if (const T overflow = detail::constant_dot_overflow(a, b); overflow != T(0)) return overflow;
     // Named components, not v[k] in a loop from k = 1: GLM's operator[] is a switch, and g++ 12
-    // drops the probability of the case it prunes (k = 0), so every loop around a dot product was
-    // estimated cold (feature_cost: constants reloaded in the light loop, the output spilled).
+    // drops the probability of the case it prunes (k = 0), so every loop around a dot product is
+    // then laid out as cold code (docs/design.md).
     T sum = a.x * b.x;
     if constexpr (L > 1) sum += a.y * b.y;
     if constexpr (L > 2) sum += a.z * b.z;

@@ -171,7 +171,7 @@ PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s,
         if constexpr (std::is_same_v<Exponent, exact::integer_exponent<V>> && F.specular == specular_model::phong) {
             // The fast mode's integer shininess n = 2^K (plan.chain = K + 1, K <= 6), no masks: the
             // light loop with K known, its power K squarings with no jump per pair; the same bits.
-            // Phong only: Blinn was slower so (docs/batch.md).
+            // Phong only: Blinn keeps the general loop (docs/batch.md has the measurement).
             if (!bits) {
                 const auto each_light = [&](const auto& fixed) {
                     for (std::size_t j = 0; j < lights.size(); ++j) detail::add_light<F>(sums, s, lights[j], fixed);

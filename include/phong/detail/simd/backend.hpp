@@ -122,10 +122,10 @@ template <class T> inline constexpr std::size_t batch_width = sizeof(simd_batch<
 /// 1 where simd_batch's lanes would have no fused multiply-add: x86 compiled without FMA
 /// instructions (the x86-64 baseline, no -march; any -m flags short of FMA). The lanes' exact and stable
 /// kernels need multiply-adds rounded once (the power's polynomials, the Newton step of 1/|d|, the
-/// error-free products), which detail::simd::fma then forms by Dekker's split at many times the
-/// cost: such lanes ran shade_batch at about half the speed of shade<F> point by point
-/// (docs/demo.md). There shade_batch shades point by point with shade<F>'s own route (the same
-/// colours as shade<F>, bit for bit). Define PHONG_SIMD_WITHOUT_FMA to keep the lanes anyway.
+/// error-free products), which detail::simd::fma then forms by Dekker's split, several operations
+/// each (docs/batch.md, "Builds without FMA", has the measurement). There shade_batch shades point
+/// by point with shade<F>'s own route (the same colours as shade<F>, bit for bit). Define
+/// PHONG_SIMD_WITHOUT_FMA to keep the lanes anyway.
 #if PHONG_HAS_XSIMD && (defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86)) && \
     !defined(__FMA__) && !defined(__AVX512F__) && !defined(PHONG_SIMD_WITHOUT_FMA)
 #  define PHONG_LANES_WITHOUT_FMA 1
