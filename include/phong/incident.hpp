@@ -121,45 +121,45 @@ PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exa
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, true);
 }
 
-/// The i-th light of the list with its incident (incidents[i]), checked.
+/// The range a light list iterates: masked()'s lights, or the list itself.
+template <class Lights>
+PHONG_INLINE constexpr const auto& light_range(const Lights& lights)
+{
+    if constexpr (is_masked<std::remove_cvref_t<Lights>>::value) return lights.lights;
+    else return lights;
+}
+
+/// The i-th light of the list, checked; where `on` (masked() skips the lights whose bit is 0), its
+/// terms from incidents[i]. An incident list shorter than the lights is a memory-safety
+/// precondition (memory_safe, every build): the light is skipped, nothing is read past the list.
 template <features F, class T, glm::qualifier Q, class Light, class Incidents>
-PHONG_INLINE constexpr void add_listed_incident_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
-                                                      const Incidents& incidents, std::size_t i, T m)
+PHONG_INLINE constexpr void add_listed_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
+                                             const Incidents& incidents, std::size_t i, T m, bool on)
 {
     check_light(L);
-    PHONG_ASSERT(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights");
+    if (!on || !memory_safe(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights")) return;
     add_incident_light<F>(sums, s, L, incidents[i], m);
 }
 
 /// The lights with their incidents (incidents[i] belongs to the i-th light of the list, masked
-/// or not): masked() skips the lights whose bit is 0. The first light is added before the loop,
-/// in straight-line code that starts from the sums' -0 (evaluate_incident): there -0 + x = x is
-/// folded away, and a list of one light has no loop at all.
+/// or not). The first light is added before the loop, in straight-line code that starts from the
+/// sums' -0 (evaluate_incident): there -0 + x = x is folded away, and a list of one light has no
+/// loop at all.
 template <features F, class T, glm::qualifier Q, class Lights, class Incidents>
 PHONG_INLINE constexpr void add_incident_lights(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Lights& lights,
                                                 const Incidents& incidents, T m)
 {
-    using R = std::remove_cvref_t<Lights>;
-    if constexpr (is_masked<R>::value) {
-        std::uint64_t bits = lights.mask;
-        auto it = std::begin(lights.lights);
-        const auto end = std::end(lights.lights);
-        if (it == end) return;
-        if (bits & 1u) add_listed_incident_light<F>(sums, s, *it, incidents, 0, m);
-        else check_light(*it);
-        std::size_t i = 1;
-        for (++it; it != end; ++it, ++i) {
-            bits >>= 1;
-            if (bits & 1u) add_listed_incident_light<F>(sums, s, *it, incidents, i, m);
-            else check_light(*it);
-        }
-    } else {
-        auto it = std::begin(lights);
-        const auto end = std::end(lights);
-        if (it == end) return;
-        add_listed_incident_light<F>(sums, s, *it, incidents, 0, m);
-        std::size_t i = 1;
-        for (++it; it != end; ++it, ++i) add_listed_incident_light<F>(sums, s, *it, incidents, i, m);
+    constexpr bool is_masked_list = is_masked<std::remove_cvref_t<Lights>>::value;
+    std::uint64_t bits = 1;
+    if constexpr (is_masked_list) bits = lights.mask;
+    auto it = std::begin(light_range(lights));
+    const auto end = std::end(light_range(lights));
+    if (it == end) return;
+    add_listed_light<F>(sums, s, *it, incidents, 0, m, (bits & 1u) != 0);
+    std::size_t i = 1;
+    for (++it; it != end; ++it, ++i) {
+        if constexpr (is_masked_list) bits >>= 1;
+        add_listed_light<F>(sums, s, *it, incidents, i, m, (bits & 1u) != 0);
     }
 }
 
@@ -235,10 +235,12 @@ PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>&
 /// The viewer: view_model::given, the overload below with v; fixed_direction: environment::eye.xyz,
 /// normalized once per call, or used as given (unit) with features::unit_inputs.
 ///
-/// Pre: every incident's direction unit length (within 1e-3), distance finite and >= 0; n and v unit
-/// with unit_inputs (and environment::eye.xyz for fixed_direction); validate(surf as a material),
-/// validate(env), validate(light) for every light (all checked in debug builds and in constant
-/// evaluation, nothing under NDEBUG).
+/// Pre: an incident for every light of the list (checked in every build: a light without one
+/// calls the precondition handler, "phong::shade_incident: fewer incidents than lights", and is
+/// not shaded; nothing is read past incidents); every incident's direction unit length (within
+/// 1e-3), distance finite and >= 0; n and v unit with unit_inputs (and environment::eye.xyz for
+/// fixed_direction); validate(surf as a material), validate(env), validate(light) for every light
+/// (these checked in debug builds and in constant evaluation, nothing under NDEBUG).
 /// Edges: normal = 0: no diffuse or specular term; a zero view vector: no specular term; NaN or inf
 /// in the normal or the view input read: every channel NaN; Blinn with l = -v: n.h taken as 0;
 /// m = 0: the specular base^0 = 1 wherever the specular term is on; a light whose distance is 0

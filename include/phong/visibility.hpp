@@ -40,8 +40,10 @@ PHONG_INLINE constexpr masked_lights<Lights> masked(Lights&& lights, std::uint64
 /// f_i (attenuation times spot) is multiplied by weights[i] (soft shadows, partial occluders), so
 /// every term of that light, its ambient term included, scales by it; a weight 0 skips the light
 /// (the same as removing it), 1 leaves it as it is.
-/// Pre (checked in debug builds, through the precondition handler with a message naming
-/// weights): weights.size() >= the number of lights; each weight finite and >= 0. Weights in
+/// Pre: weights.size() >= the number of lights (checked in every build: a shorter span calls the
+/// precondition handler, "phong::weighted: fewer weights than lights", and the lights past it are
+/// not shaded, nothing is read past it); each weight finite and >= 0 (checked in debug builds,
+/// the message naming weights[i]). Weights in
 /// [0, 1] are visibilities; one above 1 brightens the light, as a stronger light would.
 /// Held as masked() holds it.
 template <class Lights, class T>

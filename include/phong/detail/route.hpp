@@ -138,7 +138,7 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
     } else if constexpr (is_weighted<R>::value) {
         std::size_t i = 0;
         for (auto&& L : lights.lights) {
-            PHONG_ASSERT(i < lights.weights.size(), "phong::weighted: fewer weights than lights");
+            if (!memory_safe(i < lights.weights.size(), "phong::weighted: fewer weights than lights")) return;
             check_light_if<Check>(L);
             const auto weight = lights.weights[i++];
             check_weight(weight);
