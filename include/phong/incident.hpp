@@ -130,36 +130,43 @@ PHONG_INLINE constexpr const auto& light_range(const Lights& lights)
 }
 
 /// The i-th light of the list, checked; where `on` (masked() skips the lights whose bit is 0), its
-/// terms from incidents[i]. An incident list shorter than the lights is a memory-safety
-/// precondition (memory_safe, every build): the light is skipped, nothing is read past the list.
-template <features F, class T, glm::qualifier Q, class Light, class Incidents>
+/// terms from incidents[i]. Checked: a list without a size has i checked against the incidents
+/// here, per light (a sized one once per call, add_incident_lights).
+template <features F, bool Checked, class T, glm::qualifier Q, class Light, class Incidents>
 PHONG_INLINE constexpr void add_listed_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
                                              const Incidents& incidents, std::size_t i, T m, bool on)
 {
     check_light(L);
-    if (!on || !memory_safe(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights")) return;
+    if (!on) return;
+    if constexpr (Checked)
+        if (!within_bounds(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights")) return;
     add_incident_light<F>(sums, s, L, incidents[i], m);
 }
 
 /// The lights with their incidents (incidents[i] belongs to the i-th light of the list, masked
-/// or not). The first light is added before the loop, in straight-line code that starts from the
-/// sums' -0 (evaluate_incident): there -0 + x = x is folded away, and a list of one light has no
-/// loop at all.
+/// or not). An incident list shorter than the light list is never read past (every build; reported
+/// by within_bounds), tested once per call where the list has a size (then no light is added),
+/// else per light (the lights past the incidents are not). The first light is added
+/// before the loop, in straight-line code that starts from the sums' -0 (evaluate_incident):
+/// there -0 + x = x is folded away, and a list of one light has no loop at all.
 template <features F, class T, glm::qualifier Q, class Lights, class Incidents>
 PHONG_INLINE constexpr void add_incident_lights(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Lights& lights,
                                                 const Incidents& incidents, T m)
 {
-    constexpr bool is_masked_list = is_masked<std::remove_cvref_t<Lights>>::value;
+    constexpr bool sized = requires { std::size(light_range(lights)); };
+    if constexpr (sized)
+        if (!within_bounds(std::size(light_range(lights)) <= std::size(incidents), "phong::shade_incident: fewer incidents than lights"))
+            return;
     std::uint64_t bits = 1;
-    if constexpr (is_masked_list) bits = lights.mask;
+    if constexpr (is_masked<std::remove_cvref_t<Lights>>::value) bits = lights.mask;
     auto it = std::begin(light_range(lights));
     const auto end = std::end(light_range(lights));
     if (it == end) return;
-    add_listed_light<F>(sums, s, *it, incidents, 0, m, (bits & 1u) != 0);
+    add_listed_light<F, !sized>(sums, s, *it, incidents, 0, m, (bits & 1u) != 0);
     std::size_t i = 1;
     for (++it; it != end; ++it, ++i) {
-        if constexpr (is_masked_list) bits >>= 1;
-        add_listed_light<F>(sums, s, *it, incidents, i, m, (bits & 1u) != 0);
+        if constexpr (is_masked<std::remove_cvref_t<Lights>>::value) bits >>= 1;
+        add_listed_light<F, !sized>(sums, s, *it, incidents, i, m, (bits & 1u) != 0);
     }
 }
 
@@ -235,9 +242,10 @@ PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>&
 /// The viewer: view_model::given, the overload below with v; fixed_direction: environment::eye.xyz,
 /// normalized once per call, or used as given (unit) with features::unit_inputs.
 ///
-/// Pre: an incident for every light of the list (checked in every build: a light without one
-/// calls the precondition handler, "phong::shade_incident: fewer incidents than lights", and is
-/// not shaded; nothing is read past incidents); every incident's direction unit length (within
+/// Pre: an incident for every light of the list, masked or not (debug builds and constant
+/// evaluation report fewer, "phong::shade_incident: fewer incidents than lights"; in every build
+/// nothing is read past incidents: no light's terms are added then, or for a light range without
+/// a size those of the lights past the incidents are not); every incident's direction unit length (within
 /// 1e-3), distance finite and >= 0; n and v unit with unit_inputs (and environment::eye.xyz for
 /// fixed_direction); validate(surf as a material), validate(env), validate(light) for every light
 /// (these checked in debug builds and in constant evaluation, nothing under NDEBUG).

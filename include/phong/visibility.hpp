@@ -40,9 +40,9 @@ PHONG_INLINE constexpr masked_lights<Lights> masked(Lights&& lights, std::uint64
 /// f_i (attenuation times spot) is multiplied by weights[i] (soft shadows, partial occluders), so
 /// every term of that light, its ambient term included, scales by it; a weight 0 skips the light
 /// (the same as removing it), 1 leaves it as it is.
-/// Pre: weights.size() >= the number of lights (checked in every build: a shorter span calls the
-/// precondition handler, "phong::weighted: fewer weights than lights", and the lights past it are
-/// not shaded, nothing is read past it); each weight finite and >= 0 (checked in debug builds,
+/// Pre: weights.size() >= the number of lights (debug builds report a shorter span, "phong::weighted:
+/// fewer weights than lights"; in every build nothing is read past it: no light is shaded then, or
+/// for a light range without a size the lights past the weights are not); each weight finite and >= 0 (checked in debug builds,
 /// the message naming weights[i]). Weights in
 /// [0, 1] are visibilities; one above 1 brightens the light, as a stronger light would.
 /// Held as masked() holds it.

@@ -76,9 +76,8 @@ inline std::atomic<precondition_handler> current_precondition_handler{&default_p
 } // namespace detail
 
 /// Installs the handler that precondition checks (PHONG_ASSERT in debug builds: shade's validate()
-/// of every parameter; in every build: the checks that keep memory safe, memory_safe: shade_batch's
-/// span lengths and overlaps, shade_incident's incidents and weighted()'s weights per light) call
-/// when they fail, and returns the previous
+/// of every parameter; in every build: shade_batch's span-length and overlap checks, which keep
+/// memory safe) call when they fail, and returns the previous
 /// one; nullptr restores the default (print "phong: precondition failed: <message> (file:line)" to
 /// stderr, then std::abort()). Thread-safe (an atomic pointer); process-wide.
 /// A handler may return (e.g. a test recording the message; throwing terminates, the checks are in
@@ -86,8 +85,8 @@ inline std::atomic<precondition_handler> current_precondition_handler{&default_p
 /// build would, with the result unspecified but no undefined behaviour (shade on out-of-domain
 /// parameters gives some value, possibly NaN; shade_batch with spans of wrong lengths writes
 /// nothing). Not consulted in constant evaluation (a compile error instead) nor in CUDA device
-/// code (plain assert there), nor under NDEBUG for the value checks (the memory checks call it in
-/// every build).
+/// code (plain assert there), nor under NDEBUG for the value checks (shade_batch's memory checks
+/// call it in every build).
 inline precondition_handler set_precondition_handler(precondition_handler handler) noexcept
 {
     return detail::current_precondition_handler.exchange(handler ? handler : &detail::default_precondition_handler);
@@ -156,27 +155,6 @@ PHONG_INLINE constexpr void precondition_failed_see_phong_validate(const char* m
     if (message != nullptr && message < &unrelated) return;
 }
 
-/// A memory-safety precondition (a span's length, an index into a second range): O(1), checked in
-/// every build, NDEBUG included (as hardened standard libraries check std::span), through the
-/// precondition handler (default: print the message and abort); a compile error in constant
-/// evaluation; nothing in CUDA device code. Returns ok: where a handler returns, the caller skips
-/// the read or write the check guards.
-PHONG_INLINE constexpr bool memory_safe(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
-                                    int line = PHONG_DETAIL_CALLER_LINE) noexcept
-{
-    if (std::is_constant_evaluated()) {
-        if (!ok) precondition_failed_see_phong_validate(message);
-    } else {
-#if !defined(__CUDA_ARCH__)
-        if (!ok) [[unlikely]] precondition_failed(message, file, line);
-#endif
-    }
-    (void)message;
-    (void)file;
-    (void)line;
-    return ok;
-}
-
 /// Checks `ok`: a compile error in constant evaluation (naming the message), PHONG_ASSERT at run
 /// time (the precondition handler in debug builds, with the caller's file and line; nothing under
 /// NDEBUG or in CUDA device code).
@@ -194,6 +172,17 @@ PHONG_INLINE constexpr void require(bool ok, const char* message, const char* fi
         (void)file;
         (void)line;
     }
+}
+
+/// ok, reported where it is false as require() reports it (a compile error in constant
+/// evaluation, the precondition handler in debug builds), for a bound the caller keeps in every
+/// build: where ok is false it skips the read past a range. Release builds pay a compare there,
+/// not the handler's call (shade_batch's span checks, once per call, use memory_safe instead).
+PHONG_INLINE constexpr bool within_bounds(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
+                                      int line = PHONG_DETAIL_CALLER_LINE) noexcept
+{
+    if (!ok) require(false, message, file, line);
+    return ok;
 }
 
 } // namespace phong::detail

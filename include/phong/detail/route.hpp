@@ -103,9 +103,11 @@ inline constexpr features without_specular = [] {
 }();
 
 /// The lights of a std::array, unrolled at compile time (each_light; a function rather than a
-/// lambda, so that it carries the same inlining attribute as every step of the light loop).
+/// lambda, so that it carries the same inlining attribute as every step of the light loop). An
+/// empty array reads none of its arguments.
 template <features F, class Sums, class Frame, class Lights, class M, std::size_t... I>
-PHONG_INLINE constexpr void each_array_light(Sums& sums, const Frame& s, const Lights& lights, M m, std::index_sequence<I...>)
+PHONG_INLINE constexpr void each_array_light([[maybe_unused]] Sums& sums, [[maybe_unused]] const Frame& s,
+                                             [[maybe_unused]] const Lights& lights, [[maybe_unused]] M m, std::index_sequence<I...>)
 {
     ((check_light(lights[I]), detail::add_light<F>(sums, s, lights[I], m, unweighted{})), ...);
 }
@@ -136,9 +138,15 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
             bits >>= 1;
         }
     } else if constexpr (is_weighted<R>::value) {
+        // A weight for every light: once per call where the list has a size, else per light.
+        constexpr bool sized = requires { std::size(lights.lights); };
+        constexpr const char* too_few = "phong::weighted: fewer weights than lights";
+        if constexpr (sized)
+            if (!within_bounds(std::size(lights.lights) <= lights.weights.size(), too_few)) return;
         std::size_t i = 0;
         for (auto&& L : lights.lights) {
-            if (!memory_safe(i < lights.weights.size(), "phong::weighted: fewer weights than lights")) return;
+            if constexpr (!sized)
+                if (!within_bounds(i < lights.weights.size(), too_few)) return;
             check_light_if<Check>(L);
             const auto weight = lights.weights[i++];
             check_weight(weight);

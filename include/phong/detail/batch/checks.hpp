@@ -120,6 +120,23 @@ const char* output_overlap(const Points& points, const Materials& materials, con
     return nullptr;
 }
 
+/// A memory-safety precondition of shade_batch (span lengths, overlap): O(1), checked in every
+/// build, NDEBUG included (as hardened standard libraries check std::span), through the
+/// precondition handler (default: print the message and abort). Returns ok: when a handler
+/// returns, shade_batch writes nothing.
+inline bool memory_safe(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
+                        int line = PHONG_DETAIL_CALLER_LINE) noexcept
+{
+#if !defined(__CUDA_ARCH__) // shade_batch is host code; nvcc's device pass still parses this body
+    if (!ok) precondition_failed(message, file, line);
+#else
+    (void)message;
+    (void)file;
+    (void)line;
+#endif
+    return ok;
+}
+
 /// Number of vectors in an SoA or AoS input (SoA: the three spans' common length, or a length
 /// no valid input has when they differ).
 template <class T> std::size_t vec3_count(const soa3<T>& v)
