@@ -1,6 +1,6 @@
 // The scalar kernels behind the model, each beside what a user would call instead: phong::pow_unit
 // (the specular and spot power, inline, detail/power.hpp) against std::pow, float and double; the
-// fast mode's approximations (phong/fast_math.hpp) beside their exact twins: fast::pow_unit against
+// fast mode's approximations (phong/core/fast_math.hpp) beside their exact twins: fast::pow_unit against
 // phong::pow_unit, fast::pow_integer likewise (exponents 1..64 in turn), fast::rsqrt against
 // phong::rsqrt (bound counter: their published constants; the fast power's error over results
 // >= 2^-24, where its relative bound holds); on this build's widest SIMD lanes, fast::rsqrt and
@@ -16,8 +16,8 @@
 #include "support/wide.hpp"
 
 #include <phong/batch.hpp> // first: its pragmas cover the intrinsics headers (the SIMD rows)
-#include <phong/fast_math.hpp>
-#include <phong/math.hpp>
+#include <phong/core/fast_math.hpp>
+#include <phong/core/math.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -6,7 +6,7 @@
 // Row names: <path>.<mode>.<specular>.<type>/<input set>/K:<K>/N:<N>, path = naive_glm | scalar |
 // batch; mode = exact | stable (float: evaluated in double) | stable_twofold (float arithmetic with
 // twofold vectors, features::precision = twofold: the GPU route, and what batches and double run) |
-// stable_m256 (batch, double: twofold only above m = 256) | fast (phong/fast_math.hpp's approximations).
+// stable_m256 (batch, double: twofold only above m = 256) | fast (phong/core/fast_math.hpp's approximations).
 // g++ 12 flags the _mm512_undefined_* placeholders inside its own AVX-512 intrinsics as
 // uninitialized once xsimd's kernels are inlined (batch.hpp). The diagnostic state that counts is
 // the one at the intrinsics header's lines, which may be included before batch.hpp's own pragma:

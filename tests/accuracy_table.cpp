@@ -41,7 +41,7 @@ bool twofold_columns = false; // --twofold
 bool fast_columns = false;    // --fast
 
 // Built with -ffast-math (-fassociative-math): the stable mode's twofold route refuses to compile
-// (phong/detail/ieee.hpp, docs/compilers.md), so the second columns of double, and of float with
+// (phong/core/ieee.hpp, docs/compilers.md), so the second columns of double, and of float with
 // --twofold, are the fast mode's; float's stable columns (precision = wider) stay.
 template <class T> bool second_is_fast()
 {

@@ -1,7 +1,7 @@
-// vec3_of (phong/adapt.hpp, issue 27): a renderer's own vector types as glm::vec<3, T>. Expected
+// vec3_of (phong/inputs/adapt.hpp, issue 27): a renderer's own vector types as glm::vec<3, T>. Expected
 // values: the components as written; the conversion changes no bit of shade_incident's colour.
-#include <phong/adapt.hpp>
-#include <phong/incident.hpp>
+#include <phong/inputs/adapt.hpp>
+#include <phong/sum/incident.hpp>
 
 #include <doctest/doctest.h>
 

@@ -1,11 +1,11 @@
-// phong/attenuation.hpp: polynomial and windowed distance falloff, the OpenGL and smooth spot
+// phong/terms/attenuation.hpp: polynomial and windowed distance falloff, the OpenGL and smooth spot
 // cones, and the spot_cone factories. Hand-worked values and the documented edges.
 // (Monotonicity in distance: tests/properties.test.cpp.)
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
-#include <phong/attenuation.hpp>
-#include <phong/light.hpp>
+#include <phong/terms/attenuation.hpp>
+#include <phong/inputs/light.hpp>
 
 #include <doctest/doctest.h>
 

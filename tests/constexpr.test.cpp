@@ -6,7 +6,7 @@
 // against the run-time path: tables evaluated at compile time, and detail::ce called directly.
 #include "support/numeric.hpp"
 
-#include <phong/fast_math.hpp>
+#include <phong/core/fast_math.hpp>
 #include <phong/phong.hpp>
 
 #include <doctest/doctest.h>
@@ -334,7 +334,7 @@ static_assert(degenerate_shades<double, evaluation::stable>());
 static_assert(degenerate_shades<float, evaluation::fast>());
 static_assert(degenerate_shades<double, evaluation::fast>());
 
-// The fast mode's approximations (phong/fast_math.hpp) are constant expressions for scalars:
+// The fast mode's approximations (phong/core/fast_math.hpp) are constant expressions for scalars:
 // within their published relative bounds of hand-worked values, and whole fast shades within the
 // power's bound (plus the shade's 16 eps) of the three-light scene's expected colour.
 template <class T> constexpr bool within_rel(T a, double b, double rel) { return cabs(double(a) - b) <= rel * cabs(b); }

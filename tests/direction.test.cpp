@@ -1,9 +1,9 @@
-// phong/direction.hpp: toward(P, Q), the one homogeneous direction rule, and light_direction.
+// phong/terms/direction.hpp: toward(P, Q), the one homogeneous direction rule, and light_direction.
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
-#include <phong/direction.hpp>
-#include <phong/view.hpp>
+#include <phong/terms/direction.hpp>
+#include <phong/terms/view.hpp>
 
 #include <doctest/doctest.h>
 

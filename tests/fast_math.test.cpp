@@ -1,9 +1,9 @@
-// phong/fast_math.hpp: each approximation within its published constant on dense sweeps, against
+// phong/core/fast_math.hpp: each approximation within its published constant on dense sweeps, against
 // long double (64-bit significand: 1e-19 relative, far below the bounds), its edges, and never
 // NaN or inf in the domain; scalars and SIMD batches (the batch test binary also builds this file
 // with -march=native: AVX-512 lanes).
 #include <phong/batch.hpp>
-#include <phong/fast_math.hpp>
+#include <phong/core/fast_math.hpp>
 
 #include <doctest/doctest.h>
 

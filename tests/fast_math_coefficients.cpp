@@ -1,4 +1,4 @@
-// The polynomial coefficients of phong/fast_math.hpp: interpolation at Chebyshev nodes in long
+// The polynomial coefficients of phong/core/fast_math.hpp: interpolation at Chebyshev nodes in long
 // double (near-minimax), rounded to float, with each degree's relative error (exact arithmetic and
 // float Horner). fast_math.hpp uses log2 degree 7 and exp2 degree 5. A tool, not a test:
 //   g++ -std=c++20 -O2 tests/fast_math_coefficients.cpp -o coefficients && ./coefficients

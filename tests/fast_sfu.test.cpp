@@ -1,10 +1,10 @@
-// phong/fast_sfu.hpp on the CPU: the bound of the SFU power (x^m = ex2(m lg2(x)) in float CUDA
+// phong/core/fast_sfu.hpp on the CPU: the bound of the SFU power (x^m = ex2(m lg2(x)) in float CUDA
 // device code) checked through an emulation of the two instructions at their documented worst
 // errors, in both directions, against long double. benchmarks/cuda/shade.cu checks the same bounds
 // on a GPU, with the instructions themselves.
 #include <doctest/doctest.h>
 
-#include <phong/fast_math.hpp>
+#include <phong/core/fast_math.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// shade_incident (phong/incident.hpp, issue 27): the model from the light directions and
+// shade_incident (phong/sum/incident.hpp, issue 27): the model from the light directions and
 // distances a renderer already has, with no position. Expected values: worked by hand (3-4-5
 // directions, where every cosine is exact), the formulas written literally in long double, and
 // properties: shade<F> on the position the incidents come from; surface and material the same
@@ -7,7 +7,7 @@
 #include "support/numeric.hpp"
 #include "support/property.hpp"
 
-#include <phong/incident.hpp>
+#include <phong/sum/incident.hpp>
 
 #include <doctest/doctest.h>
 

@@ -1,4 +1,4 @@
-// The float SIMD power of shade_batch's exact mode (include/phong/detail/simd/lanes_power.hpp, through
+// The float SIMD power of shade_batch's exact mode (include/phong/ext/simd/lanes_power.hpp, through
 // math_traits<simd_batch<float>>::pow_unit) against pow in the wide reference type (support/wide.hpp:
 // __float128 with g++, long double with clang++), on inputs its derivation did not pick: seeded
 // log-uniform bases over the whole normal range, bases within a few ulp of 1, subnormal bases,

@@ -1,10 +1,10 @@
-// phong/math.hpp: special values, pow<N>, fma, min/max/clamp NaN rules, the power-of-two scale,
+// phong/core/math.hpp: special values, pow<N>, fma, min/max/clamp NaN rules, the power-of-two scale,
 // cos_degrees, and the constant-evaluation kernels (detail::ce) against the __float128 reference.
 // (The constexpr path against the run-time path: tests/constexpr.test.cpp.)
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
-#include <phong/math.hpp>
+#include <phong/core/math.hpp>
 
 #include <doctest/doctest.h>
 

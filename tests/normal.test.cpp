@@ -1,4 +1,4 @@
-// Tests for phong/normal.hpp: two-sided negation (face_viewer, face_flag) and the normal matrix
+// Tests for phong/terms/normal.hpp: two-sided negation (face_viewer, face_flag) and the normal matrix
 // (cofactor, inverse transpose, from a model-view matrix, transform_normal).
 // Oracle for the normal matrices: finite differences of the transformed surface x -> M x(u, v),
 // in long double. The generic surfaces are parametrized by circles and straight lines, for which a
@@ -9,7 +9,7 @@
 #include "support/numeric.hpp"
 #include "support/property.hpp"
 
-#include <phong/normal.hpp>
+#include <phong/terms/normal.hpp>
 #include <phong/primitives.hpp>
 
 #include <doctest/doctest.h>

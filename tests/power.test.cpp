@@ -1,4 +1,4 @@
-// phong::pow_unit (include/phong/detail/power.hpp): x^m for x in [0, 1], m >= 0.
+// phong::pow_unit (include/phong/core/power.hpp): x^m for x in [0, 1], m >= 0.
 //  * accuracy on seeded random inputs against pow in the wide reference type (support/wide.hpp:
 //    __float128 with g++, long double with clang++), double and float;
 //  * edges: 0^0, 0^m, 1^m, x^0, x^1, monotonicity, range, flush to 0, NaN, outside the domain;
@@ -9,7 +9,7 @@
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
-#include <phong/math.hpp>
+#include <phong/core/math.hpp>
 
 #include <doctest/doctest.h>
 

@@ -10,7 +10,7 @@
 #include "support/numeric.hpp"
 #include "support/seeds.hpp"
 
-#include <phong/shade.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,11 +1,11 @@
-// phong/shade.hpp: shade<F> by hand, on every kind of light container, on the documented
+// phong/sum/shade.hpp: shade<F> by hand, on every kind of light container, on the documented
 // degenerate inputs (both evaluation modes), and against the __float128 reference model
 // (tests/support/reference.hpp) over a strength-2 covering array of the feature options.
 #include "support/generators.hpp"
 #include "support/numeric.hpp"
 #include "support/reference.hpp"
 
-#include <phong/shade.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <doctest/doctest.h>
 

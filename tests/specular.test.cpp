@@ -1,11 +1,11 @@
-// phong/specular.hpp: the reflection-based and halfway-based factors, exact and stable, and
+// phong/terms/specular.hpp: the reflection-based and halfway-based factors, exact and stable, and
 // pow_one_minus. Hand-worked values, the documented edges (gate, m = 0, l = 0, v = 0, l = -v),
 // and random unit vectors against the __float128 evaluation of the same formula.
 #include "support/generators.hpp"
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
-#include <phong/specular.hpp>
+#include <phong/terms/specular.hpp>
 
 #include <doctest/doctest.h>
 

@@ -16,7 +16,7 @@
 
 #include <phong/accuracy.hpp>
 #include <phong/batch.hpp>
-#include <phong/shade.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -2,9 +2,9 @@
 // environment.hpp, validate.hpp): every rejection listed in their doc comments, each message
 // naming the field the user set (light.attenuation.linear, not "coefficients"), the acceptance of valid and documented-degenerate parameters,
 // and the same at compile time.
-#include <phong/environment.hpp>
-#include <phong/light.hpp>
-#include <phong/material.hpp>
+#include <phong/inputs/environment.hpp>
+#include <phong/inputs/light.hpp>
+#include <phong/inputs/material.hpp>
 
 #include <doctest/doctest.h>
 

@@ -1,10 +1,10 @@
-// phong/vector.hpp: dot, dot_compensated, max_abs, rescaled, length, normalize,
+// phong/core/vector.hpp: dot, dot_compensated, max_abs, rescaled, length, normalize,
 // normalize_unscaled, reflect, faceforward, cross. Hand-worked values, the __float128
 // reference, and the documented edges (zero in, zero out; huge and tiny vectors).
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
-#include <phong/vector.hpp>
+#include <phong/core/vector.hpp>
 
 #include <doctest/doctest.h>
 

@@ -7,9 +7,9 @@
 #include "support/numeric.hpp"
 #include "support/property.hpp"
 
-#include <phong/features.hpp>
-#include <phong/normal.hpp>
-#include <phong/shade.hpp>
+#include <phong/inputs/features.hpp>
+#include <phong/terms/normal.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <doctest/doctest.h>
 

@@ -1,11 +1,11 @@
-// phong/view.hpp: the eye from the projection matrix (eye_from_projection), the view vector
+// phong/terms/view.hpp: the eye from the projection matrix (eye_from_projection), the view vector
 // (view_vector), and seed 000's two formulas (view_perspective, view_orthographic). Expected eye
 // points are known from how the matrices are built with GLM (glm::perspective, glm::frustum,
 // glm::ortho, glm::lookAt, a translation, a shear), not from phong.
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
-#include <phong/view.hpp>
+#include <phong/terms/view.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -4,7 +4,7 @@
 // positional lights in __constant__ memory. One process, the kernels' launches interleaved,
 // medians of the repetitions, the device named in the output; accuracy against a long double
 // evaluation of the formula written out on the host (every 8th point), NaN and inf counted over
-// every point. Then the SFU bounds of phong/fast_sfu.hpp checked on the GPU against long double:
+// every point. Then the SFU bounds of phong/core/fast_sfu.hpp checked on the GPU against long double:
 // fast::pow_unit over dense sweeps of x for several m, fast::rsqrt over every float in [1, 4).
 // Exit status 1 if a bound fails or a kernel gives NaN or inf.
 //
@@ -225,7 +225,7 @@ double median(std::vector<double> v)
     return v[v.size() / 2];
 }
 
-/// fast::pow_unit and fast::rsqrt on the device against long double, within phong/fast_sfu.hpp's bounds.
+/// fast::pow_unit and fast::rsqrt on the device against long double, within phong/core/fast_sfu.hpp's bounds.
 bool check_sfu_bounds()
 {
     bool ok = true;

@@ -6,7 +6,7 @@
 //      inverse(projection * view), so perspective and orthographic cameras are the same code);
 //      each object's inverse transform gives the generic ray S' + t c', the nearest generic hit
 //      gives t, P = S + t c and the generic normal m' (phong/primitives.hpp), carried to world
-//      space by the object's normal matrix (M^{-1})^T (phong/normal.hpp), and a shadow ray toward
+//      space by the object's normal matrix (M^{-1})^T (phong/terms/normal.hpp), and a shadow ray toward
 //      each light marks which lights reach P: a G-buffer;
 //   2. shade: phong::shade<F>(P, m, material, lights, environment) on every G-buffer entry, with
 //      only the lights that reach P (a point no light reaches gets exactly the ambient term), and

@@ -18,7 +18,7 @@
 
 #include "inputs.hpp"
 
-#include <phong/features.hpp>
+#include <phong/inputs/features.hpp>
 #if __has_include(<phong/accuracy.hpp>)
 #  include <phong/accuracy.hpp>
 #  define PHONG_BENCH_HAVE_ACCURACY 1

@@ -37,9 +37,9 @@
 // bounds (tests/batch_accuracy.test.cpp).
 #pragma once
 
-#include "detail/constexpr_math.hpp"
-#include "fast_math.hpp"
-#include "features.hpp"
+#include "core/constexpr_math.hpp"
+#include "core/fast_math.hpp"
+#include "inputs/features.hpp"
 
 #include <array>
 #include <cstddef>

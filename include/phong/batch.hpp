@@ -15,9 +15,9 @@
 //   shade.hpp and below    the scalar model, whose templates every layer above instantiates
 #pragma once
 
-#include "batch_types.hpp"
-#include "shade.hpp"
-#include "detail/batch/driver.hpp"
+#include "ext/batch/types.hpp"
+#include "sum/shade.hpp"
+#include "ext/batch/driver.hpp"
 
 #include <span>
 #include <type_traits>

@@ -8,7 +8,7 @@
 // find_package(phong) sets the CMake variable of the same name.
 #pragma once
 
-#include "features.hpp"
+#include "inputs/features.hpp"
 
 #include <fstream>
 #include <iterator>

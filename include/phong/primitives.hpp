@@ -18,7 +18,7 @@
 //   cube              max(|x|, |y|, |z|) = 1.
 #pragma once
 
-#include "vector.hpp"
+#include "core/vector.hpp"
 
 #include <limits>
 

@@ -2,7 +2,7 @@
 // modes and light lists), compiled by tests/inlining/check.sh: every phong function must be
 // inlined into these extern "C" loops, so that the object file defines no phong symbol.
 // SPDX-License-Identifier: MIT
-#include <phong/adapt.hpp>
+#include <phong/inputs/adapt.hpp>
 #include <phong/phong.hpp>
 
 #include <array>
@@ -101,7 +101,7 @@ void user_tracer(const vec3* P, const vec3* n, const vec3* v, const unsigned* vi
     loop_given<with(phong::presets::raytracer_phong, phong::evaluation::stable, true)>(P, n, v, visible, *m, user_lights(L, K), out, N);
     loop_given<with(phong::presets::raytracer_phong, phong::evaluation::fast, true)>(P, n, v, visible, *m, user_lights(L, K), out, N);
 }
-/// shade_incident: the shadow rays' directions and distances given (phong/incident.hpp)
+/// shade_incident: the shadow rays' directions and distances given (phong/sum/incident.hpp)
 void user_incident(const vec3* n, const vec3* v, const unsigned* visible, const phong::incident<float>* shadows, const vec3* kd,
                    const float* exponent, const phong::material<float>* m, const user_light* L, std::size_t K, vec3* out, std::size_t N)
 {

@@ -70,7 +70,7 @@ foreach(case RANGE 0 1)
 endforeach()
 
 # 5. -ffast-math: the stable mode's twofold route (double; float with precision = twofold) is a
-#    compile error naming the flag and the alternative (phong/detail/ieee.hpp); the exact, fast and
+#    compile error naming the flag and the alternative (phong/core/ieee.hpp); the exact, fast and
 #    float's wider stable mode compile (case 0).
 foreach(case RANGE 0 2)
   add_test(NAME fast_math_reject_${case}

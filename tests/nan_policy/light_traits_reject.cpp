@@ -2,7 +2,7 @@
 // that names light_traits (the fix), not a cascade from inside the route. Case 0 is the valid
 // control (the same type with its specialization); case 1 must fail. Built by
 // tests/nan_policy/checks.cmake.
-#include <phong/shade.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <vector>
 

@@ -11,10 +11,10 @@
 #include "property.hpp"
 #include "wide.hpp"
 
-#include <phong/features.hpp>
-#include <phong/light.hpp>
-#include <phong/material.hpp>
-#include <phong/shade.hpp>
+#include <phong/inputs/features.hpp>
+#include <phong/inputs/light.hpp>
+#include <phong/inputs/material.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>

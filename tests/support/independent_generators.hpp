@@ -11,9 +11,9 @@
 #pragma once
 
 #include <phong/accuracy.hpp>
-#include <phong/light.hpp>
-#include <phong/material.hpp>
-#include <phong/shade.hpp>
+#include <phong/inputs/light.hpp>
+#include <phong/inputs/material.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <algorithm>
 #include <cmath>

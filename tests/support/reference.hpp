@@ -6,11 +6,11 @@
 
 #include "wide.hpp"
 
-#include <phong/attenuation.hpp>
-#include <phong/features.hpp>
-#include <phong/light.hpp>
-#include <phong/material.hpp>
-#include <phong/shade.hpp>
+#include <phong/terms/attenuation.hpp>
+#include <phong/inputs/features.hpp>
+#include <phong/inputs/light.hpp>
+#include <phong/inputs/material.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <span>
 #include <vector>

@@ -19,7 +19,7 @@
 #include "reference.hpp"
 
 #include <phong/accuracy.hpp>
-#include <phong/shade.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <algorithm>
 #include <bit>

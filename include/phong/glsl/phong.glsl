@@ -58,7 +58,7 @@
 #define PHONG_MODE_EXACT 0
 #define PHONG_MODE_FAST 2
 
-// The presets (include/phong/features.hpp): only the fields not #defined already.
+// The presets (include/phong/inputs/features.hpp): only the fields not #defined already.
 #if defined(PHONG_PRESET_CLASSIC_PHONG)
 #  ifndef PHONG_SCENE_AMBIENT
 #    define PHONG_SCENE_AMBIENT 1

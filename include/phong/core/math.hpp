@@ -1,0 +1,333 @@
+// phong: scalar kernels (sqrt, exp, log, log1p, pow, fma, min/max/clamp, select).
+// SPDX-License-Identifier: MIT
+//
+// Every formula in phong calls these, never std:: directly, for two reasons:
+//  * constant evaluation: GLM 0.9.9.8 and the C++20 library have no constexpr sqrt/exp/log, so
+//    under std::is_constant_evaluated() a capped iterative path in long double runs instead
+//    (special values first, then range reduction, then a series; gcem's recipe). Its results
+//    agree with the run-time std:: path within `constexpr_tolerance_ulp` ulp (tested).
+//  * SIMD: the same templates run on SIMD batches; `math_traits<V>` is the customization point
+//    that phong/batch.hpp specializes for xsimd batches.
+#pragma once
+
+#include "config.hpp"
+#include "constexpr_math.hpp"
+#include "power.hpp"
+
+// g++ and clang++ on x86-64 with SSE2: sqrt through the instruction (math_traits::sqrt).
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__) && !defined(__CUDA_ARCH__) && !defined(PHONG_NO_X86_SQRT)
+#  define PHONG_X86_SQRT 1
+#else
+#  define PHONG_X86_SQRT 0
+#endif
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+#if defined(__NVCC__)
+// nvcc treats long double as double in device code and warns (#20208) at every use. Here long
+// double serves only the constant-evaluation kernels (detail::ce) and cos_degrees (run once per
+// light set-up): in device code they are as accurate as double allows, enough for float.
+#  pragma nv_diagnostic push
+#  pragma nv_diag_suppress 20208
+#endif
+
+namespace phong {
+
+/// Largest distance, in ulp of T, between the constant-evaluation path and std:: for sqrt, exp,
+/// log, log1p and pow on finite arguments whose result is a normal number.
+inline constexpr int constexpr_tolerance_ulp = 2;
+
+
+namespace detail {
+
+/// The error e of the product p = fl(a * b): a * b = p + e exactly (Veltkamp's split of a and b
+/// into halves of (digits + 1) / 2 bits, Dekker's product), for |a|, |b| below max / 2^((digits +
+/// 3) / 2) (the split overflows above) and e not subnormal. S is the lane type of V.
+template <class V, class S = V>
+PHONG_INLINE constexpr V dekker_product_error(const V& a, const V& b, const V& p)
+{
+    const V split = V(S((1ull << ((std::numeric_limits<S>::digits + 1) / 2)) + 1));
+    const V ca = ieee::opaque(split * a), ah = ieee::opaque(ca - ieee::opaque(ca - a)), al = a - ah;
+    const V cb = ieee::opaque(split * b), bh = ieee::opaque(cb - ieee::opaque(cb - b)), bl = b - bh;
+    return ieee::ordered_sum(ah * bh - p, ah * bl, al * bh, al * bl);
+}
+
+/// a*b + c with the product exact (Veltkamp split, Dekker's product), then two additions: exact
+/// whenever c = -fl(a*b) (the error-free products phong relies on), else within 1 ulp. For
+/// constant evaluation and for SIMD targets without an FMA instruction. S is the lane type of V.
+template <class V, class S = V>
+PHONG_INLINE constexpr V dekker_fma(const V& a, const V& b, const V& c)
+{
+    const V p = a * b;
+    return ieee::opaque(p + c) + dekker_product_error<V, S>(a, b, p);
+}
+
+/// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b). Any rounding to
+/// nearest, no condition on |a| and |b|; under -fassociative-math too (ieee::two_sum_error keeps
+/// the additions in order).
+template <class T> PHONG_INLINE constexpr T two_sum_error(T a, T b, T hi)
+{
+    return ieee::two_sum_error(a, b, hi);
+}
+
+} // namespace detail
+
+/// Customization point: how phong evaluates its scalar kernels on the number type V.
+/// The primary template serves float, double and long double (constexpr path + std:: path).
+/// phong/batch.hpp specializes it for SIMD batches.
+template <class V, class Enable = void>
+struct math_traits {
+    static_assert(std::is_floating_point_v<V>, "phong: no math_traits for this number type");
+    using scalar = V; ///< the type of one lane (V itself)
+    using mask = bool; ///< the result of a comparison of V
+
+    /// The correctly rounded square root (IEEE); constant evaluation: detail::ce::sqrt.
+    PHONG_INLINE static constexpr V sqrt(V x)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::sqrt(x));
+#if PHONG_X86_SQRT
+        // The instruction itself: IEEE's correctly rounded square root, the value std::sqrt gives.
+        // std::sqrt must set errno for x < 0, so compilers guard it with a compare and a libm call
+        // on a cold path, whose clobbered registers cost moves in every light loop (intrinsics
+        // add an instruction to clear the upper lanes).
+        if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
+            V r;
+#  if defined(__AVX__) // three operands: the upper lanes come from x itself, no false dependency
+            if constexpr (std::is_same_v<V, float>) __asm__("vsqrtss %1, %1, %0" : "=x"(r) : "x"(x));
+            else __asm__("vsqrtsd %1, %1, %0" : "=x"(r) : "x"(x));
+#  else // in place: no dependency on an unrelated register's upper lanes
+            r = x;
+            if constexpr (std::is_same_v<V, float>) __asm__("sqrtss %0, %0" : "+x"(r));
+            else __asm__("sqrtsd %0, %0" : "+x"(r));
+#  endif
+            return r;
+        }
+#endif
+        return std::sqrt(x);
+    }
+    /// 1/sqrt(x), correctly rounded twice (a division of a square root).
+    PHONG_INLINE static constexpr V rsqrt(V x)
+    {
+        // 1/0 is not a constant expression: give rsqrt(0) = inf explicitly, so that the guarded
+        // select(dd > 0, rsqrt(dd), 0) of normalize(0) etc. stays constexpr.
+        if (std::is_constant_evaluated() && x == V(0)) return std::numeric_limits<V>::infinity();
+        return V(1) / sqrt(x);
+    }
+    /// e^x (std::exp; constant evaluation: detail::ce::exp).
+    PHONG_INLINE static constexpr V exp(V x)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::exp(x));
+        return std::exp(x);
+    }
+    /// The natural logarithm (std::log; constant evaluation: detail::ce::log).
+    PHONG_INLINE static constexpr V log(V x)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log(x));
+        return std::log(x);
+    }
+    /// log(1 + x), accurate for small x (std::log1p; constant evaluation: detail::ce::log1p).
+    PHONG_INLINE static constexpr V log1p(V x)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log1p(x));
+        return std::log1p(x);
+    }
+    /// x^y (std::pow; constant evaluation: detail::ce::pow).
+    PHONG_INLINE static constexpr V pow(V x, V y)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::pow(x, y));
+        return std::pow(x, y);
+    }
+    /// x^m for x in [0, 1], m >= 0: float and double through detail/power.hpp (inline, no libm
+    /// call, constexpr too); long double through pow; CUDA device code through CUDA's pow.
+    PHONG_INLINE static constexpr V pow_unit(V x, V m)
+    {
+        if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
+#if defined(__CUDA_ARCH__)
+            return (x == V(0) && m == V(0)) ? V(1) : ::pow(x, m);
+#else
+            return detail::power::pow_unit(x, m); // float: shorter polynomials; double: the full kernel
+#endif
+        } else {
+            return pow(x, m);
+        }
+    }
+    /// a * b + c with one rounding. Constant evaluation: exact through Dekker's product.
+    PHONG_INLINE static constexpr V fma(V a, V b, V c)
+    {
+        if (std::is_constant_evaluated()) {
+            if constexpr (std::numeric_limits<V>::digits * 2 <= std::numeric_limits<detail::ce::wide>::digits) {
+                return static_cast<V>(static_cast<detail::ce::wide>(a) * b + c); // exact product
+            } else {
+                return detail::dekker_fma(a, b, c);
+            }
+        }
+        return std::fma(a, b, c);
+    }
+    /// a where m, else b.
+    PHONG_INLINE static constexpr V select(bool m, V a, V b) { return m ? a : b; }
+    /// Whether any lane of m is set (one lane here).
+    PHONG_INLINE static constexpr bool any(bool m) { return m; }
+    /// a and b, lane-wise.
+    PHONG_INLINE static constexpr bool both(bool a, bool b) { return a && b; }
+    /// Whether every lane of m is set (one lane here).
+    PHONG_INLINE static constexpr bool all(bool m) { return m; }
+    /// |x|, with abs(-0) = +0.
+    PHONG_INLINE static constexpr V abs(V x) { return x < 0 ? -x : (x == 0 ? V(0) : x); }
+    /// The smaller of a and b (b where b < a: a NaN in a is returned, one in b is not).
+    PHONG_INLINE static constexpr V min(V a, V b) { return b < a ? b : a; }
+    /// The larger of a and b (b where a < b: a NaN in a is returned, one in b is not).
+    PHONG_INLINE static constexpr V max(V a, V b) { return a < b ? b : a; }
+
+    /// A power of two 2^-e such that |x| * 2^-e lies in [1, 2) for normal x, clamped to stay a
+    /// normal number. Multiplying by it is exact, so a vector
+    /// scaled by it keeps its direction bit for bit while its squares neither overflow nor
+    /// underflow. x must be finite and >= 0. (Subnormal x lands in [2^-22, 2) for float.)
+    PHONG_INLINE static constexpr V inverse_pow2_scale(V x)
+    {
+        using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>;
+        if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
+            constexpr int mant = std::numeric_limits<V>::digits - 1;
+            constexpr bits_t max_biased = (bits_t(1) << (sizeof(V) * 8 - 1 - mant)) - 2; // 254 / 2046
+            const bits_t biased = (std::bit_cast<bits_t>(x) >> mant) & (max_biased + 1);
+            bits_t scale_biased = max_biased - biased; // exponent -(e): 2*bias - biased
+            if (biased == 0) scale_biased = max_biased; // subnormal: largest scale
+            if (scale_biased < 1) scale_biased = 1;
+            if (scale_biased > max_biased) scale_biased = max_biased;
+            return std::bit_cast<V>(scale_biased << mant);
+        } else {
+            // long double: by powers of two (used only by references and tests).
+            if (x == 0) return V(1);
+            int k = 0;
+            (void)detail::ce::reduce_pow2(static_cast<detail::ce::wide>(x), k);
+            return static_cast<V>(detail::ce::pow2(-k));
+        }
+    }
+
+};
+
+/// Mask type of V: bool for scalars, a SIMD mask for batches.
+template <class V> using mask_t = typename math_traits<V>::mask;
+/// The scalar type of V: V itself for scalars, the lane type for batches.
+template <class V> using scalar_t = typename math_traits<V>::scalar;
+/// The largest finite value of V's scalar type, as a V (std::numeric_limits<batch> is not specialized).
+template <class V> PHONG_INLINE constexpr V largest() { return V(std::numeric_limits<scalar_t<V>>::max()); }
+
+/// sqrt(x). Domain x >= 0; sqrt(-0) = -0, x < 0 gives NaN, sqrt(inf) = inf. Float and double at
+/// run time on x86-64 (g++, clang++): the sqrtss/sqrtsd instruction, the same correctly rounded
+/// value as std::sqrt without its errno side effect (PHONG_NO_X86_SQRT turns that off).
+template <class V> PHONG_INLINE constexpr V sqrt(V x) { return math_traits<V>::sqrt(x); }
+/// 1/sqrt(x) for x >= 0: rsqrt(0) = inf, rsqrt(inf) = 0; x < 0 or NaN gives NaN. Scalars:
+/// 1 / sqrt(x) (< 1 ulp); SIMD float lanes: a hardware estimate refined by one Newton step
+/// (< 2 ulp), see batch.hpp.
+template <class V> PHONG_INLINE constexpr V rsqrt(V x) { return math_traits<V>::rsqrt(x); }
+namespace detail {
+/// 1/sqrt(x) for x a positive normal number (the caller has checked, or selects the lanes
+/// where it is not away): SIMD float lanes skip rsqrt's guards for 0 and inf; elsewhere rsqrt.
+template <class V> PHONG_INLINE constexpr V rsqrt_normal(V x)
+{
+    if constexpr (requires { math_traits<V>::rsqrt_normal(x); }) return math_traits<V>::rsqrt_normal(x);
+    else return math_traits<V>::rsqrt(x);
+}
+} // namespace detail
+/// e^x. Overflow gives inf, underflow 0.
+template <class V> PHONG_INLINE constexpr V exp(V x) { return math_traits<V>::exp(x); }
+/// ln x. log(0) = -inf, x < 0 gives NaN.
+template <class V> PHONG_INLINE constexpr V log(V x) { return math_traits<V>::log(x); }
+/// ln(1 + x), accurate for small |x|. log1p(-1) = -inf, x < -1 gives NaN.
+template <class V> PHONG_INLINE constexpr V log1p(V x) { return math_traits<V>::log1p(x); }
+/// x^y (IEEE pow: pow(0, 0) = 1, pow(0, y > 0) = 0).
+template <class V> PHONG_INLINE constexpr V pow(V x, V y) { return math_traits<V>::pow(x, y); }
+/// x^m for a base x in [0, 1] and an exponent m >= 0: the specular and spot powers.
+/// pow_unit(0, 0) = 1, pow_unit(0, m > 0) = 0. Float and double: an inline kernel in double
+/// arithmetic (detail/power.hpp), also in constant evaluation. Double: relative error below
+/// 3 (|m log2 x| + m + 4) 2^-53, results below 2^-1022 flushed to 0. Float: shorter polynomials,
+/// within 1 ulp, correctly rounded but for near-ties (99.99 % of tests/power.test.cpp's inputs).
+/// Outside the domain: x > 1 with m < 0 runs the same kernel; otherwise (x > 1 with m > 0, x < 0,
+/// NaN, inf) IEEE pow's value.
+/// SIMD batches: their pow (batch.hpp).
+template <class V> PHONG_INLINE constexpr V pow_unit(V x, V m)
+{
+    if constexpr (requires { math_traits<V>::pow_unit(x, m); }) return math_traits<V>::pow_unit(x, m);
+    else return math_traits<V>::pow(x, m);
+}
+namespace detail {
+/// pow_unit for x in [0, 1] and a finite m >= 0 only (NaN outside but for 1^m = 1), without pow_unit's libm
+/// fallback (detail/power.hpp): the shading loop's power, whose m validate() has checked.
+/// AtMostOne: x <= 1 holds by construction (cosine_power's base, clamped to 1), so the kernel
+/// leaves out its test of y = m log2 x <= 0 (power::pow_unit_at_most_one); x > 1 then gives a
+/// meaningless value.
+template <bool AtMostOne = false, class V> PHONG_INLINE constexpr V pow_unit_in_domain(V x, V m)
+{
+#if !defined(__CUDA_ARCH__)
+    if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
+        if constexpr (AtMostOne) return power::pow_unit_at_most_one(x, m);
+        else return power::pow_unit_in_domain(x, m);
+    } else
+#endif
+        return phong::pow_unit(x, m);
+}
+/// pow_unit_in_domain<true>: the power of a base at most 1 by construction.
+template <class V> PHONG_INLINE constexpr V pow_unit_at_most_one(V x, V m) { return pow_unit_in_domain<true>(x, m); }
+} // namespace detail
+/// a * b + c rounded once (std::fma). Constant evaluation: exact when c = -fl(a b) (the
+/// error-free products phong uses), else within 1 ulp (float: formed in long double, rounded twice).
+template <class V> PHONG_INLINE constexpr V fma(V a, V b, V c) { return math_traits<V>::fma(a, b, c); }
+/// |x|.
+template <class V> PHONG_INLINE constexpr V abs(V x) { return math_traits<V>::abs(x); }
+/// min(a, b) = b < a ? b : a (std::min's NaN behaviour: a NaN `a` is returned).
+template <class V> PHONG_INLINE constexpr V min(V a, V b) { return math_traits<V>::min(a, b); }
+/// max(a, b) = a < b ? b : a (std::max's NaN behaviour: a NaN `a` is returned).
+template <class V> PHONG_INLINE constexpr V max(V a, V b) { return math_traits<V>::max(a, b); }
+/// clamp(x, lo, hi) = min(max(x, lo), hi); a NaN x is returned as NaN.
+template <class V> PHONG_INLINE constexpr V clamp(V x, V lo, V hi) { return min(max(x, lo), hi); }
+/// m ? a : b, lane-wise for SIMD (both sides are evaluated: keep them finite).
+template <class V> PHONG_INLINE constexpr V select(mask_t<V> m, V a, V b) { return math_traits<V>::select(m, a, b); }
+
+/// x^N for a compile-time integer N >= 0 by repeated squaring: no exp/log, exact pattern of
+/// roundings (at most 2 log2 N multiplications; squaring doubles the relative error already present,
+/// so the error is at most (N - 1) u relative, u = eps / 2, i.e. < N ulp). pow<0>(x) = 1 for every x.
+template <unsigned N, class V> PHONG_INLINE constexpr V pow(V x)
+{
+    if constexpr (N == 0) {
+        return V(1);
+    } else if constexpr (N == 1) {
+        return x;
+    } else {
+        const V half = pow<N / 2>(x);
+        if constexpr (N % 2 == 0) return half * half;
+        else return half * half * x;
+    }
+}
+
+/// cos(deg * pi / 180) for deg in [0, 180], exact at 0, 90 and 180 (used to convert OpenGL spot
+/// cutoffs, which are given in degrees, once when a light is made). A 40-term Taylor series in
+/// long double: accurate for |deg| <= 720, then it loses digits, and from about 2000 degrees it
+/// returns garbage (-inf in float from about 1e4): reduce the angle first. NaN gives NaN.
+template <class V> PHONG_INLINE constexpr V cos_degrees(V degrees)
+{
+    using W = detail::ce::wide;
+    W d = static_cast<W>(degrees);
+    if (d == 0) return V(1);
+    if (d == 90) return V(0);
+    if (d == 180) return V(-1);
+    constexpr W pi = 3.14159265358979323846264338327950288L;
+    const W x = d * pi / 180; // Taylor series; |x| <= pi converges in < 30 terms
+    W term = 1, sum = 1;
+    for (int i = 1; i < 40; ++i) {
+        term *= -x * x / static_cast<W>((2 * i - 1) * (2 * i));
+        const W next = sum + term;
+        if (next == sum) break;
+        sum = next;
+    }
+    return static_cast<V>(sum);
+}
+
+} // namespace phong
+
+#if defined(__NVCC__)
+#  pragma nv_diagnostic pop
+#endif

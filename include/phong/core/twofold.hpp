@@ -1,0 +1,238 @@
+// phong: twofold ("double-word") arithmetic for the stable evaluation mode.
+// SPDX-License-Identifier: MIT
+//
+// A value carried as hi + lo, |lo| <~ eps |hi|, built from error-free transformations (TwoSum,
+// TwoProd through fma), so unit vectors, n.l and the chords r - v and n - h are known to about
+// eps^2 instead of eps. Why: near the highlight 1 - r.v ~ theta^2 / 2 with theta ~ 1/sqrt(m), and
+// an error of eps in any unit vector moves 1 - r.v by ~ theta eps, i.e. the specular factor by
+// ~ m theta eps = sqrt(m) eps relative. Carrying the vectors twofold removes that term; what is
+// left is a few eps from the final roundings, log1p and exp (bounds in phong/accuracy.hpp).
+// Everything is branch-free (select), constexpr, and written on a scalar-like T so that the same
+// code runs on SIMD batches (it needs only +, -, *, /, phong::sqrt, phong::fma and select).
+// Requirement: phong::fma(a, b, c) must round once (math.hpp's contract), so fma(a, b, -a*b) is
+// the exact error of the product. A math_traits whose fma is a*b + c (Debian's xsimd 8.1: its
+// generic fma, used for every arch but fma3<sse>, AVX-512 included) silently turns every error
+// term into 0 and the stable mode back into a ~sqrt(m) eps method; such a type must emulate fma
+// exactly (Dekker's product, as math_traits::dekker_fma does for constant evaluation).
+#pragma once
+
+#include "vector.hpp"
+
+namespace phong::detail {
+
+/// fl(a b), as a value the compiler cannot fuse into a later addition. With FMA instructions
+/// enabled (-mfma, -march=native) and GCC's default -ffp-contract=fast (GNU dialects), a product
+/// feeding a sum may become one fma, and then the error-free transformations below, which need
+/// the rounded product, silently lose their error terms (measured: 1e-5 instead of 8e-7 at
+/// m = 1e3 in float). An fma result is never contracted again, and fma(a, b, +0) = fl(a b) (up to
+/// the sign of a zero), at the cost of one instruction like a multiplication. Without FMA
+/// instructions nothing can be fused, and the plain product is kept.
+template <class T> PHONG_INLINE constexpr T rounded_product(T a, T b)
+{
+#if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
+    return ieee::opaque(phong::fma(a, b, T(0)));
+#else
+    return ieee::opaque(a * b);
+#endif
+}
+
+/// The twofold route's TwoSum (math.hpp's two_sum_error), refused at compile time where the
+/// compiler may reassociate additions.
+template <class T> PHONG_INLINE constexpr T twofold_sum_error(T a, T b, T hi)
+{
+    static_assert(ieee::twofold_allowed<T>,
+                  "phong: the stable mode's twofold arithmetic (double, or features::precision = twofold) needs IEEE "
+                  "additions, and -ffast-math (-fassociative-math) reorders them: build this translation unit with "
+                  "-fno-associative-math (or -fno-fast-math), or use evaluation::exact or fast, or float's stable "
+                  "mode with precision = wider");
+    return two_sum_error(a, b, hi);
+}
+
+/// a - b = hi + lo exactly (TwoSum on a + (-b)); returns lo for hi = fl(a - b).
+template <class T> PHONG_INLINE constexpr T difference_error(T a, T b, T hi)
+{
+    return twofold_sum_error(a, -b, hi);
+}
+
+/// A unit vector carried twofold: hi + lo = d / |d| with an error of a few eps^2 per component.
+template <class T, glm::qualifier Q>
+struct unit_twofold {
+    glm::vec<3, T, Q> hi; ///< the unit vector rounded (0 when d = 0)
+    glm::vec<3, T, Q> lo; ///< its rounding error
+    T inv_scaled;         ///< 1 / |d * scale| (0 when d = 0): > 0 exactly when the direction exists
+    T length;             ///< |d| rounded (inf only if |d| exceeds the range of T)
+};
+
+/// The unit vector along the exact vector d + dlo (dlo: the rounding error of d, or 0).
+/// d is first rescaled by a power of two (exact), so the result is accurate for every finite
+/// nonzero d, subnormal or huge. Then with S = |d|^2 as a twofold sum and r ~ 1/sqrt(S) rounded,
+/// one Newton step on the residual e = 1 - S r^2 (computed exactly enough: 1 - fl(S r^2) is exact
+/// by Sterbenz) gives 1/|d| = r (1 + e/2) to O(eps^2), and the unit vector is d r + d r e/2 + dlo r.
+/// Edge: d = 0 gives 0 (and inv_scaled = 0, length = 0). A d that overflowed (an inf component,
+/// e.g. L.xyz - w Q with |w Q| > max although L, w and Q are finite) gives 0, inv_scaled = 0 and
+/// length = inf, never NaN: like a light at infinity with no direction.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr unit_twofold<T, Q> unit_twofold_of(const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& dlo)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    // Renormalize d + dlo first (then |dlo| <= ulp(d) / 2): where d cancels, as L.xyz - w Q does
+    // with an inexact w Q, the caller's dlo can be a sizeable fraction of d, and the O(dlo^2)
+    // terms dropped below would leave |hi + lo| off 1 by that much (a 4% bright diffuse term).
+    vec3 dh(T(0)), dl(T(0));
+    for (int k = 0; k < 3; ++k) {
+        dh[k] = d[k] + dlo[k];
+        dl[k] = twofold_sum_error(d[k], dlo[k], dh[k]);
+    }
+    const T largest_d = phong::max_abs(dh);
+    const mask_t<T> in_range = math_traits<T>::both(phong::max_abs(d) <= largest<T>(), largest_d <= largest<T>());
+    const T scale = math_traits<T>::inverse_pow2_scale(phong::select(in_range, largest_d, T(1)));
+    vec3 a(T(0)), al(T(0));
+    for (int k = 0; k < 3; ++k) {
+        a[k] = phong::select(in_range, dh[k] * scale, T(0));
+        al[k] = phong::select(in_range, dl[k] * scale, T(0)); // NaN when d overflowed
+    }
+    // S = |a + al|^2 = sh + sl (products exact by fma, sums by TwoSum; al^2 is below eps^2).
+    T sh = rounded_product(a[0], a[0]);
+    T sl = phong::fma(a[0], a[0], -sh) + T(2) * a[0] * al[0];
+    for (int k = 1; k < 3; ++k) {
+        const T p = rounded_product(a[k], a[k]);
+        const T pe = phong::fma(a[k], a[k], -p);
+        const T s = sh + p;
+        sl = sl + (twofold_sum_error(sh, p, s) + pe + T(2) * a[k] * al[k]);
+        sh = s;
+    }
+    const T s_hi = sh + sl;
+    sl = sl - (s_hi - sh);
+    sh = s_hi;
+    const mask_t<T> nonzero = sh > T(0);
+    const T r = phong::select(nonzero, T(1) / phong::sqrt(phong::select(nonzero, sh, T(1))), T(0));
+    // e = 1 - S r^2: r^2 = r2h + r2l exactly, sh r2h = th + tl exactly, 1 - th exact.
+    const T r2h = rounded_product(r, r);
+    const T r2l = phong::fma(r, r, -r2h);
+    const T th = rounded_product(sh, r2h);
+    const T tl = phong::fma(sh, r2h, -th);
+    const T e = phong::select(nonzero, ((T(1) - th) - tl) - sh * r2l - sl * r2h, T(0));
+    const T rl = r * e * T(0.5); // 1/|a| = r + rl + O(e^2)
+    unit_twofold<T, Q> u{vec3(T(0)), vec3(T(0)), r, T(0)};
+    for (int k = 0; k < 3; ++k) {
+        u.hi[k] = rounded_product(a[k], r);
+        u.lo[k] = phong::fma(a[k], r, -u.hi[k]) + (a[k] * rl + al[k] * r);
+    }
+    u.length = phong::select(in_range, phong::sqrt(sh) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
+    return u;
+}
+
+/// (ah + al) . (bh + bl) as a twofold value, returned rounded in hi and its error in lo:
+/// Dot2 on the high parts (exact products, TwoSum accumulation) plus the first-order cross terms.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr void dot_twofold(const glm::vec<3, T, Q>& ah, const glm::vec<3, T, Q>& al, const glm::vec<3, T, Q>& bh,
+                                    const glm::vec<3, T, Q>& bl, T& hi, T& lo)
+{
+    T p = rounded_product(ah[0], bh[0]);
+    T err = phong::fma(ah[0], bh[0], -p) + (ah[0] * bl[0] + al[0] * bh[0]);
+    for (int k = 1; k < 3; ++k) {
+        const T h = rounded_product(ah[k], bh[k]);
+        const T r = phong::fma(ah[k], bh[k], -h);
+        const T s = p + h;
+        err = err + (twofold_sum_error(p, h, s) + r + (ah[k] * bl[k] + al[k] * bh[k]));
+        p = s;
+    }
+    hi = p + err;
+    lo = err - (hi - p);
+}
+
+/// A specular cosine c (r.v or n.h) as its complement x = 1 - c and as c itself, both rounded once
+/// from the same twofold value: x keeps its relative accuracy where c is near 1 (a highlight), c
+/// where c is small (far from it: 1 - x rounded would leave c an absolute error of eps / 2, i.e.
+/// eps / (2 c) relative, and c^m m times that; 6e-3 at c = 1e-6, m = 1 in float).
+template <class T>
+struct cosine_complement {
+    T complement; ///< x = 1 - c = |chord|^2 / 2, rounded once
+    T cosine;     ///< c, rounded once where x >= 1/2 (there 1 - x is exact); elsewhere within eps of it
+};
+
+/// |c + c_lo|^2 / 2 and 1 minus it, each rounded once (products exact by fma; the c_lo^2 terms are
+/// below eps^2): the sum hi + lo is renormalized (Fast2Sum, |lo| <= |hi|), halved exactly, and the
+/// cosine is (1 - x) - x_lo, whose first difference is exact for x in [1/2, 2] (Sterbenz).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& c_lo)
+{
+    T hi = rounded_product(c[0], c[0]);
+    T lo = phong::fma(c[0], c[0], -hi) + T(2) * c[0] * c_lo[0];
+    for (int k = 1; k < 3; ++k) {
+        const T p = rounded_product(c[k], c[k]);
+        const T s = hi + p;
+        lo = lo + (twofold_sum_error(hi, p, s) + phong::fma(c[k], c[k], -p) + T(2) * c[k] * c_lo[k]);
+        hi = s;
+    }
+    const T sum = hi + lo;
+    const T sum_lo = lo - (sum - hi);
+    const T x = sum * T(0.5), x_lo = sum_lo * T(0.5);
+    return {x, (T(1) - x) - x_lo};
+}
+
+/// 1 - r.v = |r - v|^2 / 2 for Phong's r = 2 (n.l) n - l, from twofold n, l, v and n.l: the chord
+/// and its square are formed to O(eps^2) and rounded once, so the complement has a relative error
+/// of about 1 eps however close r is to v, and the cosine r.v too however close it is to 0
+/// (down to a few eps^2). Pre: n, l, v unit (or 0).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, T nl_hi,
+                                                    T nl_lo, const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
+                                                    const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
+{
+    glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
+    for (int k = 0; k < 3; ++k) {
+        const T q = rounded_product(nl_hi, nh[k]); // (n.l) n_k; 2 q + pe exact below
+        const T ph = T(2) * q;
+        const T pe = T(2) * (phong::fma(nl_hi, nh[k], -q) + (nl_hi * nlo[k] + nl_lo * nh[k]));
+        const T s1 = ph - lh[k];
+        const T e1 = twofold_sum_error(ph, -lh[k], s1);
+        const T s2 = s1 - vh[k];
+        const T e2 = twofold_sum_error(s1, -vh[k], s2);
+        c[k] = s2 + (((e1 + e2) + pe) - (llo[k] + vlo[k]));
+        c_lo[k] = (((e1 + e2) + pe) - (llo[k] + vlo[k])) - (c[k] - s2);
+    }
+    return half_square(c, c_lo);
+}
+
+/// 1 - n.h = |n - h|^2 / 2 and n.h for twofold unit n and h (chord and square to O(eps^2), each
+/// rounded once).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
+                                                    const glm::vec<3, T, Q>& hh, const glm::vec<3, T, Q>& hlo)
+{
+    glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
+    for (int k = 0; k < 3; ++k) {
+        const T s = nh[k] - hh[k];
+        const T lo = twofold_sum_error(nh[k], -hh[k], s) + (nlo[k] - hlo[k]);
+        c[k] = s + lo;
+        c_lo[k] = lo - (c[k] - s);
+    }
+    return half_square(c, c_lo);
+}
+
+/// 1 - n.h = |n - h|^2 / 2 for h = normalize(l + v), from twofold n, l and v: the sum l + v is
+/// formed twofold and renormalized, h = unit_twofold_of(sum) twofold, then one_minus_nh.
+/// Pre: n, l, v unit (or 0). Edge: l = -v (no halfway vector) gives 1 and n.h = 0.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
+                                                         const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
+                                                         const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
+{
+    glm::vec<3, T, Q> sum(T(0)), sum_lo(T(0));
+    for (int k = 0; k < 3; ++k) {
+        sum[k] = lh[k] + vh[k];
+        sum_lo[k] = twofold_sum_error(lh[k], vh[k], sum[k]) + (llo[k] + vlo[k]);
+        // Renormalized: where l and v cancel in the high parts, lo can exceed hi, and unit_twofold_of
+        // (which scales by the high parts) would then overflow lo to inf.
+        const T t = sum[k] + sum_lo[k];
+        sum_lo[k] = twofold_sum_error(sum[k], sum_lo[k], t);
+        sum[k] = t;
+    }
+    const unit_twofold<T, Q> h = unit_twofold_of(sum, sum_lo);
+    const cosine_complement<T> x = one_minus_nh(nh, nlo, h.hi, h.lo);
+    const mask_t<T> exists = h.inv_scaled > T(0);
+    return {phong::select(exists, x.complement, T(1)), phong::select(exists, x.cosine, T(0))};
+}
+
+} // namespace phong::detail

@@ -1,0 +1,243 @@
+// phong: math_traits for xsimd batches: every kernel of math.hpp, lane-wise (the SIMD backend's
+// arithmetic; the primary template in math.hpp serves scalars).
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "backend.hpp"
+#include "lanes_power.hpp"
+#include "../../core/math.hpp"
+
+#include <limits>
+#include <type_traits>
+
+#if PHONG_HAS_XSIMD
+
+#include "diagnostics_push.hpp"
+
+#if PHONG_FP_BARRIER && (defined(__x86_64__) || defined(__i386__)) && !defined(__SSE4_1__)
+#  define PHONG_DETAIL_LANEWISE_EXP 1 // math_traits<batch>::exp below
+#else
+#  define PHONG_DETAIL_LANEWISE_EXP 0
+#endif
+#if PHONG_FP_BARRIER && (defined(__x86_64__) || defined(__i386__)) && !defined(__AVX512DQ__)
+#  define PHONG_DETAIL_LANEWISE_LOG 1 // math_traits<batch>::log and log1p below
+#else
+#  define PHONG_DETAIL_LANEWISE_LOG 0
+#endif
+
+namespace phong {
+
+/// math_traits for xsimd batches: every kernel of math.hpp, lane-wise. exp, log and log1p are
+/// xsimd's (vectorized, within a few ulp); float rsqrt is the hardware estimate refined by one
+/// Newton step; fma is the fused instruction. pow is exp(y log x) restricted to x >= 0 with IEEE's
+/// pow(0, 0) = 1 (xsimd's own pow returns 0 there).
+template <class T, class A>
+struct math_traits<xsimd::batch<T, A>> {
+    using V = xsimd::batch<T, A>;
+    using scalar = T;
+    using mask = xsimd::batch_bool<T, A>;
+    static constexpr bool float_lanes = std::is_same_v<T, float>;
+
+    PHONG_LANES_INLINE static V sqrt(const V& x) { return xsimd::sqrt(x); }
+    /// 1/sqrt(x). Float lanes with AVX-512 or AVX: hardware estimate + one Newton step
+    /// (< 2 ulp); elsewhere 1/sqrt(x). rsqrt(0) = inf, rsqrt(inf) = 0.
+    PHONG_LANES_INLINE static V rsqrt(const V& x)
+    {
+        if constexpr (has_rsqrt_estimate) return newton_rsqrt(x, rsqrt_estimate(x));
+        else return V(T(1)) / xsimd::sqrt(x);
+    }
+    /// 1/sqrt(x) for x a positive normal number (detail::rsqrt_normal): rsqrt without the guards
+    /// for 0 and inf (other x: unspecified, maybe NaN).
+    PHONG_LANES_INLINE static V rsqrt_normal(const V& x)
+    {
+        if constexpr (has_rsqrt_estimate) return rsqrt_newton_correction(x, rsqrt_estimate(x));
+        else return V(T(1)) / xsimd::sqrt(x);
+    }
+    /// x >= min and x <= max of T (x a positive normal number: the exact mode's test of a squared
+    /// length). AVX-512DQ: one vfpclass for every other class (zeros, subnormals, negatives,
+    /// infinities, NaN) in place of two compares.
+    PHONG_LANES_INLINE static mask positive_normal(const V& x)
+    {
+#if defined(__AVX512DQ__)
+        if constexpr (float_lanes && std::is_base_of_v<xsimd::avx512f, A>)
+            return mask(typename mask::register_type(_knot_mask16(_mm512_fpclass_ps_mask(x, 0xff))));
+        else if constexpr (std::is_same_v<T, double> && std::is_base_of_v<xsimd::avx512f, A>)
+            return mask(typename mask::register_type(_knot_mask8(_mm512_fpclass_pd_mask(x, 0xff))));
+#endif
+        return (x >= V(std::numeric_limits<T>::min())) && (x <= V(std::numeric_limits<T>::max()));
+    }
+    /// m && positive_normal(x) (AVX-512DQ: vfpclass and one kandn).
+    PHONG_LANES_INLINE static mask both_positive_normal(const mask& m, const V& x)
+    {
+#if defined(__AVX512DQ__)
+        if constexpr (float_lanes && std::is_base_of_v<xsimd::avx512f, A>)
+            return mask(typename mask::register_type(_kandn_mask16(_mm512_fpclass_ps_mask(x, 0xff), m)));
+        else if constexpr (std::is_same_v<T, double> && std::is_base_of_v<xsimd::avx512f, A>)
+            return mask(typename mask::register_type(_kandn_mask8(_mm512_fpclass_pd_mask(x, 0xff), m)));
+#endif
+        return m && positive_normal(x);
+    }
+    /// all(a && b) (AVX-512: one kortest of the complements).
+    PHONG_LANES_INLINE static bool all_both(const mask& a, const mask& b)
+    {
+#if defined(__AVX512DQ__)
+        if constexpr (float_lanes && std::is_base_of_v<xsimd::avx512f, A>)
+            return _kortestz_mask16_u8(_knot_mask16(a), _knot_mask16(b));
+        else if constexpr (std::is_same_v<T, double> && std::is_base_of_v<xsimd::avx512f, A>)
+            return _kortestz_mask8_u8(_knot_mask8(a), _knot_mask8(b));
+#endif
+        return xsimd::all(a && b);
+    }
+    /// e^x, lane-wise: xsimd::exp on the argument clamped to [minlog, maxlog] (xsimd's own
+    /// thresholds: -88.38 / 88.38 in float, -708.40 / 709.78 in double), NaN passed through.
+    /// Why: xsimd 8.1's exp converts round(x / ln 2) to an integer before it looks at the range,
+    /// and where the ISA has no vector conversion (double below AVX-512DQ: SSE2, AVX, AVX2) that
+    /// is a scalar static_cast, undefined (UBSan: float-cast-overflow) for |x| beyond 2^63 and for
+    /// NaN. Such x are in the model's domain: the stable mode's exp(m log1p(-x)) with m = 1e30 in
+    /// double, or pow(x, y) with y = 1e38 in float. The clamp cannot change a result: xsimd's exp
+    /// returns exactly 0 for every x <= minlog and +inf for every x >= maxlog (its final selects),
+    /// so exp(clamp(x)) == exp(x) for every non-NaN x; and exp(NaN) = NaN here as before.
+    /// -ffast-math on x86 (PHONG_FP_BARRIER): two of xsimd 8.1's rounding tricks have no barrier
+    /// that clang++ respects. Without SSE4.1, exp rounds x / ln 2 by (v + 2^52) - 2^52 behind a
+    /// volatile read back through a non-volatile cast, folded to v; below AVX-512DQ, double's log
+    /// and log1p convert their int64 exponent to double by magic-number sums, reassociated into a
+    /// wrong exponent. There these kernels run std:: lane by lane (in those builds only).
+    template <class F> PHONG_LANES_INLINE static V lanewise(const V& x, F f)
+    {
+        alignas(A::alignment()) T lanes[V::size];
+        x.store_aligned(lanes);
+        for (T& e : lanes) e = f(e);
+        return V::load_aligned(lanes);
+    }
+    PHONG_LANES_INLINE static V exp(const V& x)
+    {
+        const V lo = xsimd::constants::minlog<V>(), hi = xsimd::constants::maxlog<V>();
+        const V clamped = xsimd::select(x > lo, xsimd::select(x < hi, x, hi), lo); // NaN: lo
+#if PHONG_DETAIL_LANEWISE_EXP
+        return xsimd::select(x == x, lanewise(clamped, [](T e) { return std::exp(e); }), x);
+#else
+        return xsimd::select(x == x, xsimd::exp(clamped), x);
+#endif
+    }
+    /// log and log1p: xsimd's (no integer conversion of the argument: defined for every input).
+    PHONG_LANES_INLINE static V log(const V& x)
+    {
+#if PHONG_DETAIL_LANEWISE_LOG
+        if constexpr (!float_lanes) return lanewise(x, [](T e) { return std::log(e); });
+#endif
+        return xsimd::log(x);
+    }
+    PHONG_LANES_INLINE static V log1p(const V& x)
+    {
+#if PHONG_DETAIL_LANEWISE_LOG
+        if constexpr (!float_lanes) return lanewise(x, [](T e) { return std::log1p(e); });
+#endif
+        return xsimd::log1p(x);
+    }
+    /// x^y for x in [0, 1], y >= 0 (the lighting model's domain): exp(y log x) with xsimd's
+    /// kernels (exp clamped as above: y log x is -inf or below -1e300 for large y), pow(0, 0) = 1,
+    /// pow(0, y > 0) = 0 (xsimd's own pow returns 0 for pow(0, 0)).
+    PHONG_LANES_INLINE static V pow(const V& x, const V& y)
+    {
+        const V p = exp(y * log(xsimd::select(x > V(T(0)), x, V(T(1)))));
+        return xsimd::select(x > V(T(0)), p, detail::power_of_zero(y));
+    }
+    /// x^m for x in [0, 1], m >= 0 (the specular and spot powers of the exact mode). Float lanes:
+    /// detail/simd/lanes_power.hpp's polynomial kernel, relative error <= (3.5 |m log2 x| + 2.5) u
+    /// (detail::lanes::pow_unit_lanes_error); double lanes: pow above.
+    PHONG_LANES_INLINE static V pow_unit(const V& x, const V& m)
+    {
+        if constexpr (float_lanes) return detail::lanes::pow_unit(x, m);
+        else return pow(x, m);
+    }
+    /// pow_unit with m_is_zero = (m == 0) given (computed once per call by shade_batch). Both
+    /// kinds of lanes give x <= 0 and NaN the power of 0 (0, or 1 for m = 0).
+    PHONG_LANES_INLINE static V pow_unit(const V& x, const V& m, const mask& m_is_zero)
+    {
+        if constexpr (float_lanes) return detail::lanes::pow_unit(x, m, m_is_zero);
+        else return pow(x, m);
+    }
+    /// Float lanes: x^m for x in [0, 1] and 0 <= m <= 2^100 where x > 0 or m = 0; other lanes
+    /// unspecified (finite), for the caller to select away (detail/simd/lanes_power.hpp's pow_unit_positive).
+    template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
+    PHONG_LANES_INLINE static V pow_unit_positive(const V& x, const V& m) { return detail::lanes::pow_unit_positive(x, m); }
+    /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
+    /// xsimd's kernels (exp clamped as above: m log1p(-x) reaches -1e30 and below for the
+    /// shininess validate accepts); x >= 1 gives 0, and 1 for m = 0.
+    /// Float lanes: detail/simd/lanes_power.hpp's polynomial kernel (log2(1 - x) from t = -x itself near
+    /// x = 0), relative error <= (6.5 |m log2(1 - x)| + 2.5) u (pow_one_minus_lanes_error).
+    PHONG_LANES_INLINE static V pow_one_minus(const V& x, const V& m)
+    {
+        if constexpr (float_lanes) return detail::lanes::pow_one_minus(xsimd::max(x, V(T(0))), m);
+        const V xc = xsimd::min(x, V(T(1)));
+        const auto inside = xc < V(T(1));
+        const V lg = log1p(-xsimd::select(inside, xc, V(T(0))));
+        const V r = exp(m * lg);
+        return xsimd::select(inside, r, detail::power_of_zero(m));
+    }
+    /// a * b + c rounded once (detail::simd::fma: the fused instruction, or Dekker's exact product).
+    PHONG_LANES_INLINE static V fma(const V& a, const V& b, const V& c) { return detail::simd::fma(a, b, c); }
+    /// a * b + c by Dekker's split (detail::simd::split_fma), whatever the target.
+    PHONG_LANES_INLINE static V split_fma(const V& a, const V& b, const V& c) { return detail::simd::split_fma(a, b, c); }
+    static V select(const mask& m, const V& a, const V& b) { return xsimd::select(m, a, b); }
+    static bool any(const mask& m) { return xsimd::any(m); }
+    static bool all(const mask& m) { return xsimd::all(m); }
+    static mask both(const mask& a, const mask& b) { return a && b; }
+    static V abs(const V& x) { return xsimd::abs(x); }
+    static V min(const V& a, const V& b) { return xsimd::min(a, b); }
+    static V max(const V& a, const V& b) { return xsimd::max(a, b); }
+
+    /// The power of two of math_traits<T>::inverse_pow2_scale, lane-wise: 2^(bias - e) has the
+    /// exponent field (2 bias) - (x's exponent field), one integer subtraction; x's above 2^bias
+    /// (where that would underflow) take 2^(1 - bias). Integer selects are avoided on purpose
+    /// (xsimd 8.1 does not compile them for AVX-512BW at -O0).
+    static V inverse_pow2_scale(const V& x)
+    {
+        using I = xsimd::as_integer_t<T>;
+        using IV = xsimd::batch<I, A>;
+        constexpr int mant = std::numeric_limits<T>::digits - 1;
+        constexpr I one = I(1) << mant;                                       // exponent field 1: 2^(1 - bias)
+        constexpr I exponent_mask = ((I(1) << (sizeof(T) * 8 - 1 - mant)) - 1) << mant; // all exponent bits
+        constexpr I two_bias = exponent_mask - one;                           // field 2 bias: 2^bias
+        const IV scale_bits = IV(two_bias) - (xsimd::bitwise_cast<IV>(x) & IV(exponent_mask));
+        const V two_pow_bias = xsimd::bitwise_cast<V>(IV(two_bias));
+        return xsimd::select(x >= two_pow_bias, xsimd::bitwise_cast<V>(IV(one)), xsimd::bitwise_cast<V>(scale_bits));
+    }
+
+private:
+    /// Float lanes with a hardware 1/sqrt estimate: AVX-512 (relative error 2^-14) or AVX (1.5 2^-12).
+    static constexpr bool has_rsqrt_estimate =
+        float_lanes && (std::is_base_of_v<xsimd::avx512f, A> || std::is_base_of_v<xsimd::avx, A>);
+    /// That estimate (has_rsqrt_estimate only).
+    PHONG_LANES_INLINE static V rsqrt_estimate(const V& x)
+    {
+        if constexpr (std::is_base_of_v<xsimd::avx512f, A>) return V(_mm512_rsqrt14_ps(x));
+        else return V(_mm256_rsqrt_ps(x));
+    }
+    /// One Newton step for 1/sqrt(x) from an estimate.
+    /// Correction form y0 + (y0 / 2)(1 - (x y0) y0) with fused multiply-adds: the step squares the
+    /// estimate's error (1.5 e0^2), and the roundings add about 1.5 u (x y0 rounded, halved by
+    /// y0 / 2; the last fma): 1.6 u with AVX-512's 2^-14 estimate, 4.9 u with AVX's 1.5 2^-12.
+    /// The exact mode's bounds count that 1.6 u (accuracy.hpp). Beside it, two other refinements
+    /// on purpose: the fast mode's product form r (3/2 - (x/2) r^2) (fast::detail::rsqrt_newton_product,
+    /// fast_math.hpp: about 2.5 u of roundings, and no fma needed for its scalar route) and the
+    /// stable lanes' fourth-order correction in double (stable_lanes::rsqrt_normal, for
+    /// double's accuracy in one step). Each rounds differently: one in place of another would
+    /// change that mode's bits or loosen its bound.
+    PHONG_LANES_INLINE static V rsqrt_newton_correction(const V& x, const V& estimate)
+    {
+        const V residual = fma(-(x * estimate), estimate, V(T(1))); // 1 - x y0^2
+        return fma(estimate * V(T(0.5)), residual, estimate);
+    }
+    static V newton_rsqrt(const V& x, const V& estimate)
+    {
+        const V refined = rsqrt_newton_correction(x, estimate);
+        const auto finite_nonzero = phong::detail::ieee::positive_finite(estimate);
+        return xsimd::select(finite_nonzero, refined, estimate);
+    }
+};
+
+} // namespace phong
+
+#include "diagnostics_pop.hpp"
+#endif // PHONG_HAS_XSIMD

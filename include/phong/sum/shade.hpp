@@ -1,0 +1,270 @@
+// phong: the full multi-light sum, shade<features>(...), and the per-vertex pipeline of seed 003.
+// SPDX-License-Identifier: MIT
+//
+// This header only orchestrates: prepare the point, add every light, finish (detail/route.hpp
+// picks F's route and loops over the lights). The arithmetic of each evaluation route lives in
+// its own unit, one small function per step of the data flow:
+// detail/exact.hpp (the exact mode, and the stable mode's wider route for float: the exact route
+// in double) and detail/stable.hpp (the stable mode's twofold route); the steps that every route
+// shares are in detail/light_terms.hpp and in the public term headers (direction.hpp,
+// attenuation.hpp, specular.hpp); the colour from the sums (color<F>, shading_terms, finish) is
+// shading_terms.hpp's.
+#pragma once
+
+#include "../routes/route.hpp"
+#include "../inputs/environment.hpp"
+#include "../inputs/features.hpp"
+#include "../inputs/light.hpp"
+#include "../inputs/material.hpp"
+#include "../terms/normal.hpp"
+#include "shading_terms.hpp"
+#include "../terms/view.hpp"
+#include "../inputs/visibility.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <utility>
+
+namespace phong {
+
+namespace detail {
+
+/// validate(material) and validate(environment): a compile error in constant evaluation, an
+/// assertion in debug builds, nothing at all under NDEBUG (not even evaluated).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const environment<T, Q>& env)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+#if defined(NDEBUG)
+        if (!std::is_constant_evaluated()) return;
+#endif
+        const validation vm = phong::validate(mat);
+        require(static_cast<bool>(vm), vm.message());
+        const validation ve = phong::validate(env);
+        require(static_cast<bool>(ve), ve.message());
+    }
+}
+
+/// The stable mode's wider path applies: float arithmetic carried out in double.
+template <features F, class T>
+inline constexpr bool widened = F.mode == evaluation::stable && F.precision == stable_precision::wider && std::is_same_v<T, float>;
+
+/// F as the wider path runs it: the exact mode's formulas (in double, on float inputs).
+template <features F>
+inline constexpr features exact_of = [] {
+    features e = F;
+    e.mode = evaluation::exact;
+    return e;
+}();
+
+template <class W, class T, glm::qualifier Q>
+PHONG_INLINE constexpr material<W, Q> widen(const material<T, Q>& m)
+{
+    return {glm::vec<3, W, Q>(m.ka), glm::vec<3, W, Q>(m.kd), glm::vec<3, W, Q>(m.ks), glm::vec<3, W, Q>(m.emission), W(m.shininess), W(m.alpha)};
+}
+template <class W, class T, glm::qualifier Q>
+PHONG_INLINE constexpr environment<W, Q> widen(const environment<T, Q>& e)
+{
+    return {glm::vec<3, W, Q>(e.ambient), glm::vec<4, W, Q>(e.eye)};
+}
+
+/// features::unit_inputs' precondition: |v| = 1 within 1e-3 and finite (debug builds, constant evaluation).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>& v, [[maybe_unused]] const char* message)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+#if defined(NDEBUG)
+        if (!std::is_constant_evaluated()) return;
+#endif
+        const T vv = phong::dot(v, v);
+        require(vv >= T(0.998) && vv <= T(1.002), message);
+    }
+}
+
+/// prepare, every light, finish: the terms of the model at one point in arithmetic type T (the
+/// lights' scalar type may be narrower: the wider route). Check: as each_light's.
+template <features F, bool Check = true, class T, glm::qualifier Q, class Lights>
+PHONG_INLINE constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                                const glm::vec<3, T, Q>& given_view, const material<T, Q>& mat,
+                                                Lights&& lights, const environment<T, Q>& env, bool front_facing)
+{
+    const frame_t<F, T, Q> s = detail::prepare<F>(position, normal, given_view, env, front_facing);
+    light_sums<T, Q> sums{};
+    add_lights<F, Check>(sums, s, static_cast<Lights&&>(lights), mat.shininess);
+    return terms_of<F>(sums, s, mat, env);
+}
+
+/// The arithmetic type of shade<F> on T: double for float's stable mode (the wider route), else T.
+template <features F, class T>
+using arithmetic_t = std::conditional_t<widened<F, T>, double, T>;
+
+/// shade<F>'s checks of its parameters: the material, the environment, and unit_inputs' unit vectors.
+template <features F, class T, glm::qualifier Q>
+PHONG_INLINE constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q>& normal, [[maybe_unused]] const glm::vec<3, T, Q>& view,
+                                     const material<T, Q>& mat, const environment<T, Q>& env)
+{
+    check_parameters(mat, env);
+    if constexpr (F.unit_inputs) {
+        check_unit(normal, "shade: normal must be unit length (features::unit_inputs)");
+        if constexpr (F.view == view_model::given) check_unit(view, "shade: view vector must be unit length (features::unit_inputs)");
+        if constexpr (F.view == view_model::fixed_direction)
+            check_unit(glm::vec<3, T, Q>(env.eye), "shade: environment::eye.xyz must be unit length (fixed_direction, features::unit_inputs)");
+    }
+}
+
+/// shade<F>'s body for either view argument: parameters checked, then the route (float's stable
+/// mode: the exact route in double). The terms come in the arithmetic type. Check = false: no
+/// check of the parameters and lights (shade_batch checked them once per call).
+template <features F, bool Check = true, class T, glm::qualifier Q, class Lights>
+PHONG_INLINE constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                                                 const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
+                                                                 Lights&& lights, const environment<T, Q>& env, bool front_facing)
+{
+    static_assert(light_list<Lights>, "phong: the lights must be a range of phong::light<T> or of a type with a "
+                                      "phong::light_traits specialization (position, diffuse, specular; see light.hpp)");
+    if constexpr (!light_list<Lights>) {
+        return {}; // not instantiated further: the static_assert above is the one error reported
+    } else if constexpr (widened<F, T>) {
+        if constexpr (Check) check_inputs<F>(normal, view, mat, env);
+        using W = double;
+        return evaluate<exact_of<F>, Check>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view),
+                                     widen<W>(mat), static_cast<Lights&&>(lights), widen<W>(env), front_facing);
+    } else {
+        if constexpr (Check) check_inputs<F>(normal, view, mat, env);
+        return evaluate<F, Check>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing);
+    }
+}
+
+} // namespace detail
+
+/// The full local lighting model at one point (seeds 000, 001 and 003 are presets of it):
+///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0)
+///                + ks sum_i f_i Ls_i s_i,
+///   s_i = max(r_i.v, 0)^m (r_i = reflect(-l_i, n)) or max(n.h_i, 0)^m (h_i = normalize(l_i + v)),
+///   f_i = attenuation(d_i) * spot_i,   l_i = normalize(L_i.xyz - L_i.w Q),
+/// with rgba = (I, alpha) when F.alpha. Each term is compiled only when F asks for it.
+///
+/// position, normal: Q and its normal (any length, normalized here; unit and used as given with
+/// features::unit_inputs) in the lights' coordinates.
+/// lights: light<T> (or light<U>) values, or the renderer's own light type read through its
+/// light_traits specialization (light.hpp: nothing is copied into a light<T>), from any input
+/// range: a std::array<light, N> (unrolled at compile time), std::span, std::vector, a view
+/// (std::views::filter of the lights a shadow test lets through), or masked(lights, bits) /
+/// weighted(lights, weights) (visibility.hpp). Each light is read once. Anything else (a type
+/// without light_traits) is a compile error that names light_traits.
+/// The viewer: per features::view (eye_at_origin: v = normalize(-Q); fixed_direction, eye_point:
+/// from env.eye). For view_model::given, use the overload below that takes v.
+/// front_facing: read only for facing::flag.
+///
+/// Pre: validate(mat), validate(env) and validate(L) for every light, weights of weighted() finite
+/// and >= 0 (checked: a compile error in constant evaluation, the precondition handler with a
+/// message naming the field in debug builds, detail/config.hpp; nothing under NDEBUG).
+/// Edges (finite input never gives NaN or inf):
+///  * a light at Q (or a directional light with xyz = 0): no direction; that light adds only its
+///    ambient term;
+///  * normal = 0: no diffuse or specular from any light;
+///  * no view vector (Q at the eye, a zero given v): the diffuse terms are kept (they do not need
+///    v; as OpenGL implementations do), no specular term;
+///  * Blinn with l = -v: n.h taken as 0 (0 for m > 0, 1 for m = 0);
+///  * m = 0: the specular base^0 = 1 wherever the specular term is on (pow(0, 0) = 1);
+///  * c0 = 0 and d -> 0: f capped at 1 / attenuation_denominator_min<T>;
+///  * NaN or inf in position, normal or the view input read (eye_point: env.eye; given: v):
+///    every channel is NaN (not kept when features::unit_inputs' precondition is broken).
+/// Accuracy: per F.mode and input class, the constants phong::accuracy::bounds<M, T, P> (tested in
+/// tests/accuracy.test.cpp, table in README.md). exact: a vector whose squared length is not a
+/// normal number (|L - Q|, |n| or |Q| below ~1.1e-19 or above ~1.8e19 in float, 1.5e-154 and
+/// 1.3e154 in double) is dropped: its light gives 0 (relative error 1), never NaN. stable: every
+/// finite input. Float with F.precision = wider (the default): the exact formulas evaluated in
+/// double (every float input is exact there and no square of one overflows or underflows) and
+/// rounded once: within 1 ulp, correctly rounded but for near-ties, m = 1e5 and n.l ~ 1e-6
+/// included, spot lights too (the model reads the direction of a spot axis, which validate
+/// accepts within 1e-3 of unit length: every route normalizes it, the wider route in double).
+/// Elsewhere a spot adds its own conditioning: the cone cosine's few eps of rounding times the
+/// spot's slope (smoothstep: up to 1.5 / (cos_inner - cos_outer); OpenGL: e / c). Double, and float with F.precision = twofold: unit vectors, n.l and the specular
+/// chords carried twofold (detail/twofold.hpp), within a few ulp on the same classes.
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_INLINE constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                        const material<T, Q>& mat, Lights&& lights,
+                                        const environment<T, Q>& env = {}, bool front_facing = true)
+{
+    static_assert(F.view != view_model::given, "view_model::given: pass the view vector, shade<F>(position, normal, view, ...)");
+    const glm::vec<3, T, Q> unused(T(0));
+    return color<F, T, Q>(detail::total_of<F>(detail::shade_at<F>(position, normal, unused, mat, static_cast<Lights&&>(lights), env, front_facing)));
+}
+
+/// shade<F> with the view vector given per call (features::view = view_model::given): view is
+/// the vector from the point toward the viewer, any length (unit with features::unit_inputs).
+/// A ray tracer passes -ray.dir: right for primary, reflected and refracted rays alike (an eye
+/// point is right for primary rays only). Everything else as above; a NaN or inf view vector
+/// makes every channel NaN, a zero one gives no diffuse or specular term.
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_INLINE constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                        const glm::vec<3, T, Q>& view, const material<T, Q>& mat, Lights&& lights,
+                                        const environment<T, Q>& env = {}, bool front_facing = true)
+{
+    static_assert(F.view == view_model::given, "a view vector is read only with features::view = view_model::given");
+    return color<F, T, Q>(detail::total_of<F>(detail::shade_at<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing)));
+}
+
+namespace detail {
+/// The public terms: the point's poison in every one, so that a NaN point has every term NaN.
+template <class A, glm::qualifier Q>
+PHONG_INLINE constexpr shading_terms<A, Q> poisoned(shading_terms<A, Q> t)
+{
+    const A poison = t.alpha - t.alpha; // 0, or NaN for a NaN point (alpha carries the poison)
+    t.ambient += poison;
+    t.diffuse += poison;
+    t.specular += poison;
+    return t;
+}
+} // namespace detail
+
+/// The same model as shade<F>, with its terms returned separately (emission, ambient, diffuse,
+/// specular, alpha; see shading_terms), for renderers that weight, tone-map or store them apart.
+/// terms.sum() (emission + ambient + diffuse + specular, in that order) is shade<F>'s colour bit
+/// for bit. The terms are in shade<F>'s arithmetic type: double for float's stable mode (the
+/// wider route, whose colour is the double sum rounded once: float(terms.sum()) is shade<F>'s
+/// colour), T otherwise. Arguments, preconditions and edges as shade<F>.
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_INLINE constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                                                            const material<T, Q>& mat, Lights&& lights,
+                                                                            const environment<T, Q>& env = {}, bool front_facing = true)
+{
+    static_assert(F.view != view_model::given, "view_model::given: pass the view vector, shade_terms<F>(position, normal, view, ...)");
+    const glm::vec<3, T, Q> unused(T(0));
+    return detail::poisoned(detail::shade_at<F>(position, normal, unused, mat, static_cast<Lights&&>(lights), env, front_facing));
+}
+
+/// shade_terms<F> with the view vector given per call (view_model::given).
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_INLINE constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
+                                                                            const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
+                                                                            Lights&& lights, const environment<T, Q>& env = {},
+                                                                            bool front_facing = true)
+{
+    static_assert(F.view == view_model::given, "a view vector is read only with features::view = view_model::given");
+    return detail::poisoned(detail::shade_at<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing));
+}
+
+/// Seed 003's per-vertex pipeline (phong.vert, diffuse.vert): object-space position and normal,
+///   eyeCoords = ModelView * (p, 1),  tnorm = normalize(NormalMatrix * n),
+/// then shade<F>(eyeCoords.xyz, tnorm, ...) with lights in eye coordinates.
+/// Pre: model_view affine (last row 0, 0, 0, 1), as in the seed, which drops eyeCoords.w.
+/// normal_matrix(model_view) gives NormalMatrix. Everything else as shade<F> (F.view must not be
+/// view_model::given: no per-vertex v here), with transform_normal's edges for the normal; a
+/// vertex whose eye coordinates overflow T is shaded as an inf position (NaN in every channel).
+template <features F, class T, glm::qualifier Q, class Lights>
+PHONG_INLINE constexpr color<F, T, Q> shade_vertex(const glm::vec<3, T, Q>& vertex_position, const glm::vec<3, T, Q>& vertex_normal,
+                                               const glm::mat<4, 4, T, Q>& model_view, const glm::mat<3, 3, T, Q>& normal_mat,
+                                               const material<T, Q>& mat, Lights&& lights,
+                                               const environment<T, Q>& env = {})
+{
+    const glm::vec<4, T, Q> eye = model_view[0] * vertex_position.x + model_view[1] * vertex_position.y +
+                                  model_view[2] * vertex_position.z + model_view[3];
+    return shade<F>(glm::vec<3, T, Q>(eye.x, eye.y, eye.z), phong::transform_normal(normal_mat, vertex_normal), mat,
+                    static_cast<Lights&&>(lights), env);
+}
+
+} // namespace phong

@@ -1,0 +1,146 @@
+// phong: the specular factor, reflection-based (Phong) and halfway-based (Blinn-Phong).
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "../core/vector.hpp"
+
+#include <limits>
+
+namespace phong {
+
+/// (1 - x)^m for x in [0, 1], m >= 0, without the rounding amplification of pow(1 - x, m):
+///   exp(m * log1p(-x)), with m = 0 giving exactly 1 (pow(0, 0) = 1; m * log1p(-1) is never
+///   formed as 0 * -inf, and no finite product overflows, so it is a constant expression too).
+/// For unit vectors a, b: 1 - a.b = |a - b|^2 / 2, so with x = |a - b|^2 / 2 the relative error
+/// of the result is about (|m log1p(-x)| + 2) eps plus m times the absolute error of x (x from
+/// twofold unit vectors, as shade's stable mode does, makes that last term about m x eps).
+/// Edge: x >= 1 gives 0 for m > 0 and 1 for m = 0 (pow(0, 0) = 1); x = 0 gives 1.
+template <class T>
+PHONG_INLINE constexpr T pow_one_minus(T x, T m)
+{
+    if constexpr (requires { math_traits<T>::pow_one_minus(x, m); }) return math_traits<T>::pow_one_minus(x, m); // SIMD kernels
+    const T lg = phong::log1p(-phong::min(x, T(1))); // -inf at x = 1
+    const mask_t<T> positive = m > T(0);
+    return phong::exp(phong::select(positive, phong::select(positive, m, T(1)) * lg, T(0)));
+}
+
+namespace detail {
+
+// The specular steps, shared by the public factors below and by every evaluation route of
+// shade<F> (detail/exact.hpp, detail/stable.hpp): each formula and its edges are written once.
+
+/// Phong's cosine r.v times a length: for l = d / |d| and r = reflect(-l, n) = 2 (n.l) n - l,
+///   |d| (r.v) = 2 (n.d)(n.v) - d.v.
+/// With a unit d it is r.v itself. Written on d so that the sign is known before 1/|d|.
+/// Pre: n, v unit (or 0). Edge: v = 0 gives 0.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T reflection_cosine_scaled(T nd, T nv, const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& v)
+{
+    // SIMD lanes: nd (2 nv), the same bits as (2 nd) nv, with 2 nv once per point (shade_batch's
+    // light loop); scalars keep (2 nd) nv (one instruction fewer per pair in shade's loop)
+    if constexpr (std::is_floating_point_v<T>) return T(2) * nd * nv - phong::dot(d, v);
+    else return nd * (T(2) * nv) - phong::dot(d, v);
+}
+
+/// Blinn's 1/|l + v|, the scale of n.h = (n.l + n.v) / |l + v| (h = normalize(l + v)).
+/// Edge: 0 when |l + v|^2 is not a normal number (l = -v: no halfway vector, n.h taken as 0).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
+{
+    const glm::vec<3, T, Q> sum = l + v;
+    return detail::exact_inverse_length(phong::dot(sum, sum));
+}
+
+/// The specular power of the cosine c = x * scale: min(max(c, 0), 1)^m, pow(0, 0) = 1.
+/// Pre: scale >= 0 finite; m >= 0 finite (validate). x is the cosine times a positive length, so
+/// its sign is c's. Scalars test the sign of x first (no power where it is 0); SIMD lanes clamp.
+template <class T>
+PHONG_INLINE constexpr T cosine_power(T x, T scale, T m)
+{
+    if constexpr (std::is_floating_point_v<T>) {
+        if (x > T(0)) return detail::pow_unit_at_most_one(phong::min(x * scale, T(1)), m);
+        return detail::power_of_zero(m);
+    } else {
+        return phong::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
+    }
+}
+
+/// 1 - r.v = |r - v|^2 / 2 for unit r, v, from the chord r - v = 2 (n.l) n - l - v, each
+/// component rounded once (detail/twofold.hpp's one_minus_rv carries it twofold).
+/// Pre: n, l, v unit, nl = n.l.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T one_minus_reflection_cosine(const glm::vec<3, T, Q>& n, T nl, const glm::vec<3, T, Q>& l,
+                                                 const glm::vec<3, T, Q>& v)
+{
+    const glm::vec<3, T, Q> chord = n * (T(2) * nl) - l - v;
+    return phong::dot(chord, chord) * T(0.5);
+}
+
+/// 1 - n.h = |n - h|^2 / 2 for h = normalize(l + v) rounded once.
+/// Pre: n, l, v unit. Edge: l = -v (no halfway vector) gives 1, i.e. n.h taken as 0.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T one_minus_halfway_cosine(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+                                              const glm::vec<3, T, Q>& v)
+{
+    const glm::vec<3, T, Q> sum = l + v;
+    const T hh = phong::dot(sum, sum);
+    const glm::vec<3, T, Q> chord = n - sum * phong::select(hh > T(0), phong::rsqrt(hh), T(0));
+    return phong::select(hh > T(0), phong::dot(chord, chord) * T(0.5), T(1));
+}
+
+} // namespace detail
+
+/// Phong's reflection-based specular factor (seed 000, seed 003):
+///   r = reflect(-l, n) = 2 (n.l) n - l,   s = [n.l > 0] max(r.v, 0)^m   (base clamped to [0, 1])
+/// (TeX: s = [\hat n\cdot\hat l > 0]\,\max(\hat r\cdot\hat v, 0)^m), with r.v = 2 (n.l)(n.v) - l.v.
+/// Pre: n, l, v unit length (or 0); m >= 0 finite. Edge: 0 when n.l <= 0 (the gate of seed 003);
+/// m = 0 gives 1 where lit (pow(0, 0) = 1); l = 0 or v = 0 give 0 (m > 0).
+/// Accuracy: the exact mode's (phong/accuracy.hpp): the power amplifies the rounding of r.v by m
+/// (see specular_reflection_stable). The same steps as shade<F>'s exact mode.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T specular_reflection(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+                                         const glm::vec<3, T, Q>& v, T m)
+{
+    const T nl = phong::dot(n, l);
+    const T s = detail::cosine_power(detail::reflection_cosine_scaled(nl, phong::dot(n, v), l, v), T(1), m);
+    return phong::select(nl > T(0), s, T(0));
+}
+
+/// Blinn-Phong's halfway-based specular factor (seed 001):
+///   h = normalize(l + v),   s = [n.l > 0] max(n.h, 0)^m   (base clamped to [0, 1])
+/// with n.h = (n.l + n.v) / |l + v|. Pre: n, l, v unit length (or 0); m >= 0 finite. Edge: l = -v
+/// (no halfway vector) takes n.h = 0: s = 0 for m > 0 and 1 for m = 0 (never NaN); 0 when n.l <= 0.
+/// The same steps as shade<F>'s exact mode.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T specular_halfway(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+                                      const glm::vec<3, T, Q>& v, T m)
+{
+    const T nl = phong::dot(n, l);
+    const T s = detail::cosine_power(nl + phong::dot(n, v), detail::inverse_halfway_length(l, v), m);
+    return phong::select(nl > T(0), s, T(0));
+}
+
+/// The reflection-based factor, evaluated stably for high m near the highlight:
+///   s = [n.l > 0] (1 - x)^m,  x = min(|r - v|^2 / 2, 1) = 1 - r.v for unit r, v.
+/// Same domain and edges as specular_reflection; the rounding of r.v is no longer amplified by m.
+/// The same steps as shade<F>'s stable mode for pairs it rounds once (features::stable_twofold_above).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T specular_reflection_stable(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+                                                const glm::vec<3, T, Q>& v, T m)
+{
+    const T nl = phong::dot(n, l);
+    const T x = phong::select(phong::dot(v, v) > T(0), detail::one_minus_reflection_cosine(n, nl, l, v), T(1));
+    return phong::select(nl > T(0), phong::pow_one_minus(x, m), T(0));
+}
+
+/// The halfway-based factor, evaluated stably: s = [n.l > 0] (1 - x)^m, x = min(|n - h|^2 / 2, 1).
+/// Same domain and edges as specular_halfway (l = -v gives x = 1).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T specular_halfway_stable(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
+                                             const glm::vec<3, T, Q>& v, T m)
+{
+    const T nl = phong::dot(n, l);
+    return phong::select(nl > T(0), phong::pow_one_minus(detail::one_minus_halfway_cosine(n, l, v), m), T(0));
+}
+
+} // namespace phong
