@@ -17,6 +17,15 @@ template <class T> struct array_vec {
 struct packed_vec { // neither: read through vector_traits
     double data[3];
 };
+class rgb_class { // made by a constructor with another order of arguments: vector_traits::make
+public:
+    constexpr rgb_class(float b, float g, float r) : b_(b), g_(g), r_(r) {}
+    constexpr float r() const { return r_; }
+    constexpr float g() const { return g_; }
+    constexpr float b() const { return b_; }
+private:
+    float b_, g_, r_;
+};
 } // namespace
 
 template <> struct phong::vector_traits<packed_vec> {
@@ -25,7 +34,22 @@ template <> struct phong::vector_traits<packed_vec> {
     PHONG_INLINE static constexpr double z(const packed_vec& v) { return v.data[2]; }
 };
 
+template <> struct phong::vector_traits<rgb_class> {
+    PHONG_INLINE static constexpr float x(const rgb_class& v) { return v.r(); }
+    PHONG_INLINE static constexpr float y(const rgb_class& v) { return v.g(); }
+    PHONG_INLINE static constexpr float z(const rgb_class& v) { return v.b(); }
+    PHONG_INLINE static constexpr rgb_class make(float r, float g, float b) { return rgb_class(b, g, r); }
+};
+
 static_assert(phong::vec3_of(xyz_vec<float>{1, 2, 3}) == glm::vec3(1, 2, 3));
+// from_vec3, the way back: an aggregate by V{x, y, z}, a class through vector_traits::make; a
+// round trip gives the components as written, and rgba passes its xyz.
+static_assert(phong::from_vec3<xyz_vec<float>>(glm::vec3(1, 2, 3)).y == 2.0f);
+static_assert(phong::from_vec3<xyz_vec<double>>(glm::dvec4(1, 2, 3, 0.5)).z == 3.0);
+static_assert(phong::from_vec3<rgb_class>(glm::vec3(0.25f, 0.5f, 0.75f)).r() == 0.25f);
+static_assert(phong::from_vec3<rgb_class>(glm::vec3(0.25f, 0.5f, 0.75f)).b() == 0.75f);
+static_assert(phong::vec3_of(phong::from_vec3<rgb_class>(glm::vec3(4, 5, 6))) == glm::vec3(4, 5, 6));
+static_assert(phong::vec3_of(phong::from_vec3<xyz_vec<double>>(glm::dvec3(-1, 0, 1e300))) == glm::dvec3(-1, 0, 1e300));
 static_assert(phong::vec3_of(array_vec<double>{{4, 5, 6}}) == glm::dvec3(4, 5, 6));
 static_assert(phong::vec3_of(packed_vec{{7, 8, 9}}) == glm::dvec3(7, 8, 9));
 static_assert(std::is_same_v<decltype(phong::vec3_of(xyz_vec<double>{})), glm::dvec3>);

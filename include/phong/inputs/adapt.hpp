@@ -1,5 +1,6 @@
-// phong: a renderer's own 3-vector type as the glm::vec<3, T> that phong takes (vec3_of), through
-// a specialization point like light_traits.
+// phong: a renderer's own 3-vector type as the glm::vec<3, T> that phong takes (vec3_of), and
+// phong's colours and vectors back as the renderer's type (from_vec3), through one specialization
+// point like light_traits.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -7,14 +8,17 @@
 
 #include <glm/vec3.hpp>
 
+#include <concepts>
 #include <type_traits>
 #include <utility>
 
 namespace phong {
 
-/// How vec3_of reads a renderer's vector type V: specialize with
-///   static T x(const V&), y(const V&), z(const V&)   (T: float or double)
-/// for a type that has neither members x, y, z nor operator[] (those are read without one).
+/// How vec3_of reads a renderer's vector type V and from_vec3 makes one: specialize with
+///   static T x(const V&), y(const V&), z(const V&)   (T: float or double), read by vec3_of;
+///   static V make(T x, T y, T z)                      (optional), used by from_vec3;
+/// for a type that has neither members x, y, z nor operator[] (those are read without one), or
+/// that is not made by V{x, y, z}.
 template <class V> struct vector_traits {};
 
 namespace detail {
@@ -32,14 +36,16 @@ concept has_xyz = requires(const V& v) {
 };
 template <class V>
 concept has_index = requires(const V& v) { v[0]; };
+template <class V, class T>
+concept has_make = requires(T t) {
+    { vector_traits<V>::make(t, t, t) } -> std::convertible_to<V>;
+};
 } // namespace detail
 
 /// v as a glm::vec<3, T>: (vector_traits<V>::x(v), ::y(v), ::z(v)) where specialized, else
 /// (v.x, v.y, v.z), else (v[0], v[1], v[2]); T is the components' type (float, double; no
 /// conversion). The copy is inlined (PHONG_INLINE): the components stay in the registers they are
-/// in, so the call costs nothing in optimized code (tests/inlining/check.sh compares the
-/// instructions of one shading loop written with glm::vec3 and with a renderer's own vector: the
-/// same count). Pre: V has three components.
+/// in, so the call costs nothing in optimized code. Pre: V has three components.
 template <class V>
 PHONG_INLINE constexpr auto vec3_of(const V& v)
 {
@@ -53,6 +59,25 @@ PHONG_INLINE constexpr auto vec3_of(const V& v)
         static_assert(detail::has_index<V>, "phong::vec3_of: V needs members x, y, z, operator[], or a phong::vector_traits specialization");
         using T = std::remove_cvref_t<decltype(v[0])>;
         return glm::vec<3, T>(v[0], v[1], v[2]);
+    }
+}
+
+/// The way back: c (a colour or vector phong returned) as the renderer's type V:
+/// vector_traits<V>::make(c.x, c.y, c.z) where specialized, else V{c.x, c.y, c.z} (an aggregate
+/// such as struct { float x, y, z; } or float[3]-like types, or a constructor from three
+/// components). The components are converted to V's as brace initialization allows (no narrowing:
+/// a double colour into a float vector needs make). An rgba colour (features::alpha) passes its
+/// xyz; take .a apart. Inlined as vec3_of.
+template <class V, glm::length_t L, class T, glm::qualifier Q>
+    requires(L >= 3)
+PHONG_INLINE constexpr V from_vec3(const glm::vec<L, T, Q>& c)
+{
+    if constexpr (detail::has_make<V, T>) {
+        return vector_traits<V>::make(c.x, c.y, c.z);
+    } else {
+        static_assert(requires { V{c.x, c.y, c.z}; },
+                      "phong::from_vec3: V is not made by V{x, y, z}: specialize phong::vector_traits<V>::make");
+        return V{c.x, c.y, c.z};
     }
 }
 
