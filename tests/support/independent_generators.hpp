@@ -10,7 +10,7 @@
 // so clang++ gets it too), sharing no code with the library or the project's reference.
 #pragma once
 
-#include <phong/accuracy.hpp>
+#include "accuracy_analysis.hpp"
 #include <phong/light.hpp>
 #include <phong/material.hpp>
 #include <phong/shade.hpp>
