@@ -10,7 +10,7 @@
 #include "support/reference.hpp"
 #include "support/stiff_classes.hpp"
 
-#include <phong/accuracy.hpp>
+#include "support/accuracy_analysis.hpp"
 #include <phong/phong.hpp>
 
 #include <doctest/doctest.h>

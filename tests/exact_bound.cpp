@@ -16,7 +16,7 @@
 #include "support/independent_generators.hpp"
 #include "support/stiff_classes.hpp"
 
-#include <phong/accuracy.hpp>
+#include "support/accuracy_analysis.hpp"
 #include <phong/batch.hpp>
 #include <phong/sum/shade.hpp>
 

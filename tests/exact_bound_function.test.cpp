@@ -2,7 +2,7 @@
 // follow from it, it moves the right way with each conditioning parameter, and it says +inf or
 // max(1, ...) exactly where docs/accuracy.md says no relative bound exists. (Its agreement with
 // measurement is tests/exact_bound.cpp, run by ctest and tests/bounds_matrix.sh.)
-#include <phong/accuracy.hpp>
+#include "support/accuracy_analysis.hpp"
 
 #include <doctest/doctest.h>
 

@@ -14,7 +14,7 @@
 // (their published bounds: bounds<stable, T, twofold>). Exit 1 when a figure is above its bound.
 #include "support/independent_generators.hpp"
 
-#include <phong/accuracy.hpp>
+#include "support/accuracy_analysis.hpp"
 #include <phong/batch.hpp>
 #include <phong/sum/shade.hpp>
 

@@ -7,6 +7,7 @@
 #include "support/numeric.hpp"
 #include "support/reference.hpp"
 
+#include <phong/accuracy.hpp>
 #include <phong/phong.hpp>
 
 #include <doctest/doctest.h>

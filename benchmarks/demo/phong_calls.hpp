@@ -19,6 +19,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <phong/batch.hpp>
 #include <phong/phong.hpp>
 
 #include <glm/mat3x3.hpp>

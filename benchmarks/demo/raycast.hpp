@@ -17,6 +17,7 @@
 #pragma once
 
 #include <phong/phong.hpp>
+#include <phong/primitives.hpp>
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>

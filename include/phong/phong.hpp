@@ -1,4 +1,7 @@
-// phong: everything. Include this, or only the headers you use (each compiles on its own).
+// phong: what a scalar renderer uses. Include this, or only the headers you use (each compiles on
+// its own). The extensions are included by name: <phong/batch.hpp> (shade_batch, SIMD lanes),
+// <phong/primitives.hpp> (ray-primitive intersections), <phong/accuracy.hpp> (the published error
+// bounds), <phong/glsl.hpp> (the GLSL twin's source).
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -14,9 +17,6 @@
 #include "inputs/material.hpp"
 #include "inputs/features.hpp"
 #include "inputs/environment.hpp"
-#include "accuracy.hpp"
 #include "sum/shade.hpp"
 #include "sum/incident.hpp"
 #include "inputs/adapt.hpp"
-#include "batch.hpp"
-#include "primitives.hpp"

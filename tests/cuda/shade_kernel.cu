@@ -2,7 +2,9 @@
 //   nvcc -std=c++20 --expt-relaxed-constexpr -O3 -arch=sm_90 --use_fast_math -I include -c tests/cuda/shade_kernel.cu
 // (.ci/steps/50-cuda.sh). Every function reached from the kernels must be __host__ __device__
 // (PHONG_HD); a missing one is a compile error here.
+#include <phong/accuracy.hpp>
 #include <phong/phong.hpp>
+#include <phong/primitives.hpp>
 
 #include <array>
 

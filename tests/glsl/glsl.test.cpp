@@ -19,7 +19,7 @@
 
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
-#include <phong/accuracy.hpp>
+#include "../support/accuracy_analysis.hpp"
 #include <phong/glsl.hpp>
 #include <phong/phong.hpp>
 

@@ -10,7 +10,7 @@
 // so clang++ gets it too), sharing no code with the library or the project's reference.
 #pragma once
 
-#include <phong/accuracy.hpp>
+#include "accuracy_analysis.hpp"
 #include <phong/inputs/light.hpp>
 #include <phong/inputs/material.hpp>
 #include <phong/sum/shade.hpp>

@@ -18,7 +18,7 @@
 #include "numeric.hpp"
 #include "reference.hpp"
 
-#include <phong/accuracy.hpp>
+#include "accuracy_analysis.hpp"
 #include <phong/sum/shade.hpp>
 
 #include <algorithm>

@@ -6,9 +6,11 @@
 #include <type_traits>
 
 #if !defined(__CUDA_ARCH__)
-#  include <atomic>
 #  include <cstdio>
 #  include <cstdlib>
+#  if !defined(__GNUC__) && !defined(__clang__)
+#    include <atomic>
+#  endif
 #endif
 
 /// PHONG_HD marks every function so the headers compile in CUDA device code.
@@ -71,7 +73,21 @@ namespace detail {
     std::abort();
 }
 
+// The installed handler, read and written atomically. g++ and clang++: their __atomic builtins on a
+// plain pointer (what std::atomic<T*> runs, without <atomic> in every translation unit, which
+// costs a header of GLM's size); other compilers: std::atomic.
+#if defined(__GNUC__) || defined(__clang__)
+inline precondition_handler current_precondition_handler = &default_precondition_handler;
+inline precondition_handler exchange_handler(precondition_handler h) noexcept
+{
+    return __atomic_exchange_n(&current_precondition_handler, h, __ATOMIC_SEQ_CST);
+}
+inline precondition_handler load_handler() noexcept { return __atomic_load_n(&current_precondition_handler, __ATOMIC_SEQ_CST); }
+#else
 inline std::atomic<precondition_handler> current_precondition_handler{&default_precondition_handler};
+inline precondition_handler exchange_handler(precondition_handler h) noexcept { return current_precondition_handler.exchange(h); }
+inline precondition_handler load_handler() noexcept { return current_precondition_handler.load(); }
+#endif
 
 } // namespace detail
 
@@ -89,20 +105,20 @@ inline std::atomic<precondition_handler> current_precondition_handler{&default_p
 /// call it in every build).
 inline precondition_handler set_precondition_handler(precondition_handler handler) noexcept
 {
-    return detail::current_precondition_handler.exchange(handler ? handler : &detail::default_precondition_handler);
+    return detail::exchange_handler(handler ? handler : &detail::default_precondition_handler);
 }
 
 /// The handler set_precondition_handler installed (the default one if none).
 inline precondition_handler get_precondition_handler() noexcept
 {
-    return detail::current_precondition_handler.load();
+    return detail::load_handler();
 }
 
 namespace detail {
 /// What a failed PHONG_ASSERT calls at run time on the host: the installed handler.
 inline void precondition_failed(const char* message, const char* file, int line) noexcept
 {
-    current_precondition_handler.load()(message, file, line);
+    load_handler()(message, file, line);
 }
 } // namespace detail
 #endif
