@@ -45,7 +45,8 @@ echo
 # ---- Part 1: each public header, -fsyntax-only --------------------------------------------------
 heavy='xsimd|/iostream$|/sstream$|/unordered_map$|/complex$|/fstream$'
 headers=("glm/glm.hpp")
-for h in "$root"/include/phong/*.hpp; do headers+=("phong/$(basename "$h")"); done
+# the entry headers (include/phong/*.hpp) and the headers of the sum layer a renderer may include alone
+for h in "$root"/include/phong/*.hpp "$root"/include/phong/sum/*.hpp; do headers+=("${h#"$root"/include/}"); done
 declare -A base
 echo "| \`#include\` (-fsyntax-only) | g++ s | x glm | clang++ s | x glm | lines g++ | lines clang++ | heavy std or xsimd headers reached |"
 echo "|---|--:|--:|--:|--:|--:|--:|---|"
