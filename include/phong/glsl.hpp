@@ -55,7 +55,7 @@ inline std::string defines(const features& F, int max_lights = 8)
     const char* specular[] = {"PHONG_SPECULAR_NONE", "PHONG_SPECULAR_PHONG", "PHONG_SPECULAR_BLINN"};
     const char* lights[] = {"PHONG_LIGHTS_ANY", "PHONG_LIGHTS_POSITIONAL", "PHONG_LIGHTS_DIRECTIONAL"};
     const char* attenuation[] = {"PHONG_ATTENUATION_NONE", "PHONG_ATTENUATION_POLYNOMIAL", "PHONG_ATTENUATION_WINDOWED"};
-    const char* spot[] = {"PHONG_SPOT_NONE", "PHONG_SPOT_OPENGL", "PHONG_SPOT_SMOOTH"};
+    const char* spot[] = {"PHONG_SPOT_NONE", "PHONG_SPOT_OPENGL", "PHONG_SPOT_SMOOTH", "PHONG_SPOT_LINEAR"};
     const char* facing_names[] = {"PHONG_FACING_NONE", "PHONG_FACING_VIEW", "PHONG_FACING_FLAG"};
     const char* view[] = {"PHONG_VIEW_EYE_AT_ORIGIN", "PHONG_VIEW_FIXED_DIRECTION", "PHONG_VIEW_EYE_POINT", "PHONG_VIEW_GIVEN"};
     std::string s;
