@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -237,7 +238,8 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
             else if (r4 < 1 + 64 * u) f_extra = inf; // closing: no relative bound
             // else beyond the range by more than the ratio's error: f = 0 on both sides
         }
-        if constexpr (F.spot != phong::spot_model::none) {
+        const bool has_cone = !(L.spot.direction.x == 0 && L.spot.direction.y == 0 && L.spot.direction.z == 0); // zero axis: no cone
+        if (F.spot != phong::spot_model::none && has_cone) {
             const ld3 axis = L3(L.spot.direction);
             const ld c = -dot(l, axis * (1 / std::sqrt(dot(axis, axis))));
             const double E = 16 * u;
@@ -258,13 +260,17 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
                 const ld width = ld(L.spot.cos_inner) - ld(L.spot.cos_outer);
                 if (width > 0) {
                     const ld t = std::clamp((c - L.spot.cos_outer) / width, ld(0), ld(1));
-                    spot = t * t * (3 - 2 * t);
+                    const bool linear = F.spot == phong::spot_model::linear;
+                    spot = linear ? t : t * t * (3 - 2 * t);
                     if (c < L.spot.cos_outer - 4 * E || c > L.spot.cos_inner + 4 * E) {
                         // outside the outer cone (0) or inside the inner one (1), beyond the cosine's error: exact
                     } else if (t * width <= ld(E) * 8) {
                         f_extra = inf; // at the outer edge: no relative bound
                     } else if (t < 1) {
-                        f_extra += double(6 * (1 - t) / (width * t * (3 - 2 * t))) * E * 2 + 16 * u;
+                        // the spot's relative slope in c times the cosine's error E (smoothstep: 6 (1 - t) /
+                        // (width t (3 - 2 t)); the linear edge: 1 / (width t)), plus the quotient's and clamp's rounding
+                        const ld slope = linear ? 1 / (width * t) : 6 * (1 - t) / (width * t * (3 - 2 * t));
+                        f_extra += double(slope) * E * 2 + 16 * u;
                     }
                 } else {
                     spot = c >= L.spot.cos_outer ? 1 : 0;
@@ -443,6 +449,8 @@ scene random_scene(generator& g)
                 const float inner = g.uniform(0, 40);
                 L.spot = phong::spot_cone<float>::smooth(axis, inner, g.rng() % 6 == 0 ? inner : inner + g.uniform(0, 40));
             }
+            // One light in five has no cone: every spot field 0, as uniforms left unset are.
+            if (g.rng() % 5 == 0) L.spot = phong::spot_cone<float>{glm::vec3(0), 0, 0, 0, 0};
         }
         s.lights.push_back(L);
     }
@@ -564,11 +572,55 @@ void main() {
 }
 )";
 
-/// The twin's colours of `scenes` in context c with the given defines (chunks of 4096 cases).
-std::vector<float> run_twin(const glt::context& c, const std::string& defines, const std::vector<scene>& scenes)
+/// Which twin a run tests: the GLSL one, or the HLSL one (tests/glsl/case.hlsl through
+/// glslangValidator's HLSL front end, spirv-val, and spirv-cross back to GLSL for this context).
+enum class language { glsl, hlsl };
+
+/// Runs a command; throws naming it when it fails.
+void run_tool(const std::string& command, const std::string& log)
 {
-    const std::string text = phong::glsl::shader(glt::version_line(c.which()), defines, phong::glsl::source(), case_shader);
-    glt::feedback_program program(c, text, "result");
+    if (std::system(command.c_str()) == 0) return;
+    std::ifstream in(log, std::ios::binary);
+    throw std::runtime_error("failed: " + command + "\n" + std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
+}
+
+/// The HLSL twin's test shader with `defines`, as GLSL for context c: case.hlsl compiled by
+/// glslangValidator -D -e main -V (HLSL to SPIR-V), validated by spirv-val, translated by
+/// spirv-cross to the context's GLSL version. Throws when a tool is missing or fails.
+std::string hlsl_as_glsl(const glt::context& c, const std::string& defines)
+{
+#if defined(PHONG_GLSLANG_VALIDATOR) && defined(PHONG_SPIRV_VAL) && defined(PHONG_SPIRV_CROSS)
+    static int serial = 0;
+    const std::string base = std::string(PHONG_HLSL_WORK_DIR) + "/case" + std::to_string(serial++);
+    {
+        std::ofstream out(base + ".hlsl", std::ios::binary);
+        out << defines << "#include \"case.hlsl\"\n"; // found through -I (glslang takes no absolute include path)
+        if (!out) throw std::runtime_error("cannot write " + base + ".hlsl");
+    }
+    const std::string quiet = " >" + base + ".log 2>&1";
+    run_tool(std::string(PHONG_GLSLANG_VALIDATOR) + " -D -e main -V -S vert -I" + PHONG_INCLUDE_DIR + " -I" + PHONG_CASE_HLSL_DIR + " " + base +
+             ".hlsl -o " + base + ".spv" + quiet, base + ".log");
+    run_tool(std::string(PHONG_SPIRV_VAL) + " " + base + ".spv" + quiet, base + ".log");
+    const bool es = c.which() == glt::api::gles30;
+    run_tool(std::string(PHONG_SPIRV_CROSS) + " " + base + ".spv" + (es ? " --es --version 300" : " --no-es --version 330") + " --output " +
+             base + ".glsl" + quiet, base + ".log");
+    std::ifstream in(base + ".glsl", std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+#else
+    (void)c, (void)defines;
+    throw std::runtime_error("the HLSL twin's tools were not found at configure time (glslangValidator, spirv-val, spirv-cross: "
+                             "apt-get install glslang-tools spirv-tools spirv-cross)");
+#endif
+}
+
+/// The twin's colours of `scenes` in context c with the given defines (chunks of 4096 cases).
+std::vector<float> run_twin(const glt::context& c, const std::string& defines, const std::vector<scene>& scenes,
+                            language lang = language::glsl)
+{
+    const std::string text = lang == language::glsl
+                                 ? phong::glsl::shader(glt::version_line(c.which()), defines, phong::glsl::source(), case_shader)
+                                 : hlsl_as_glsl(c, defines);
+    glt::feedback_program program(c, text, lang == language::glsl ? "result" : "_entryPointOutput_result");
     std::vector<float> out;
     constexpr std::size_t chunk = 4096;
     for (std::size_t first = 0; first < scenes.size(); first += chunk) {
@@ -576,7 +628,9 @@ std::vector<float> run_twin(const glt::context& c, const std::string& defines, c
         std::vector<float> texels(n * texels_per_case * 4, 0.0f);
         for (std::size_t i = 0; i < n; ++i) pack(scenes[first + i], &texels[i * texels_per_case * 4]);
         glt::float_texture tex(c, texels_per_case, int(n), texels);
-        const std::vector<float> r = program.run(int(n), 4, [&] { c.gl().glUniform1i(program.uniform("cases"), 0); });
+        const std::vector<float> r = program.run(int(n), 4, [&] { // the sampler (any name spirv-cross gave it) reads unit 0, its default
+            if (lang == language::glsl) c.gl().glUniform1i(program.uniform("cases"), 0);
+        });
         out.insert(out.end(), r.begin(), r.end());
     }
     return out;
@@ -611,7 +665,7 @@ bool measured_once = false;
 /// defines: the twin's feature defines (the CPU side is F, whose exact mode's bound the widened
 /// bound starts from, also for the twin's fast mode).
 template <features F>
-tally agree(const glt::context& c, const std::string& defines, int random_cases, std::uint64_t seed)
+tally agree(const glt::context& c, const std::string& defines, int random_cases, std::uint64_t seed, language lang = language::glsl)
 {
     if (!measured_once) {
         measured = measure_driver(c);
@@ -626,7 +680,7 @@ tally agree(const glt::context& c, const std::string& defines, int random_cases,
         if (i >= random_cases) make_edge<F>(s, (i - random_cases) % edge_kinds);
         scenes.push_back(s);
     }
-    const std::vector<float> twin = run_twin(c, defines, scenes);
+    const std::vector<float> twin = run_twin(c, defines, scenes, lang);
     tally t;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         const scene& s = scenes[i];
@@ -681,14 +735,15 @@ tally agree(const glt::context& c, const std::string& defines, int random_cases,
 /// define: the preset's define (nullptr: every field of F, phong::glsl::defines(F)); extra: more
 /// defines after it (PHONG_MODE_FAST: the twin's fast mode, GLSL's inversesqrt).
 template <features F>
-void check_preset(glt::api a, const char* name, const char* define, std::uint64_t seed, const std::string& extra = "")
+void check_preset(glt::api a, const char* name, const char* define, std::uint64_t seed, const std::string& extra = "",
+                  language lang = language::glsl)
 {
     const auto c = open(a);
     if (!c) return;
     const std::string defines = define ? std::string("#define ") + define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n" + extra
                                        : phong::glsl::defines(F, max_lights);
-    const tally t = agree<F>(*c, defines, 3000, seed);
-    MESSAGE(glt::api_name(a) << ", " << std::string(name) << std::string(extra.empty() ? "" : ", fast mode") << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
+    const tally t = agree<F>(*c, defines, 3000, seed, lang);
+    MESSAGE(std::string(lang == language::hlsl ? "HLSL twin, " : "") << glt::api_name(a) << ", " << std::string(name) << std::string(extra.empty() ? "" : ", fast mode") << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
                              << " channels (" << t.bounded << " with a bound, " << t.unbounded
                              << " without: a gate or a two-sided flip within rounding); worst relative error against the model: twin "
                              << t.worst_rel << " (random), " << t.worst_rel_edge << " (edge, capped at 1), phong::shade float "
@@ -779,6 +834,53 @@ TEST_CASE("the twin's fast mode (inversesqrt) agrees with the model: Phong and B
         check_preset<phong::presets::blinn_phong_per_light_ambient>(a, "blinn_phong_per_light_ambient",
                                                                     "PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT", seed + 2, fast);
     }
+}
+
+/// The tutorial-shaped feature set (docs/glsl.md's world-space recipe): per-light ambient,
+/// ungated Phong, lights of any kind, polynomial falloff, the linear cone edge, the eye a point.
+constexpr features linear_spot_tutorial{.scene_ambient = false, .light_ambient = true, .diffuse = true,
+                                        .specular = specular_model::phong, .specular_gate = false, .lights = phong::light_kind::any,
+                                        .attenuation = phong::attenuation_model::polynomial, .spot = phong::spot_model::linear,
+                                        .attenuate_ambient = true, .two_sided = phong::facing::none,
+                                        .view = phong::view_model::eye_point};
+
+TEST_CASE("the twin's linear cone edge agrees with the model, lights with and without a cone (330, 300 es)")
+{
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30})
+        check_preset<linear_spot_tutorial>(a, "linear spot, per-light ambient, ungated Phong, any lights, eye point", nullptr,
+                                           a == glt::api::gles30 ? 71 : 70);
+}
+
+/// Every feature set the GLSL twin is tested with, through the HLSL twin (the same seeds: the same
+/// cases as the GLSL runs of the same API).
+void check_hlsl(glt::api a, std::uint64_t preset_seed, std::uint64_t extra_seed, std::uint64_t fast_seed, std::uint64_t linear_seed)
+{
+    const language h = language::hlsl;
+    check_preset<phong::presets::classic_phong>(a, "classic_phong", "PHONG_PRESET_CLASSIC_PHONG", preset_seed * 10 + 1, "", h);
+    check_preset<phong::presets::blinn_phong_per_light_ambient>(a, "blinn_phong_per_light_ambient",
+                                                                "PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT", preset_seed * 10 + 2, "", h);
+    check_preset<phong::presets::raytracer_phong>(a, "raytracer_phong", "PHONG_PRESET_RAYTRACER_PHONG", preset_seed * 10 + 3, "", h);
+    check_preset<phong::presets::glsl_ads>(a, "glsl_ads", "PHONG_PRESET_GLSL_ADS", preset_seed * 10 + 4, "", h);
+    check_preset<phong::presets::diffuse_only>(a, "diffuse_only", "PHONG_PRESET_DIFFUSE_ONLY", preset_seed * 10 + 5, "", h);
+    check_preset<spot_windowed_blinn>(a, "OpenGL spot, windowed, Blinn, fixed direction, two-sided flag", nullptr, extra_seed + 1, "", h);
+    check_preset<smooth_spot_phong>(a, "smooth spot, polynomial, ungated Phong, eye point, two-sided view", nullptr, extra_seed + 2, "", h);
+    check_preset<directional_spot_diffuse>(a, "directional, OpenGL spot, diffuse only", nullptr, extra_seed + 3, "", h);
+    check_preset<raytracer_unit_inputs>(a, "raytracer_phong with unit_inputs", nullptr, extra_seed + 4, "", h);
+    const std::string fast = "#define PHONG_MODE PHONG_MODE_FAST\n";
+    check_preset<phong::presets::glsl_ads>(a, "glsl_ads", "PHONG_PRESET_GLSL_ADS", fast_seed + 1, fast, h);
+    check_preset<phong::presets::blinn_phong_per_light_ambient>(a, "blinn_phong_per_light_ambient",
+                                                                "PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT", fast_seed + 2, fast, h);
+    check_preset<linear_spot_tutorial>(a, "linear spot, per-light ambient, ungated Phong, any lights, eye point", nullptr, linear_seed, "", h);
+}
+
+TEST_CASE("the HLSL twin (glslang's HLSL front end, spirv-val, spirv-cross to GLSL 330) agrees with the model, every feature set")
+{
+    check_hlsl(glt::api::gl33_core, 1, 50, 30, 70);
+}
+
+TEST_CASE("the HLSL twin (glslang's HLSL front end, spirv-val, spirv-cross to GLSL 300 es) agrees with the model, every feature set")
+{
+    check_hlsl(glt::api::gles30, 2, 60, 40, 71);
 }
 
 TEST_CASE("seed 003's phong.vert, verbatim, against the twin's phong_shade_vertex and phong::shade_vertex (GLSL 410)")
