@@ -14,13 +14,21 @@
 // set here unless the environment sets it): on a shared machine wall time mostly measures the
 // other processes. Reported: the median frame time of each, the ratio of the medians and the
 // median of the per-round ratios; and the images: pixels that differ and the largest difference in
-// 8-bit levels. Usage: phong_glsl_tutorial_bench [frames per block = 10] [rounds = 21]
+// 8-bit levels. Usage: phong_glsl_tutorial_bench [frames per block = 10] [rounds = 21], or
+// valgrind --tool=callgrind --collect-atstart=no phong_glsl_tutorial_bench --callgrind (instruction
+// counts of one frame of each program, one dump each; build without AVX-512 for valgrind).
 #include "../../tests/glsl/gl.hpp"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <phong/glsl.hpp>
-#include <valgrind/callgrind.h>
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h> // --callgrind: instruction counts (Debian: valgrind)
+#else
+#define CALLGRIND_ZERO_STATS
+#define CALLGRIND_TOGGLE_COLLECT
+#define CALLGRIND_DUMP_STATS_AT(name) (void)(name)
+#endif
 
 #include <algorithm>
 #include <cmath>

@@ -1066,6 +1066,143 @@ void main() { ec_position = q; ec_normal = n; gl_Position = vec4(0.0, 0.0, 0.0, 
 }
 } // namespace
 
+namespace {
+/// The defines of tests/glsl/recipe_world.frag: its comment lines "//   #define ...".
+std::string world_recipe_defines(const std::string& text)
+{
+    std::istringstream in(text);
+    std::string line, defines;
+    while (std::getline(in, line))
+        if (line.rfind("//   #define ", 0) == 0) defines += line.substr(5) + "\n";
+    return defines;
+}
+
+/// A 1x1 RGBA8 texture of colour c (each channel a multiple of 1/255) on texture unit `unit`.
+GLuint texel_texture(const glt::functions& gl, int unit, const unsigned char c[4])
+{
+    GLuint id = 0;
+    gl.glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    gl.glGenTextures(1, &id);
+    gl.glBindTexture(GL_TEXTURE_2D, id);
+    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, c);
+    gl.glActiveTexture(GL_TEXTURE0);
+    return id;
+}
+
+/// tests/glsl/recipe_world.frag as written, one pixel per scene (a directional light, two point
+/// lights and a spot with the linear edge; the first three with their spot uniforms never set), the
+/// maps 1x1 textures: the pixel against phong::shade<linear_spot_tutorial> with those lights'
+/// cones all zero (no cone) and the spot's. dark: pixels where the lights without a cone
+/// contribute more than 4 levels to phong::shade but the pixel is below it by that much.
+int world_recipe_failures(const glt::context& c, int scenes, double& worst, int& lit_by_coneless)
+{
+    const glt::functions& gl = c.gl();
+    const std::string version = glt::version_line(c.which());
+    const std::string vertex = version + R"(
+uniform vec3 q;
+uniform vec3 n;
+out vec3 world_position;
+out vec3 world_normal;
+out vec2 uv;
+void main() { world_position = q; world_normal = n; uv = vec2(0.5); gl_Position = vec4(0.0, 0.0, 0.0, 1.0); gl_PointSize = 1.0; }
+)";
+    const std::string body = glt::seed003_source(PHONG_RECIPE_WORLD_FRAG);
+    const std::string fragment = phong::glsl::shader(version, world_recipe_defines(body), phong::glsl::source(), body);
+    glt::feedback_program p(c, vertex, nullptr, fragment);
+    constexpr features F = linear_spot_tutorial;
+    generator g(4343);
+    int failures = 0;
+    for (int k = 0; k < scenes; ++k) {
+        unsigned char diffuse[4], specular[4];
+        for (int ch = 0; ch < 4; ++ch) diffuse[ch] = (unsigned char)(g.rng() % 256), specular[ch] = (unsigned char)(g.rng() % 256);
+        const GLuint t0 = texel_texture(gl, 0, diffuse), t1 = texel_texture(gl, 1, specular);
+        phong::material<float> m;
+        m.ka = m.kd = glm::vec3(diffuse[0], diffuse[1], diffuse[2]) / 255.0f;
+        m.ks = glm::vec3(specular[0], specular[1], specular[2]) / 255.0f;
+        m.shininess = g.uniform(1, 64);
+        const glm::vec3 q = g.box(2), n = g.direction();
+        const glm::vec4 eye(g.box(1) + glm::vec3(0, 0, 4), 1);
+        std::vector<phong::light<float>> lights(4);
+        const phong::spot_cone<float> none{glm::vec3(0), 0, 0, 0, 0}; // uniforms left at 0
+        for (int i = 0; i < 4; ++i) {
+            phong::light<float>& L = lights[std::size_t(i)];
+            L.position = i == 0 ? glm::vec4(g.direction(), 0) : glm::vec4(q + g.box(3), 1);
+            L.ambient = g.colour(0.1f), L.diffuse = g.colour(0.4f), L.specular = g.colour(0.4f);
+            L.attenuation = {1, 0.09f, 0.032f, std::numeric_limits<float>::infinity()};
+            L.spot = none;
+        }
+        // The spot: toward the point, its edges at 10-20 and 20-30 degrees.
+        const glm::vec3 axis = glm::normalize(glm::normalize(q - glm::vec3(lights[3].position)) + g.box(0.3f));
+        const float inner = g.uniform(10, 20);
+        lights[3].spot = phong::spot_cone<float>::smooth(axis, inner, inner + g.uniform(2, 10));
+        gl.glUseProgram(p.id());
+        const auto v3 = [&](const std::string& name, const glm::vec3& v) { gl.glUniform3fv(p.uniform(name.c_str()), 1, &v.x); };
+        const auto f1 = [&](const std::string& name, float v) { gl.glUniform1f(p.uniform(name.c_str()), v); };
+        v3("q", q), v3("n", n);
+        gl.glUniform1i(p.uniform("diffuse_map"), 0);
+        gl.glUniform1i(p.uniform("specular_map"), 1);
+        f1("shininess", m.shininess);
+        gl.glUniform4fv(p.uniform("environment.eye"), 1, &eye.x);
+        gl.glUniform1i(p.uniform("light_count"), 4);
+        for (int i = 0; i < 4; ++i) {
+            const std::string L = "lights[" + std::to_string(i) + "].";
+            const phong::light<float>& l = lights[std::size_t(i)];
+            gl.glUniform4fv(p.uniform((L + "position").c_str()), 1, &l.position.x);
+            v3(L + "ambient", l.ambient), v3(L + "diffuse", l.diffuse), v3(L + "specular", l.specular);
+            f1(L + "attenuation.constant", l.attenuation.constant), f1(L + "attenuation.linear", l.attenuation.linear);
+            f1(L + "attenuation.quadratic", l.attenuation.quadratic);
+            if (i == 3) { // only the spot's cone is set: the others' spot uniforms keep their default, 0
+                v3(L + "spot.direction", l.spot.direction);
+                f1(L + "spot.cos_inner", l.spot.cos_inner), f1(L + "spot.cos_outer", l.spot.cos_outer);
+            }
+        }
+        GLuint vao = 0;
+        gl.glGenVertexArrays(1, &vao);
+        gl.glBindVertexArray(vao);
+        gl.glViewport(0, 0, 1, 1);
+        gl.glClearColor(0, 0, 0, 0);
+        gl.glClear(GL_COLOR_BUFFER_BIT);
+        gl.glDrawArrays(GL_POINTS, 0, 1);
+        unsigned char pixel[4] = {0, 0, 0, 0};
+        gl.glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+        gl.glBindVertexArray(0);
+        gl.glDeleteVertexArrays(1, &vao);
+        gl.glDeleteTextures(1, &t0), gl.glDeleteTextures(1, &t1);
+        phong::environment<float> env;
+        env.ambient = glm::vec3(0);
+        env.eye = eye;
+        const glm::vec3 cpu = phong::shade<F>(q, n, m, std::span<const phong::light<float>>(lights), env);
+        const glm::vec3 spot_only = phong::shade<F>(q, n, m, std::span<const phong::light<float>>(lights).subspan(3), env);
+        for (int ch = 0; ch < 3; ++ch) {
+            const double expected = std::clamp(double(cpu[ch]), 0.0, 1.0), got = pixel[ch] / 255.0;
+            worst = std::max(worst, std::fabs(got - expected));
+            if (std::fabs(got - expected) > 0.5 / 255 + 1e-4) ++failures;
+            if (std::clamp(double(cpu[ch]), 0.0, 1.0) - std::clamp(double(spot_only[ch]), 0.0, 1.0) > 4 / 255.0) ++lit_by_coneless;
+        }
+    }
+    if (gl.glGetError() != GL_NO_ERROR) ++failures;
+    return failures;
+}
+} // namespace
+
+TEST_CASE("docs/glsl.md's world-space recipe: mixed lights, texture maps, spot uniforms left at 0 (no cone), against phong::shade (330 core, 300 es)")
+{
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30}) {
+        const auto c = open(a);
+        if (!c) return;
+        double worst = 0;
+        int lit = 0;
+        const int failures = world_recipe_failures(*c, 64, worst, lit);
+        MESSAGE(glt::api_name(a) << ": recipe_world.frag, 64 scenes, worst |pixel - phong::shade| " << worst * 255
+                                 << " / 255; channels where the lights without a cone add more than 4 levels: " << lit);
+        CHECK(failures == 0);
+        CHECK(lit > 64); // the cone-less lights (spot uniforms at 0) light the point, not only the spot
+    }
+}
+
 TEST_CASE("docs/glsl.md's recipe: the fragment shader as written, one pixel per scene, against phong::shade (330 core, 300 es)")
 {
     for (glt::api a : {glt::api::gl33_core, glt::api::gles30}) {
