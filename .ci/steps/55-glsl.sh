@@ -17,7 +17,7 @@
 set -euo pipefail
 root="$PWD"
 tests/glsl/validate.sh
-for recipe in recipe recipe_world; do
+for recipe in recipe recipe_world blocks; do
   block="$(awk -v key="<!-- tests/glsl/$recipe.frag:" 'index($0, key) == 1 { f = 1; next } f == 1 && /^```/ { f = 2; next }
                 f == 2 && /^```$/ { exit } f == 2 { print }' docs/glsl.md)"
   [[ -n "$block" ]] || { echo "55-glsl: docs/glsl.md has no block marked tests/glsl/$recipe.frag"; exit 1; }

@@ -492,7 +492,8 @@ int main(int argc, char** argv)
                     CALLGRIND_TOGGLE_COLLECT;
                     frame(is_hand ? hand : port);
                     CALLGRIND_TOGGLE_COLLECT;
-                    CALLGRIND_DUMP_STATS_AT((std::string(name) + (is_hand ? ": by hand" : ": phong_shade")).c_str());
+                    const std::string label = std::string(name) + (is_hand ? ": by hand" : ": phong_shade");
+                    CALLGRIND_DUMP_STATS_AT(label.c_str());
                 }
                 std::printf("%s: images: %d pixels differ, by at most %d / 255; instruction counts in the callgrind dumps\n", name,
                             cmp.differing, cmp.worst);

@@ -76,6 +76,21 @@ for version in "330 core" "450 core" "300 es"; do
 done
 echo "validate.sh: phong.glsl compiles in $count shaders (GLSL 330 core, 450 core, 300 es; ${#feature_sets[@]} feature sets; vertex and fragment)"
 
+# docs/glsl.md's fragment shaders that carry their defines in their comment ("//   #define ..."):
+# compiled with them, in GLSL 330 core, 450 core and 300 es (phong_glsl_tests renders recipe_world.frag).
+for recipe in recipe_world blocks; do
+  for version in "330 core" "450 core" "300 es"; do
+    f="$tmp/$recipe.${version// /_}.frag"
+    { echo "#version $version"; sed -n 's|^//   \(#define .*\)$|\1|p' "$root/tests/glsl/$recipe.frag"; cat "$twin" "$root/tests/glsl/$recipe.frag"; } >"$f"
+    if ! out="$(glslangValidator "$f" 2>&1)"; then
+      echo "$out"
+      echo "validate.sh: FAILED: tests/glsl/$recipe.frag in GLSL $version"
+      exit 1
+    fi
+  done
+done
+echo "validate.sh: tests/glsl/recipe_world.frag and blocks.frag compile with their defines (GLSL 330 core, 450 core, 300 es)"
+
 # The HLSL twin (include/phong/hlsl/phong.hlsl, the same source through a few macros): glslang's HLSL
 # front end (-D) compiles tests/glsl/case.hlsl (a vertex shader: the test's) and a pixel shader with
 # the lights in a constant buffer, for every feature set, to SPIR-V; spirv-val validates it.
@@ -117,4 +132,14 @@ for i in "${!feature_sets[@]}"; do
     count=$((count + 1))
   done
 done
-echo "validate.sh: phong.hlsl compiles to valid SPIR-V in $count shaders (glslangValidator -D, spirv-val; ${#feature_sets[@]} feature sets; vertex and pixel)"
+# docs/glsl.md's HLSL example (its ```hlsl block), as a pixel shader.
+awk '/^```hlsl/ { f = 1; next } f && /^```/ { exit } f { print }' "$root/docs/glsl.md" >"$tmp/doc.hlsl"
+[[ -s "$tmp/doc.hlsl" ]] || { echo "validate.sh: docs/glsl.md has no hlsl block"; exit 1; }
+if ! out="$(glslangValidator -D -e main -V -S frag -I"$root/include" "$tmp/doc.hlsl" -o "$tmp/doc.spv" 2>&1)" ||
+   ! out2="$(spirv-val "$tmp/doc.spv" 2>&1)"; then
+  echo "$out" "${out2:-}"
+  echo "validate.sh: FAILED: docs/glsl.md's HLSL example"
+  exit 1
+fi
+count=$((count + 1))
+echo "validate.sh: phong.hlsl compiles to valid SPIR-V in $count shaders (glslangValidator -D, spirv-val; ${#feature_sets[@]} feature sets, vertex and pixel; docs/glsl.md's example)"
