@@ -4,8 +4,9 @@
 //  * six lights: one directional light, four point lights with constant, linear and quadratic
 //    attenuation, one flashlight spot at the camera with a linear edge between an inner and an outer
 //    cone; per-light ambient; Phong specular with reflect() and no n.l gate; diffuse and specular
-//    texture maps; lighting in world space. The twin: PHONG_SPOT_LINEAR, lights of any kind; the
-//    point lights' spot uniforms left at 0 (no cone).
+//    texture maps; lighting in world space. The twin: PHONG_SPOT_LINEAR, lights of any kind, the
+//    flashlight first and PHONG_SPOT_LIGHTS 1 (the other lights' cones are not read); and the same
+//    with every light allowed a cone (the default), the point lights' spot uniforms left at 0.
 //  * one light: the tutorial's basic specular shader (one point light, ambient 0.1, specular 0.5,
 //    shininess 32, an object colour), and the same through phong_shade.
 // Each frame is a clear, one draw of a tessellated height field that covers the viewport, and
@@ -153,6 +154,17 @@ void main()
 
 // The same lighting through the twin: the maps give the material, the lights are phong_lights.
 const char* const twin_six_defines = R"(#define PHONG_SCENE_AMBIENT 0
+#define PHONG_LIGHT_AMBIENT 1
+#define PHONG_SPECULAR_GATE 0
+#define PHONG_ATTENUATION PHONG_ATTENUATION_POLYNOMIAL
+#define PHONG_SPOT PHONG_SPOT_LINEAR
+#define PHONG_VIEW PHONG_VIEW_EYE_POINT
+#define PHONG_MAX_LIGHTS 6
+#define PHONG_SPOT_LIGHTS 1
+)";
+// The same with every light allowed a cone (PHONG_SPOT_LIGHTS left at its default, 6): the five
+// without one have their spot uniforms at 0.
+const char* const twin_six_all_cones_defines = R"(#define PHONG_SCENE_AMBIENT 0
 #define PHONG_LIGHT_AMBIENT 1
 #define PHONG_SPECULAR_GATE 0
 #define PHONG_ATTENUATION PHONG_ATTENUATION_POLYNOMIAL
@@ -341,22 +353,23 @@ void set_twin_six(const glt::context& c, const glt::feedback_program& p, const s
     f1("shininess", 32);
     v4("environment.eye", glm::vec4(s.view_pos, 1));
     gl.glUniform1i(p.uniform("light_count"), 6);
-    // Light 0: directional; its position's xyz points toward the light (the tutorial's direction
+    // Light 5: directional; its position's xyz points toward the light (the tutorial's direction
     // points from the light: negated). No attenuation is read for w = 0; no cone (spot left at 0).
-    v4("lights[0].position", glm::vec4(-s.dir_direction, 0));
-    v3("lights[0].ambient", glm::vec3(0.05f)), v3("lights[0].diffuse", glm::vec3(0.4f)), v3("lights[0].specular", glm::vec3(0.5f));
+    v4("lights[5].position", glm::vec4(-s.dir_direction, 0));
+    v3("lights[5].ambient", glm::vec3(0.05f)), v3("lights[5].diffuse", glm::vec3(0.4f)), v3("lights[5].specular", glm::vec3(0.5f));
     for (int i = 0; i < 4; ++i) { // lights 1-4: points, spot uniforms left at 0 (no cone)
         const std::string L = "lights[" + std::to_string(i + 1) + "].";
         v4(L + "position", glm::vec4(s.points[i], 1));
         v3(L + "ambient", glm::vec3(0.05f)), v3(L + "diffuse", glm::vec3(0.8f)), v3(L + "specular", glm::vec3(1.0f));
         f1(L + "attenuation.constant", 1), f1(L + "attenuation.linear", 0.09f), f1(L + "attenuation.quadratic", 0.032f);
     }
-    // Light 5: the flashlight; its spot direction points away from the light, as the tutorial's.
-    v4("lights[5].position", glm::vec4(s.view_pos, 1));
-    v3("lights[5].ambient", glm::vec3(0)), v3("lights[5].diffuse", glm::vec3(1)), v3("lights[5].specular", glm::vec3(1));
-    f1("lights[5].attenuation.constant", 1), f1("lights[5].attenuation.linear", 0.09f), f1("lights[5].attenuation.quadratic", 0.032f);
-    v3("lights[5].spot.direction", s.spot_direction);
-    f1("lights[5].spot.cos_inner", s.cut_off), f1("lights[5].spot.cos_outer", s.outer_cut_off);
+    // Light 0: the flashlight (first: PHONG_SPOT_LIGHTS 1); its spot direction points away from
+    // the light, as the tutorial's.
+    v4("lights[0].position", glm::vec4(s.view_pos, 1));
+    v3("lights[0].ambient", glm::vec3(0)), v3("lights[0].diffuse", glm::vec3(1)), v3("lights[0].specular", glm::vec3(1));
+    f1("lights[0].attenuation.constant", 1), f1("lights[0].attenuation.linear", 0.09f), f1("lights[0].attenuation.quadratic", 0.032f);
+    v3("lights[0].spot.direction", s.spot_direction);
+    f1("lights[0].spot.cos_inner", s.cut_off), f1("lights[0].spot.cos_outer", s.outer_cut_off);
 }
 
 void set_hand_one(const glt::context& c, const glt::feedback_program& p, const scene_lights& s)
@@ -424,6 +437,7 @@ int main(int argc, char** argv)
                     std::getenv("LP_NUM_THREADS"), width, height);
         const std::string twin = phong::glsl::source();
         frame_program hand6(c, hand_six), twin6(c, phong::glsl::shader("#version 330 core", twin_six_defines, twin, twin_body));
+        frame_program twin6all(c, phong::glsl::shader("#version 330 core", twin_six_all_cones_defines, twin, twin_body));
         frame_program hand1(c, hand_one), twin1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, twin_one_body));
         // The target: 800x600 RGBA8, no depth (the height field does not overlap itself from this camera).
         GLuint fbo = 0, rb = 0;
@@ -466,6 +480,7 @@ int main(int argc, char** argv)
         const scene_lights s;
         set_hand_six(c, hand6.program, s);
         set_twin_six(c, twin6.program, s);
+        set_twin_six(c, twin6all.program, s);
         set_hand_one(c, hand1.program, s);
         set_twin_one(c, twin1.program, s);
         const auto frame = [&](const glt::feedback_program& p) {
@@ -525,6 +540,8 @@ int main(int argc, char** argv)
         const char* only = std::getenv("PHONG_BENCH_ONLY"); // "six" or "one": that case alone
         if (!only || std::string(only) == "six")
             report("six lights (directional, 4 point, linear-edge spot; texture maps)", hand6.program, twin6.program);
+        if (!only || std::string(only) == "six")
+            report("six lights, every light allowed a cone (PHONG_SPOT_LIGHTS = PHONG_MAX_LIGHTS)", hand6.program, twin6all.program);
         if (!only || std::string(only) == "one") report("one light (basic specular)", hand1.program, twin1.program);
         gl.glBindVertexArray(0);
         gl.glDeleteVertexArrays(1, &vao);

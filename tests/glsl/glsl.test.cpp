@@ -399,6 +399,9 @@ struct generator {
     }
 };
 
+/// Lights from this index on get no cone in random scenes (a test of PHONG_SPOT_LIGHTS sets it).
+int cone_lights = max_lights;
+
 /// A random scene: a point in front of the eye, a normal of any length, 1-4 lights (positional or
 /// directional as F allows) with polynomial falloff, m in [0, 200] (some 0, some integers).
 template <features F>
@@ -449,8 +452,9 @@ scene random_scene(generator& g)
                 const float inner = g.uniform(0, 40);
                 L.spot = phong::spot_cone<float>::smooth(axis, inner, g.rng() % 6 == 0 ? inner : inner + g.uniform(0, 40));
             }
-            // One light in five has no cone: every spot field 0, as uniforms left unset are.
-            if (g.rng() % 5 == 0) L.spot = phong::spot_cone<float>{glm::vec3(0), 0, 0, 0, 0};
+            // One light in five has no cone: every spot field 0, as uniforms left unset are; and
+            // every light from cone_lights on (the twin's PHONG_SPOT_LIGHTS).
+            if (g.rng() % 5 == 0 || i >= cone_lights) L.spot = phong::spot_cone<float>{glm::vec3(0), 0, 0, 0, 0};
         }
         s.lights.push_back(L);
     }
@@ -740,8 +744,8 @@ void check_preset(glt::api a, const char* name, const char* define, std::uint64_
 {
     const auto c = open(a);
     if (!c) return;
-    const std::string defines = define ? std::string("#define ") + define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n" + extra
-                                       : phong::glsl::defines(F, max_lights);
+    const std::string defines = (define ? std::string("#define ") + define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n"
+                                        : phong::glsl::defines(F, max_lights)) + extra;
     const tally t = agree<F>(*c, defines, 3000, seed, lang);
     MESSAGE(std::string(lang == language::hlsl ? "HLSL twin, " : "") << glt::api_name(a) << ", " << std::string(name) << std::string(extra.empty() ? "" : ", fast mode") << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
                              << " channels (" << t.bounded << " with a bound, " << t.unbounded
@@ -851,6 +855,26 @@ TEST_CASE("the twin's linear cone edge agrees with the model, lights with and wi
                                            a == glt::api::gles30 ? 71 : 70);
 }
 
+TEST_CASE("PHONG_SPOT_LIGHTS: only the first lights' cones are read; the same colours as the model (330, 300 es)")
+{
+    // Lights from index 1 on have no cone in these scenes (their spot fields 0); the twin reads
+    // only light 0's cone. A second run puts a cone on every light but still reads only light 0's:
+    // it must differ from the model where a later light's cone matters (the define is a promise).
+    cone_lights = 1;
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30})
+        check_preset<linear_spot_tutorial>(a, "linear spot, PHONG_SPOT_LIGHTS 1", nullptr, a == glt::api::gles30 ? 73 : 72,
+                                           "#define PHONG_SPOT_LIGHTS 1\n");
+    cone_lights = max_lights;
+    const auto c = open(glt::api::gl33_core);
+    if (!c) return;
+    generator g(74);
+    std::vector<scene> scenes;
+    for (int i = 0; i < 256; ++i) scenes.push_back(random_scene<linear_spot_tutorial>(g));
+    const std::string defines = phong::glsl::defines(linear_spot_tutorial, max_lights);
+    const std::vector<float> all = run_twin(*c, defines, scenes), first = run_twin(*c, defines + "#define PHONG_SPOT_LIGHTS 1\n", scenes);
+    CHECK(all != first);
+}
+
 /// Every feature set the GLSL twin is tested with, through the HLSL twin (the same seeds: the same
 /// cases as the GLSL runs of the same API).
 void check_hlsl(glt::api a, std::uint64_t preset_seed, std::uint64_t extra_seed, std::uint64_t fast_seed, std::uint64_t linear_seed)
@@ -871,6 +895,9 @@ void check_hlsl(glt::api a, std::uint64_t preset_seed, std::uint64_t extra_seed,
     check_preset<phong::presets::blinn_phong_per_light_ambient>(a, "blinn_phong_per_light_ambient",
                                                                 "PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT", fast_seed + 2, fast, h);
     check_preset<linear_spot_tutorial>(a, "linear spot, per-light ambient, ungated Phong, any lights, eye point", nullptr, linear_seed, "", h);
+    cone_lights = 1;
+    check_preset<linear_spot_tutorial>(a, "linear spot, PHONG_SPOT_LIGHTS 1", nullptr, linear_seed + 2, "#define PHONG_SPOT_LIGHTS 1\n", h);
+    cone_lights = max_lights;
 }
 
 TEST_CASE("the HLSL twin (glslang's HLSL front end, spirv-val, spirv-cross to GLSL 330) agrees with the model, every feature set")

@@ -34,6 +34,9 @@
 //   PHONG_EMISSION, PHONG_ALPHA, PHONG_UNIT_INPUTS               features::emission, alpha, unit_inputs
 //   PHONG_MODE = PHONG_MODE_EXACT | PHONG_MODE_FAST              features::mode (no stable mode in GLSL)
 //   PHONG_MAX_LIGHTS (default 8): the size of the light arrays phong_shade takes.
+//   PHONG_SPOT_LIGHTS (default PHONG_MAX_LIGHTS): with PHONG_SPOT, only lights[0 ..
+//   PHONG_SPOT_LIGHTS - 1] may have a cone; the others have none and their spot fields are not
+//   read (put the spot lights first). Within them a zero spot.direction is no cone too.
 // Defaults (no preset): the C++ `features{}`: scene ambient, diffuse, gated Phong specular,
 // lights of any kind, eye at the origin, exact mode.
 
@@ -191,11 +194,17 @@
 #ifndef PHONG_MAX_LIGHTS
 #  define PHONG_MAX_LIGHTS 8
 #endif
+#ifndef PHONG_SPOT_LIGHTS
+#  define PHONG_SPOT_LIGHTS PHONG_MAX_LIGHTS
+#endif
 #if PHONG_MODE != PHONG_MODE_EXACT && PHONG_MODE != PHONG_MODE_FAST
 #  error "phong.glsl: PHONG_MODE must be PHONG_MODE_EXACT or PHONG_MODE_FAST (the stable mode needs double or twofold arithmetic: C++ only)"
 #endif
 #if PHONG_MAX_LIGHTS < 1
 #  error "phong.glsl: PHONG_MAX_LIGHTS must be at least 1"
+#endif
+#if PHONG_SPOT_LIGHTS < 0 || PHONG_SPOT_LIGHTS > PHONG_MAX_LIGHTS
+#  error "phong.glsl: PHONG_SPOT_LIGHTS must be in [0, PHONG_MAX_LIGHTS]"
 #endif
 
 // The specular gate matters only with a specular term (features.hpp's detail::gated).
@@ -559,8 +568,9 @@ phong_frame phong_prepare(vec3 q, vec3 normal, vec3 given_view, phong_environmen
 
 /// detail::light_factor: f_i = attenuation(distance) * spot(l) for one light; distance = |L.xyz
 /// - Q| (positional lights only: a directional light is not attenuated), l the unit light vector
-/// (0 if none). Pre: the light's parameters in phong::validate(light)'s domain.
-float phong_light_factor(phong_light L, float distance, float w, vec3 l)
+/// (0 if none); cone: whether the light may have a cone (false: its spot fields are not read, as
+/// for a zero axis). Pre: the light's parameters in phong::validate(light)'s domain.
+float phong_light_factor(phong_light L, float distance, float w, vec3 l, bool cone)
 {
     float f = 1.0;
 #if PHONG_ATTENUATION != PHONG_ATTENUATION_NONE && PHONG_LIGHTS != PHONG_LIGHTS_DIRECTIONAL
@@ -578,7 +588,7 @@ float phong_light_factor(phong_light L, float distance, float w, vec3 l)
 #if PHONG_SPOT != PHONG_SPOT_NONE
     // A zero axis is no cone (a light whose spot uniforms are left at 0 is lit). For lights in
     // uniforms the condition is the same on every pixel (a uniform branch).
-    float axis2 = dot(L.spot.direction, L.spot.direction);
+    float axis2 = cone ? dot(L.spot.direction, L.spot.direction) : 0.0;
     if (axis2 > 0.0) {
         // The model reads the axis's direction (validate accepts it within 1e-3 of unit length).
         vec3 s = L.spot.direction * phong_rsqrt(axis2);
@@ -601,8 +611,8 @@ float phong_light_factor(phong_light L, float distance, float w, vec3 l)
 /// y and z for a lit pair only (the normal exists, |d|^2 a normal float, and, gated, n.l > 0),
 /// 0 otherwise; s: Phong max(r.v, 0)^m with r.v = (2 (n.d)(n.v) - d.v) / |d|, Blinn max(n.h, 0)^m
 /// with n.h = (n.l + n.v) / |l + v|. Edge: a light at Q (or a directional light with xyz = 0)
-/// gives (x, 0, 0).
-vec3 phong_light_weights(phong_frame s, phong_light L, float m)
+/// gives (x, 0, 0). cone: as for phong_light_factor (false: the light has no cone).
+vec3 phong_light_weights(phong_frame s, phong_light L, float m, bool cone)
 {
 #if PHONG_LIGHTS == PHONG_LIGHTS_POSITIONAL
     float w = 1.0;
@@ -626,7 +636,7 @@ vec3 phong_light_weights(phong_frame s, phong_light L, float m)
 #if PHONG_ATTENUATION != PHONG_ATTENUATION_NONE && PHONG_LIGHTS != PHONG_LIGHTS_DIRECTIONAL
     distance = sqrt(dd);
 #endif
-    float f = phong_light_factor(L, distance, w, l);
+    float f = phong_light_factor(L, distance, w, l, cone);
     vec3 weights = vec3(0.0, 0.0, 0.0);
 #if PHONG_LIGHT_AMBIENT
 #  if PHONG_ATTENUATE_AMBIENT
@@ -671,11 +681,9 @@ vec3 phong_light_weights(phong_frame s, phong_light L, float m)
     return weights;
 }
 
-/// detail::exact::add_light: one light's terms added to the sums (m: the shininess):
-///   ambient += La x,  diffuse += Ld y,  specular += Ls z  with (x, y, z) = phong_light_weights.
-void phong_add_light(inout phong_sums sums, phong_frame s, phong_light L, float m)
+/// The light's colours scaled by its weights (phong_light_weights) added to the sums.
+void phong_add_light_weighted(inout phong_sums sums, phong_light L, vec3 weights)
 {
-    vec3 weights = phong_light_weights(s, L, m);
 #if PHONG_LIGHT_AMBIENT
     sums.ambient += L.ambient * weights.x;
 #endif
@@ -685,6 +693,14 @@ void phong_add_light(inout phong_sums sums, phong_frame s, phong_light L, float 
 #if PHONG_SPECULAR != PHONG_SPECULAR_NONE
     sums.specular += L.specular * weights.z;
 #endif
+}
+
+/// detail::exact::add_light: one light's terms added to the sums (m: the shininess):
+///   ambient += La x,  diffuse += Ld y,  specular += Ls z  with (x, y, z) = phong_light_weights
+/// (the light's cone read with PHONG_SPOT; a zero spot axis is no cone).
+void phong_add_light(inout phong_sums sums, phong_frame s, phong_light L, float m)
+{
+    phong_add_light_weighted(sums, L, phong_light_weights(s, L, m, true));
 }
 
 /// shade.hpp's terms_of: the model's terms from the per-light sums:
@@ -752,10 +768,33 @@ phong_shading_terms phong_terms_at(phong_frame s, phong_material mat, phong_ligh
     sums.ambient = vec3(0.0, 0.0, 0.0);
     sums.diffuse = vec3(0.0, 0.0, 0.0);
     sums.specular = vec3(0.0, 0.0, 0.0);
-    for (int i = 0; i < PHONG_MAX_LIGHTS; ++i) {
-        if (i >= count) break;
-        phong_add_light(sums, s, lights[i], mat.shininess);
+    // Two loops: the first PHONG_SPOT_LIGHTS lights, whose cones are read, then the others, which
+    // have none (their spot fields are not read).
+#if PHONG_MAX_LIGHTS == 1
+    // One light: no loop, its fields read at a constant index.
+    if (count > 0)
+        phong_add_light_weighted(sums, lights[0], phong_light_weights(s, lights[0], mat.shininess, PHONG_SPOT_LIGHTS > 0));
+#else
+    int n = min(count, PHONG_MAX_LIGHTS);
+    int i = 0;
+#if PHONG_SPOT != PHONG_SPOT_NONE
+    int k = min(n, PHONG_SPOT_LIGHTS);
+    if (k > 0) {
+        do {
+            phong_add_light_weighted(sums, lights[i], phong_light_weights(s, lights[i], mat.shininess, true));
+            ++i;
+        } while (i < k);
     }
+#endif
+#if PHONG_SPOT == PHONG_SPOT_NONE || PHONG_SPOT_LIGHTS < PHONG_MAX_LIGHTS
+    if (n > i) {
+        do {
+            phong_add_light_weighted(sums, lights[i], phong_light_weights(s, lights[i], mat.shininess, false));
+            ++i;
+        } while (i < n);
+    }
+#endif
+#endif // PHONG_MAX_LIGHTS == 1
     return phong_terms_of(sums, mat, env);
 }
 
