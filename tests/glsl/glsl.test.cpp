@@ -747,7 +747,7 @@ void check_preset(glt::api a, const char* name, const char* define, std::uint64_
     const std::string defines = (define ? std::string("#define ") + define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n"
                                         : phong::glsl::defines(F, max_lights)) + extra;
     const tally t = agree<F>(*c, defines, 3000, seed, lang);
-    MESSAGE(std::string(lang == language::hlsl ? "HLSL twin, " : "") << glt::api_name(a) << ", " << std::string(name) << std::string(extra.empty() ? "" : ", fast mode") << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
+    MESSAGE(std::string(lang == language::hlsl ? "HLSL twin, " : "") << glt::api_name(a) << ", " << std::string(name) << std::string(extra.find("PHONG_MODE_FAST") == std::string::npos ? "" : ", fast mode") << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
                              << " channels (" << t.bounded << " with a bound, " << t.unbounded
                              << " without: a gate or a two-sided flip within rounding); worst relative error against the model: twin "
                              << t.worst_rel << " (random), " << t.worst_rel_edge << " (edge, capped at 1), phong::shade float "
