@@ -580,8 +580,8 @@ void main() {
 /// glslangValidator's HLSL front end, spirv-val, and spirv-cross back to GLSL for this context).
 enum class language { glsl, hlsl };
 
-/// Runs a command; throws naming it when it fails.
-void run_tool(const std::string& command, const std::string& log)
+/// Runs a command; throws naming it (with its log) when it fails.
+[[maybe_unused]] void run_tool(const std::string& command, const std::string& log)
 {
     if (std::system(command.c_str()) == 0) return;
     std::ifstream in(log, std::ios::binary);
