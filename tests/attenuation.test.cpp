@@ -1,14 +1,17 @@
-// phong/terms/attenuation.hpp: polynomial and windowed distance falloff, the OpenGL and smooth spot
-// cones, and the spot_cone factories. Hand-worked values and the documented edges.
+// phong/terms/attenuation.hpp: polynomial and windowed distance falloff, the OpenGL, smooth and linear
+// spot cones (and a zero axis: no cone), and the spot_cone factories. Hand-worked values and the documented edges.
 // (Monotonicity in distance: tests/properties.test.cpp.)
 #include "support/numeric.hpp"
 #include "support/wide.hpp"
 
 #include <phong/terms/attenuation.hpp>
 #include <phong/inputs/light.hpp>
+#include <phong/sum/shade.hpp>
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -127,6 +130,90 @@ TEST_CASE_TEMPLATE("attenuation: smooth spot cone", T, float, double)
     const phong::spot_cone<T> none{};
     CHECK(phong::spot_opengl(l_at(120), none.direction, none.exponent, none.cos_cutoff) == T(1));
     CHECK(phong::spot_smooth(l_at(120), none.direction, none.cos_inner, none.cos_outer) == T(1));
+}
+
+TEST_CASE_TEMPLATE("attenuation: linear spot cone", T, float, double)
+{
+    const vec3<T> s(0, 0, -1);
+    auto l_at = [](double degrees) { // l toward the light for Q at `degrees` off the axis
+        const double a = degrees * 3.14159265358979323846 / 180;
+        return vec3<T>(T(std::sin(a)), T(0), T(std::cos(a)));
+    };
+    // LearnOpenGL's flashlight: inner 12.5 degrees, outer 17.5; the formula written literally in
+    // long double, clamp((theta - outer) / (inner - outer), 0, 1), at angles across the edge.
+    const T cos_inner = T(std::cos(12.5L * 3.14159265358979323846L / 180)), cos_outer = T(std::cos(17.5L * 3.14159265358979323846L / 180));
+    for (const double degrees : {0.0, 5.0, 12.0, 13.0, 14.0, 15.0, 16.0, 17.0, 17.4, 18.0, 45.0, 90.0, 135.0, 180.0}) {
+        CAPTURE(degrees);
+        const vec3<T> l = l_at(degrees);
+        const long double theta = -(static_cast<long double>(l.x) * s.x + static_cast<long double>(l.y) * s.y +
+                                    static_cast<long double>(l.z) * s.z);
+        const long double literal = std::clamp((theta - cos_outer) / (static_cast<long double>(cos_inner) - cos_outer), 0.0L, 1.0L);
+        const T got = phong::spot_linear(l, s, cos_inner, cos_outer);
+        // The bound: the cosine's rounding (3 eps) over the cone's width, plus the quotient's 2 eps.
+        const long double width = static_cast<long double>(cos_inner) - cos_outer;
+        CHECK(std::fabs(static_cast<long double>(got) - literal) <= (3 / width + 2) * tolerance<T>::eps);
+        CHECK(got >= T(0));
+        CHECK(got <= T(1));
+    }
+    // By hand: cos_inner 0.8, cos_outer 0.6; c = 0.7 is halfway (1/2), c = 0.65 a quarter (1/4),
+    // 0 outside, 1 inside.
+    const vec3<T> l_mid(T(std::sqrt(0.51)), T(0), T(0.7));
+    CHECK(error_rel(phong::spot_linear(l_mid, s, T(0.8), T(0.6)), wide(0.5)) <= 32 * double(tolerance<T>::eps));
+    const vec3<T> l_q(T(std::sqrt(1 - 0.65 * 0.65)), T(0), T(0.65));
+    CHECK(error_rel(phong::spot_linear(l_q, s, T(0.8), T(0.6)), wide(0.25)) <= 64 * double(tolerance<T>::eps));
+    CHECK(phong::spot_linear(l_at(0), s, T(0.8), T(0.6)) == T(1));
+    CHECK(phong::spot_linear(l_at(80), s, T(0.8), T(0.6)) == T(0));
+    // Below smoothstep inside the edge's lower half, above it in the upper half (t < 1/2: t > t^2 (3 - 2t)).
+    CHECK(phong::spot_linear(l_q, s, T(0.8), T(0.6)) > phong::spot_smooth(l_q, s, T(0.8), T(0.6)));
+    // cos_inner == cos_outer: a hard edge, no division by zero.
+    CHECK(phong::spot_linear(l_at(10), s, T(0.9), T(0.9)) == T(1));
+    CHECK(phong::spot_linear(l_at(30), s, T(0.9), T(0.9)) == T(0));
+    CHECK(phong::spot_linear(l_at(0), s, T(0), T(0)) == T(1));
+    // Both -1: no cone. l = 0 (light at Q): c = 0.
+    CHECK(phong::spot_linear(l_at(170), s, T(-1), T(-1)) == T(1));
+    CHECK(phong::spot_linear(vec3<T>(0), s, T(0.5), T(-0.5)) == T(0.5));
+    const phong::spot_cone<T> none{};
+    CHECK(phong::spot_linear(l_at(120), none.direction, none.cos_inner, none.cos_outer) == T(1));
+}
+
+namespace {
+/// One light at (0, 0, 4) above the point Q = 0 with normal +z: diffuse only, so the colour is
+/// the light factor f times n.l = 1 (kd = Ld = 1, no ambient).
+template <phong::spot_model Spot, class T> T lit_by(const phong::spot_cone<T>& cone)
+{
+    constexpr phong::features F{.scene_ambient = false, .specular = phong::specular_model::none, .spot = Spot};
+    phong::light<T> L = phong::light<T>::with_strength({0, 0, 4, 1}, {1, 1, 1});
+    L.spot = cone;
+    const phong::material<T> m{.ka = vec3<T>(0), .kd = vec3<T>(1), .ks = vec3<T>(0), .shininess = T(1)};
+    const std::array lights{L};
+    return phong::shade<F>(vec3<T>(0), vec3<T>(0, 0, 1), m, lights).x;
+}
+} // namespace
+
+// The convention for lights without a cone: shader uniforms default to 0, so a light whose spot
+// fields are all zero (axis 0, cos_inner = cos_outer = cos_cutoff = 0, exponent 0) is lit by every
+// spot model, not dark; validate accepts it.
+TEST_CASE_TEMPLATE("attenuation: a zero spot axis is no cone, in every spot model", T, float, double)
+{
+    const phong::spot_cone<T> zero{.direction = vec3<T>(0), .exponent = T(0), .cos_cutoff = T(0), .cos_inner = T(0), .cos_outer = T(0)};
+    CHECK(lit_by<phong::spot_model::opengl>(zero) == T(1));
+    CHECK(lit_by<phong::spot_model::smooth>(zero) == T(1));
+    CHECK(lit_by<phong::spot_model::linear>(zero) == T(1));
+    phong::light<T> L = phong::light<T>::with_strength({0, 0, 4, 1}, {1, 1, 1});
+    L.spot = zero;
+    CHECK(static_cast<bool>(phong::validate(L)));
+    // The same cone with an axis pointing away from Q (Q is 180 degrees off it): dark.
+    phong::spot_cone<T> away = zero;
+    away.direction = vec3<T>(0, 0, 1);
+    CHECK(lit_by<phong::spot_model::opengl>(away) == T(0));
+    CHECK(lit_by<phong::spot_model::smooth>(away) == T(0));
+    CHECK(lit_by<phong::spot_model::linear>(away) == T(0));
+    // A linear cone through shade, by hand: the axis (-0.6, 0, -0.8), edges at cos 0.9 and 0.5.
+    phong::spot_cone<T> cone{.direction = vec3<T>(T(-0.6), T(0), T(-0.8)), .cos_inner = T(0.9), .cos_outer = T(0.5)};
+    // c = -l.s with l = (0, 0, 1): c = 0.8; spot = (0.8 - 0.5) / 0.4 = 0.75.
+    CHECK(error_rel(lit_by<phong::spot_model::linear>(cone), wide(0.75)) <= 16 * double(tolerance<T>::eps));
+    // smoothstep of t = 0.75: 0.5625 (3 - 1.5) = 0.84375.
+    CHECK(error_rel(lit_by<phong::spot_model::smooth>(cone), wide(0.84375)) <= 32 * double(tolerance<T>::eps));
 }
 
 TEST_CASE_TEMPLATE("attenuation: spot_cone factories", T, float, double)

@@ -406,7 +406,7 @@ TEST_CASE_TEMPLATE("NaN policy: validate(light) rejects NaN, inf and out-of-rang
     L = ok;
     L.spot.direction = glm::vec<3, T>(T(0), T(0), T(-1.01));
     expect_rejected(L, "light.spot.direction");
-    L.spot.direction = glm::vec<3, T>(T(0));
+    L.spot.direction = glm::vec<3, T>(T(0), T(0), T(-0.5));
     expect_rejected(L, "light.spot.direction");
     // The ends of the domain are accepted.
     L = ok;

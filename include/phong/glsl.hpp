@@ -5,10 +5,15 @@
 // GLSL has no #include: a program hands glShaderSource its #version line, the feature defines,
 // phong.glsl's text and its own shader, in that order (docs/glsl.md). The CMake target phong::phong
 // defines PHONG_GLSL_DIR (the source tree's include/phong/glsl, or the installed one), and
-// find_package(phong) sets the CMake variable of the same name.
+// find_package(phong) sets the CMake variable of the same name; pkg-config's phong.pc has it as
+// the variable glsldir. Without either, directory() is the glsl folder beside this header.
+// C++17 and later (the rest of phong needs C++20): source(), directory(), shader(); defines(F)
+// takes a phong::features value, so it needs C++20.
 #pragma once
 
+#if __cplusplus >= 202002L
 #include "inputs/features.hpp"
+#endif
 
 #include <fstream>
 #include <iterator>
@@ -19,14 +24,17 @@
 namespace phong::glsl {
 
 /// The directory that holds phong.glsl: the macro PHONG_GLSL_DIR (set by the CMake target
-/// phong::phong), or "" when it is not defined (a build without phong's CMake target: pass the
-/// directory to source(dir)).
+/// phong::phong), else the folder glsl beside this header as the compiler found it (__FILE__: an
+/// absolute path with an absolute -I, as pkg-config's and CMake's are); "" when __FILE__ names no
+/// folder (pass the directory to source(dir)).
 inline std::string directory()
 {
 #if defined(PHONG_GLSL_DIR)
     return PHONG_GLSL_DIR;
 #else
-    return {};
+    const std::string here = __FILE__;
+    const std::size_t slash = here.find_last_of("/\\");
+    return slash == std::string::npos ? std::string() : here.substr(0, slash + 1) + "glsl";
 #endif
 }
 
@@ -35,13 +43,14 @@ inline std::string directory()
 inline std::string source(const std::string& dir = directory())
 {
     if (dir.empty())
-        throw std::runtime_error("phong::glsl::source: PHONG_GLSL_DIR is not defined (link phong::phong, or pass the directory)");
+        throw std::runtime_error("phong::glsl::source: no directory known (link phong::phong, use pkg-config's glsldir, or pass the directory)");
     const std::string path = dir + "/phong.glsl";
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error("phong::glsl::source: cannot read " + path);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+#if __cplusplus >= 202002L
 /// The #define lines that select F in phong.glsl (every field written out, so no preset define is
 /// needed), one per line, followed by PHONG_MAX_LIGHTS max_lights. Throws std::invalid_argument
 /// for the stable mode, which the twin does not have (GLSL has no double in ES, and the twofold
@@ -55,7 +64,7 @@ inline std::string defines(const features& F, int max_lights = 8)
     const char* specular[] = {"PHONG_SPECULAR_NONE", "PHONG_SPECULAR_PHONG", "PHONG_SPECULAR_BLINN"};
     const char* lights[] = {"PHONG_LIGHTS_ANY", "PHONG_LIGHTS_POSITIONAL", "PHONG_LIGHTS_DIRECTIONAL"};
     const char* attenuation[] = {"PHONG_ATTENUATION_NONE", "PHONG_ATTENUATION_POLYNOMIAL", "PHONG_ATTENUATION_WINDOWED"};
-    const char* spot[] = {"PHONG_SPOT_NONE", "PHONG_SPOT_OPENGL", "PHONG_SPOT_SMOOTH"};
+    const char* spot[] = {"PHONG_SPOT_NONE", "PHONG_SPOT_OPENGL", "PHONG_SPOT_SMOOTH", "PHONG_SPOT_LINEAR"};
     const char* facing_names[] = {"PHONG_FACING_NONE", "PHONG_FACING_VIEW", "PHONG_FACING_FLAG"};
     const char* view[] = {"PHONG_VIEW_EYE_AT_ORIGIN", "PHONG_VIEW_FIXED_DIRECTION", "PHONG_VIEW_EYE_POINT", "PHONG_VIEW_GIVEN"};
     std::string s;
@@ -84,6 +93,7 @@ inline std::string defines(const features& F, int max_lights = 8)
     line("PHONG_MAX_LIGHTS", std::to_string(max_lights));
     return s;
 }
+#endif // C++20: defines(F)
 
 /// One shader's text: version_line ("#version 330 core", "#version 300 es"), a newline, the
 /// defines (e.g. defines(F), or "#define PHONG_PRESET_GLSL_ADS\n"), phong.glsl's text (twin), then

@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -237,7 +238,8 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
             else if (r4 < 1 + 64 * u) f_extra = inf; // closing: no relative bound
             // else beyond the range by more than the ratio's error: f = 0 on both sides
         }
-        if constexpr (F.spot != phong::spot_model::none) {
+        const bool has_cone = !(L.spot.direction.x == 0 && L.spot.direction.y == 0 && L.spot.direction.z == 0); // zero axis: no cone
+        if (F.spot != phong::spot_model::none && has_cone) {
             const ld3 axis = L3(L.spot.direction);
             const ld c = -dot(l, axis * (1 / std::sqrt(dot(axis, axis))));
             const double E = 16 * u;
@@ -258,13 +260,17 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
                 const ld width = ld(L.spot.cos_inner) - ld(L.spot.cos_outer);
                 if (width > 0) {
                     const ld t = std::clamp((c - L.spot.cos_outer) / width, ld(0), ld(1));
-                    spot = t * t * (3 - 2 * t);
+                    const bool linear = F.spot == phong::spot_model::linear;
+                    spot = linear ? t : t * t * (3 - 2 * t);
                     if (c < L.spot.cos_outer - 4 * E || c > L.spot.cos_inner + 4 * E) {
                         // outside the outer cone (0) or inside the inner one (1), beyond the cosine's error: exact
                     } else if (t * width <= ld(E) * 8) {
                         f_extra = inf; // at the outer edge: no relative bound
                     } else if (t < 1) {
-                        f_extra += double(6 * (1 - t) / (width * t * (3 - 2 * t))) * E * 2 + 16 * u;
+                        // the spot's relative slope in c times the cosine's error E (smoothstep: 6 (1 - t) /
+                        // (width t (3 - 2 t)); the linear edge: 1 / (width t)), plus the quotient's and clamp's rounding
+                        const ld slope = linear ? 1 / (width * t) : 6 * (1 - t) / (width * t * (3 - 2 * t));
+                        f_extra += double(slope) * E * 2 + 16 * u;
                     }
                 } else {
                     spot = c >= L.spot.cos_outer ? 1 : 0;
@@ -393,6 +399,9 @@ struct generator {
     }
 };
 
+/// Lights from this index on get no cone in random scenes (a test of PHONG_SPOT_LIGHTS sets it).
+int cone_lights = max_lights;
+
 /// A random scene: a point in front of the eye, a normal of any length, 1-4 lights (positional or
 /// directional as F allows) with polynomial falloff, m in [0, 200] (some 0, some integers).
 template <features F>
@@ -443,6 +452,9 @@ scene random_scene(generator& g)
                 const float inner = g.uniform(0, 40);
                 L.spot = phong::spot_cone<float>::smooth(axis, inner, g.rng() % 6 == 0 ? inner : inner + g.uniform(0, 40));
             }
+            // One light in five has no cone: every spot field 0, as uniforms left unset are; and
+            // every light from cone_lights on (the twin's PHONG_SPOT_LIGHTS).
+            if (g.rng() % 5 == 0 || i >= cone_lights) L.spot = phong::spot_cone<float>{glm::vec3(0), 0, 0, 0, 0};
         }
         s.lights.push_back(L);
     }
@@ -564,11 +576,55 @@ void main() {
 }
 )";
 
-/// The twin's colours of `scenes` in context c with the given defines (chunks of 4096 cases).
-std::vector<float> run_twin(const glt::context& c, const std::string& defines, const std::vector<scene>& scenes)
+/// Which twin a run tests: the GLSL one, or the HLSL one (tests/glsl/case.hlsl through
+/// glslangValidator's HLSL front end, spirv-val, and spirv-cross back to GLSL for this context).
+enum class language { glsl, hlsl };
+
+/// Runs a command; throws naming it (with its log) when it fails.
+[[maybe_unused]] void run_tool(const std::string& command, const std::string& log)
 {
-    const std::string text = phong::glsl::shader(glt::version_line(c.which()), defines, phong::glsl::source(), case_shader);
-    glt::feedback_program program(c, text, "result");
+    if (std::system(command.c_str()) == 0) return;
+    std::ifstream in(log, std::ios::binary);
+    throw std::runtime_error("failed: " + command + "\n" + std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
+}
+
+/// The HLSL twin's test shader with `defines`, as GLSL for context c: case.hlsl compiled by
+/// glslangValidator -D -e main -V (HLSL to SPIR-V), validated by spirv-val, translated by
+/// spirv-cross to the context's GLSL version. Throws when a tool is missing or fails.
+std::string hlsl_as_glsl(const glt::context& c, const std::string& defines)
+{
+#if defined(PHONG_GLSLANG_VALIDATOR) && defined(PHONG_SPIRV_VAL) && defined(PHONG_SPIRV_CROSS)
+    static int serial = 0;
+    const std::string base = std::string(PHONG_HLSL_WORK_DIR) + "/case" + std::to_string(serial++);
+    {
+        std::ofstream out(base + ".hlsl", std::ios::binary);
+        out << defines << "#include \"case.hlsl\"\n"; // found through -I (glslang takes no absolute include path)
+        if (!out) throw std::runtime_error("cannot write " + base + ".hlsl");
+    }
+    const std::string quiet = " >" + base + ".log 2>&1";
+    run_tool(std::string(PHONG_GLSLANG_VALIDATOR) + " -D -e main -V -S vert -I" + PHONG_INCLUDE_DIR + " -I" + PHONG_CASE_HLSL_DIR + " " + base +
+             ".hlsl -o " + base + ".spv" + quiet, base + ".log");
+    run_tool(std::string(PHONG_SPIRV_VAL) + " " + base + ".spv" + quiet, base + ".log");
+    const bool es = c.which() == glt::api::gles30;
+    run_tool(std::string(PHONG_SPIRV_CROSS) + " " + base + ".spv" + (es ? " --es --version 300" : " --no-es --version 330") + " --output " +
+             base + ".glsl" + quiet, base + ".log");
+    std::ifstream in(base + ".glsl", std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+#else
+    (void)c, (void)defines;
+    throw std::runtime_error("the HLSL twin's tools were not found at configure time (glslangValidator, spirv-val, spirv-cross: "
+                             "apt-get install glslang-tools spirv-tools spirv-cross)");
+#endif
+}
+
+/// The twin's colours of `scenes` in context c with the given defines (chunks of 4096 cases).
+std::vector<float> run_twin(const glt::context& c, const std::string& defines, const std::vector<scene>& scenes,
+                            language lang = language::glsl)
+{
+    const std::string text = lang == language::glsl
+                                 ? phong::glsl::shader(glt::version_line(c.which()), defines, phong::glsl::source(), case_shader)
+                                 : hlsl_as_glsl(c, defines);
+    glt::feedback_program program(c, text, lang == language::glsl ? "result" : "_entryPointOutput_result");
     std::vector<float> out;
     constexpr std::size_t chunk = 4096;
     for (std::size_t first = 0; first < scenes.size(); first += chunk) {
@@ -576,7 +632,9 @@ std::vector<float> run_twin(const glt::context& c, const std::string& defines, c
         std::vector<float> texels(n * texels_per_case * 4, 0.0f);
         for (std::size_t i = 0; i < n; ++i) pack(scenes[first + i], &texels[i * texels_per_case * 4]);
         glt::float_texture tex(c, texels_per_case, int(n), texels);
-        const std::vector<float> r = program.run(int(n), 4, [&] { c.gl().glUniform1i(program.uniform("cases"), 0); });
+        const std::vector<float> r = program.run(int(n), 4, [&] { // the sampler (any name spirv-cross gave it) reads unit 0, its default
+            if (lang == language::glsl) c.gl().glUniform1i(program.uniform("cases"), 0);
+        });
         out.insert(out.end(), r.begin(), r.end());
     }
     return out;
@@ -611,7 +669,7 @@ bool measured_once = false;
 /// defines: the twin's feature defines (the CPU side is F, whose exact mode's bound the widened
 /// bound starts from, also for the twin's fast mode).
 template <features F>
-tally agree(const glt::context& c, const std::string& defines, int random_cases, std::uint64_t seed)
+tally agree(const glt::context& c, const std::string& defines, int random_cases, std::uint64_t seed, language lang = language::glsl)
 {
     if (!measured_once) {
         measured = measure_driver(c);
@@ -626,7 +684,7 @@ tally agree(const glt::context& c, const std::string& defines, int random_cases,
         if (i >= random_cases) make_edge<F>(s, (i - random_cases) % edge_kinds);
         scenes.push_back(s);
     }
-    const std::vector<float> twin = run_twin(c, defines, scenes);
+    const std::vector<float> twin = run_twin(c, defines, scenes, lang);
     tally t;
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         const scene& s = scenes[i];
@@ -681,14 +739,15 @@ tally agree(const glt::context& c, const std::string& defines, int random_cases,
 /// define: the preset's define (nullptr: every field of F, phong::glsl::defines(F)); extra: more
 /// defines after it (PHONG_MODE_FAST: the twin's fast mode, GLSL's inversesqrt).
 template <features F>
-void check_preset(glt::api a, const char* name, const char* define, std::uint64_t seed, const std::string& extra = "")
+void check_preset(glt::api a, const char* name, const char* define, std::uint64_t seed, const std::string& extra = "",
+                  language lang = language::glsl)
 {
     const auto c = open(a);
     if (!c) return;
-    const std::string defines = define ? std::string("#define ") + define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n" + extra
-                                       : phong::glsl::defines(F, max_lights);
-    const tally t = agree<F>(*c, defines, 3000, seed);
-    MESSAGE(glt::api_name(a) << ", " << std::string(name) << std::string(extra.empty() ? "" : ", fast mode") << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
+    const std::string defines = (define ? std::string("#define ") + define + "\n#define PHONG_MAX_LIGHTS " + std::to_string(max_lights) + "\n"
+                                        : phong::glsl::defines(F, max_lights)) + extra;
+    const tally t = agree<F>(*c, defines, 3000, seed, lang);
+    MESSAGE(std::string(lang == language::hlsl ? "HLSL twin, " : "") << glt::api_name(a) << ", " << std::string(name) << std::string(extra.find("PHONG_MODE_FAST") == std::string::npos ? "" : ", fast mode") << ": " << t.cases << " random + " << t.edge_cases << " edge cases, " << t.channels
                              << " channels (" << t.bounded << " with a bound, " << t.unbounded
                              << " without: a gate or a two-sided flip within rounding); worst relative error against the model: twin "
                              << t.worst_rel << " (random), " << t.worst_rel_edge << " (edge, capped at 1), phong::shade float "
@@ -779,6 +838,76 @@ TEST_CASE("the twin's fast mode (inversesqrt) agrees with the model: Phong and B
         check_preset<phong::presets::blinn_phong_per_light_ambient>(a, "blinn_phong_per_light_ambient",
                                                                     "PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT", seed + 2, fast);
     }
+}
+
+/// The tutorial-shaped feature set (docs/glsl.md's world-space recipe): per-light ambient,
+/// ungated Phong, lights of any kind, polynomial falloff, the linear cone edge, the eye a point.
+constexpr features linear_spot_tutorial{.scene_ambient = false, .light_ambient = true, .diffuse = true,
+                                        .specular = specular_model::phong, .specular_gate = false, .lights = phong::light_kind::any,
+                                        .attenuation = phong::attenuation_model::polynomial, .spot = phong::spot_model::linear,
+                                        .attenuate_ambient = true, .two_sided = phong::facing::none,
+                                        .view = phong::view_model::eye_point};
+
+TEST_CASE("the twin's linear cone edge agrees with the model, lights with and without a cone (330, 300 es)")
+{
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30})
+        check_preset<linear_spot_tutorial>(a, "linear spot, per-light ambient, ungated Phong, any lights, eye point", nullptr,
+                                           a == glt::api::gles30 ? 71 : 70);
+}
+
+TEST_CASE("PHONG_SPOT_LIGHTS: only the first lights' cones are read; the same colours as the model (330, 300 es)")
+{
+    // Lights from index 1 on have no cone in these scenes (their spot fields 0); the twin reads
+    // only light 0's cone. A second run puts a cone on every light but still reads only light 0's:
+    // it must differ from the model where a later light's cone matters (the define is a promise).
+    cone_lights = 1;
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30})
+        check_preset<linear_spot_tutorial>(a, "linear spot, PHONG_SPOT_LIGHTS 1", nullptr, a == glt::api::gles30 ? 73 : 72,
+                                           "#define PHONG_SPOT_LIGHTS 1\n");
+    cone_lights = max_lights;
+    const auto c = open(glt::api::gl33_core);
+    if (!c) return;
+    generator g(74);
+    std::vector<scene> scenes;
+    for (int i = 0; i < 256; ++i) scenes.push_back(random_scene<linear_spot_tutorial>(g));
+    const std::string defines = phong::glsl::defines(linear_spot_tutorial, max_lights);
+    const std::vector<float> all = run_twin(*c, defines, scenes), first = run_twin(*c, defines + "#define PHONG_SPOT_LIGHTS 1\n", scenes);
+    CHECK(all != first);
+}
+
+/// Every feature set the GLSL twin is tested with, through the HLSL twin (the same seeds: the same
+/// cases as the GLSL runs of the same API).
+void check_hlsl(glt::api a, std::uint64_t preset_seed, std::uint64_t extra_seed, std::uint64_t fast_seed, std::uint64_t linear_seed)
+{
+    const language h = language::hlsl;
+    check_preset<phong::presets::classic_phong>(a, "classic_phong", "PHONG_PRESET_CLASSIC_PHONG", preset_seed * 10 + 1, "", h);
+    check_preset<phong::presets::blinn_phong_per_light_ambient>(a, "blinn_phong_per_light_ambient",
+                                                                "PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT", preset_seed * 10 + 2, "", h);
+    check_preset<phong::presets::raytracer_phong>(a, "raytracer_phong", "PHONG_PRESET_RAYTRACER_PHONG", preset_seed * 10 + 3, "", h);
+    check_preset<phong::presets::glsl_ads>(a, "glsl_ads", "PHONG_PRESET_GLSL_ADS", preset_seed * 10 + 4, "", h);
+    check_preset<phong::presets::diffuse_only>(a, "diffuse_only", "PHONG_PRESET_DIFFUSE_ONLY", preset_seed * 10 + 5, "", h);
+    check_preset<spot_windowed_blinn>(a, "OpenGL spot, windowed, Blinn, fixed direction, two-sided flag", nullptr, extra_seed + 1, "", h);
+    check_preset<smooth_spot_phong>(a, "smooth spot, polynomial, ungated Phong, eye point, two-sided view", nullptr, extra_seed + 2, "", h);
+    check_preset<directional_spot_diffuse>(a, "directional, OpenGL spot, diffuse only", nullptr, extra_seed + 3, "", h);
+    check_preset<raytracer_unit_inputs>(a, "raytracer_phong with unit_inputs", nullptr, extra_seed + 4, "", h);
+    const std::string fast = "#define PHONG_MODE PHONG_MODE_FAST\n";
+    check_preset<phong::presets::glsl_ads>(a, "glsl_ads", "PHONG_PRESET_GLSL_ADS", fast_seed + 1, fast, h);
+    check_preset<phong::presets::blinn_phong_per_light_ambient>(a, "blinn_phong_per_light_ambient",
+                                                                "PHONG_PRESET_BLINN_PHONG_PER_LIGHT_AMBIENT", fast_seed + 2, fast, h);
+    check_preset<linear_spot_tutorial>(a, "linear spot, per-light ambient, ungated Phong, any lights, eye point", nullptr, linear_seed, "", h);
+    cone_lights = 1;
+    check_preset<linear_spot_tutorial>(a, "linear spot, PHONG_SPOT_LIGHTS 1", nullptr, linear_seed + 2, "#define PHONG_SPOT_LIGHTS 1\n", h);
+    cone_lights = max_lights;
+}
+
+TEST_CASE("the HLSL twin (glslang's HLSL front end, spirv-val, spirv-cross to GLSL 330) agrees with the model, every feature set")
+{
+    check_hlsl(glt::api::gl33_core, 1, 50, 30, 70);
+}
+
+TEST_CASE("the HLSL twin (glslang's HLSL front end, spirv-val, spirv-cross to GLSL 300 es) agrees with the model, every feature set")
+{
+    check_hlsl(glt::api::gles30, 2, 60, 40, 71);
 }
 
 TEST_CASE("seed 003's phong.vert, verbatim, against the twin's phong_shade_vertex and phong::shade_vertex (GLSL 410)")
@@ -963,6 +1092,143 @@ void main() { ec_position = q; ec_normal = n; gl_Position = vec4(0.0, 0.0, 0.0, 
     return failures;
 }
 } // namespace
+
+namespace {
+/// The defines of tests/glsl/recipe_world.frag: its comment lines "//   #define ...".
+std::string world_recipe_defines(const std::string& text)
+{
+    std::istringstream in(text);
+    std::string line, defines;
+    while (std::getline(in, line))
+        if (line.rfind("//   #define ", 0) == 0) defines += line.substr(5) + "\n";
+    return defines;
+}
+
+/// A 1x1 RGBA8 texture of colour c (each channel a multiple of 1/255) on texture unit `unit`.
+GLuint texel_texture(const glt::functions& gl, int unit, const unsigned char c[4])
+{
+    GLuint id = 0;
+    gl.glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    gl.glGenTextures(1, &id);
+    gl.glBindTexture(GL_TEXTURE_2D, id);
+    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, c);
+    gl.glActiveTexture(GL_TEXTURE0);
+    return id;
+}
+
+/// tests/glsl/recipe_world.frag as written, one pixel per scene (a directional light, two point
+/// lights and a spot with the linear edge; the first three with their spot uniforms never set), the
+/// maps 1x1 textures: the pixel against phong::shade<linear_spot_tutorial> with those lights'
+/// cones all zero (no cone) and the spot's. dark: pixels where the lights without a cone
+/// contribute more than 4 levels to phong::shade but the pixel is below it by that much.
+int world_recipe_failures(const glt::context& c, int scenes, double& worst, int& lit_by_coneless)
+{
+    const glt::functions& gl = c.gl();
+    const std::string version = glt::version_line(c.which());
+    const std::string vertex = version + R"(
+uniform vec3 q;
+uniform vec3 n;
+out vec3 world_position;
+out vec3 world_normal;
+out vec2 uv;
+void main() { world_position = q; world_normal = n; uv = vec2(0.5); gl_Position = vec4(0.0, 0.0, 0.0, 1.0); gl_PointSize = 1.0; }
+)";
+    const std::string body = glt::seed003_source(PHONG_RECIPE_WORLD_FRAG);
+    const std::string fragment = phong::glsl::shader(version, world_recipe_defines(body), phong::glsl::source(), body);
+    glt::feedback_program p(c, vertex, nullptr, fragment);
+    constexpr features F = linear_spot_tutorial;
+    generator g(4343);
+    int failures = 0;
+    for (int k = 0; k < scenes; ++k) {
+        unsigned char diffuse[4], specular[4];
+        for (int ch = 0; ch < 4; ++ch) diffuse[ch] = (unsigned char)(g.rng() % 256), specular[ch] = (unsigned char)(g.rng() % 256);
+        const GLuint t0 = texel_texture(gl, 0, diffuse), t1 = texel_texture(gl, 1, specular);
+        phong::material<float> m;
+        m.ka = m.kd = glm::vec3(diffuse[0], diffuse[1], diffuse[2]) / 255.0f;
+        m.ks = glm::vec3(specular[0], specular[1], specular[2]) / 255.0f;
+        m.shininess = g.uniform(1, 64);
+        const glm::vec3 q = g.box(2), n = g.direction();
+        const glm::vec4 eye(g.box(1) + glm::vec3(0, 0, 4), 1);
+        std::vector<phong::light<float>> lights(4);
+        const phong::spot_cone<float> none{glm::vec3(0), 0, 0, 0, 0}; // uniforms left at 0
+        for (int i = 0; i < 4; ++i) {
+            phong::light<float>& L = lights[std::size_t(i)];
+            L.position = i == 0 ? glm::vec4(g.direction(), 0) : glm::vec4(q + g.box(3), 1);
+            L.ambient = g.colour(0.1f), L.diffuse = g.colour(0.4f), L.specular = g.colour(0.4f);
+            L.attenuation = {1, 0.09f, 0.032f, std::numeric_limits<float>::infinity()};
+            L.spot = none;
+        }
+        // The spot: toward the point, its edges at 10-20 and 20-30 degrees.
+        const glm::vec3 axis = glm::normalize(glm::normalize(q - glm::vec3(lights[3].position)) + g.box(0.3f));
+        const float inner = g.uniform(10, 20);
+        lights[3].spot = phong::spot_cone<float>::smooth(axis, inner, inner + g.uniform(2, 10));
+        gl.glUseProgram(p.id());
+        const auto v3 = [&](const std::string& name, const glm::vec3& v) { gl.glUniform3fv(p.uniform(name.c_str()), 1, &v.x); };
+        const auto f1 = [&](const std::string& name, float v) { gl.glUniform1f(p.uniform(name.c_str()), v); };
+        v3("q", q), v3("n", n);
+        gl.glUniform1i(p.uniform("diffuse_map"), 0);
+        gl.glUniform1i(p.uniform("specular_map"), 1);
+        f1("shininess", m.shininess);
+        gl.glUniform4fv(p.uniform("environment.eye"), 1, &eye.x);
+        gl.glUniform1i(p.uniform("light_count"), 4);
+        for (int i = 0; i < 4; ++i) {
+            const std::string L = "lights[" + std::to_string(i) + "].";
+            const phong::light<float>& l = lights[std::size_t(i)];
+            gl.glUniform4fv(p.uniform((L + "position").c_str()), 1, &l.position.x);
+            v3(L + "ambient", l.ambient), v3(L + "diffuse", l.diffuse), v3(L + "specular", l.specular);
+            f1(L + "attenuation.constant", l.attenuation.constant), f1(L + "attenuation.linear", l.attenuation.linear);
+            f1(L + "attenuation.quadratic", l.attenuation.quadratic);
+            if (i == 3) { // only the spot's cone is set: the others' spot uniforms keep their default, 0
+                v3(L + "spot.direction", l.spot.direction);
+                f1(L + "spot.cos_inner", l.spot.cos_inner), f1(L + "spot.cos_outer", l.spot.cos_outer);
+            }
+        }
+        GLuint vao = 0;
+        gl.glGenVertexArrays(1, &vao);
+        gl.glBindVertexArray(vao);
+        gl.glViewport(0, 0, 1, 1);
+        gl.glClearColor(0, 0, 0, 0);
+        gl.glClear(GL_COLOR_BUFFER_BIT);
+        gl.glDrawArrays(GL_POINTS, 0, 1);
+        unsigned char pixel[4] = {0, 0, 0, 0};
+        gl.glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+        gl.glBindVertexArray(0);
+        gl.glDeleteVertexArrays(1, &vao);
+        gl.glDeleteTextures(1, &t0), gl.glDeleteTextures(1, &t1);
+        phong::environment<float> env;
+        env.ambient = glm::vec3(0);
+        env.eye = eye;
+        const glm::vec3 cpu = phong::shade<F>(q, n, m, std::span<const phong::light<float>>(lights), env);
+        const glm::vec3 spot_only = phong::shade<F>(q, n, m, std::span<const phong::light<float>>(lights).subspan(3), env);
+        for (int ch = 0; ch < 3; ++ch) {
+            const double expected = std::clamp(double(cpu[ch]), 0.0, 1.0), got = pixel[ch] / 255.0;
+            worst = std::max(worst, std::fabs(got - expected));
+            if (std::fabs(got - expected) > 0.5 / 255 + 1e-4) ++failures;
+            if (std::clamp(double(cpu[ch]), 0.0, 1.0) - std::clamp(double(spot_only[ch]), 0.0, 1.0) > 4 / 255.0) ++lit_by_coneless;
+        }
+    }
+    if (gl.glGetError() != GL_NO_ERROR) ++failures;
+    return failures;
+}
+} // namespace
+
+TEST_CASE("docs/glsl.md's world-space recipe: mixed lights, texture maps, spot uniforms left at 0 (no cone), against phong::shade (330 core, 300 es)")
+{
+    for (glt::api a : {glt::api::gl33_core, glt::api::gles30}) {
+        const auto c = open(a);
+        if (!c) return;
+        double worst = 0;
+        int lit = 0;
+        const int failures = world_recipe_failures(*c, 64, worst, lit);
+        MESSAGE(glt::api_name(a) << ": recipe_world.frag, 64 scenes, worst |pixel - phong::shade| " << worst * 255
+                                 << " / 255; channels where the lights without a cone add more than 4 levels: " << lit);
+        CHECK(failures == 0);
+        CHECK(lit > 64); // the cone-less lights (spot uniforms at 0) light the point, not only the spot
+    }
+}
 
 TEST_CASE("docs/glsl.md's recipe: the fragment shader as written, one pixel per scene, against phong::shade (330 core, 300 es)")
 {

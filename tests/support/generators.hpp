@@ -199,7 +199,7 @@ bool well_conditioned(const phong::features& F, const scene<T>& s, double margin
         if (wlength(lv) < margin) return false;
         const wide c = -wdot(l, widen(L.spot.direction));
         if (F.spot == spot_model::opengl && wabs(c - wide(L.spot.cos_cutoff)) < margin) return false;
-        if (F.spot == spot_model::smooth &&
+        if ((F.spot == spot_model::smooth || F.spot == spot_model::linear) &&
             (wabs(c - wide(L.spot.cos_inner)) < margin || wabs(c - wide(L.spot.cos_outer)) < margin)) return false;
         if (F.attenuation == attenuation_model::windowed && w > 0 &&
             wabs(wlength(d) / w - wide(L.attenuation.range)) < margin * wide(L.attenuation.range)) return false;

@@ -74,7 +74,8 @@ wcolor reference_shade(const phong::features& F, const glm::vec<3, T>& position,
                 f = window * window / wmax(dist * dist, floor);
             }
         }
-        if (F.spot != spot_model::none) {
+        const bool has_cone = !(L.spot.direction.x == 0 && L.spot.direction.y == 0 && L.spot.direction.z == 0); // zero axis: no cone
+        if (F.spot != spot_model::none && has_cone) {
             const wvec3 s = wnormalize(widen(L.spot.direction)); // the model reads the axis's direction
             const wide c = -wdot(l, s);
             if (F.spot == spot_model::opengl) {
@@ -84,7 +85,8 @@ wcolor reference_shade(const phong::features& F, const glm::vec<3, T>& position,
             } else {
                 const wide inner = wide(L.spot.cos_inner), outer = wide(L.spot.cos_outer);
                 wide t;
-                if (inner > outer) t = wclamp((c - outer) / (inner - outer), 0, 1), t = t * t * (3 - 2 * t);
+                if (inner > outer && F.spot == spot_model::linear) t = wclamp((c - outer) / (inner - outer), 0, 1);
+                else if (inner > outer) t = wclamp((c - outer) / (inner - outer), 0, 1), t = t * t * (3 - 2 * t);
                 else t = c >= outer ? 1 : 0;
                 f *= t;
             }

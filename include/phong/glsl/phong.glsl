@@ -26,15 +26,30 @@
 //   PHONG_SPECULAR_GATE                                          features::specular_gate
 //   PHONG_LIGHTS = PHONG_LIGHTS_ANY | _POSITIONAL | _DIRECTIONAL  features::lights
 //   PHONG_ATTENUATION = PHONG_ATTENUATION_NONE | _POLYNOMIAL | _WINDOWED   features::attenuation
-//   PHONG_SPOT = PHONG_SPOT_NONE | _OPENGL | _SMOOTH             features::spot
+//   PHONG_SPOT = PHONG_SPOT_NONE | _OPENGL | _SMOOTH | _LINEAR   features::spot (a light whose
+//                                                                spot.direction is 0 has no cone)
 //   PHONG_ATTENUATE_AMBIENT                                      features::attenuate_ambient
 //   PHONG_TWO_SIDED = PHONG_FACING_NONE | _VIEW | _FLAG          features::two_sided
 //   PHONG_VIEW = PHONG_VIEW_EYE_AT_ORIGIN | _FIXED_DIRECTION | _EYE_POINT | _GIVEN   features::view
 //   PHONG_EMISSION, PHONG_ALPHA, PHONG_UNIT_INPUTS               features::emission, alpha, unit_inputs
 //   PHONG_MODE = PHONG_MODE_EXACT | PHONG_MODE_FAST              features::mode (no stable mode in GLSL)
 //   PHONG_MAX_LIGHTS (default 8): the size of the light arrays phong_shade takes.
+//   PHONG_SPOT_LIGHTS (default PHONG_MAX_LIGHTS): with PHONG_SPOT, only lights[0 ..
+//   PHONG_SPOT_LIGHTS - 1] may have a cone; the others have none and their spot fields are not
+//   read (put the spot lights first). Within them a zero spot.direction is no cone too.
 // Defaults (no preset): the C++ `features{}`: scene ambient, diffuse, gated Phong specular,
 // lights of any kind, eye at the origin, exact mode.
+
+// The language: this file is GLSL, and the HLSL twin (include/phong/hlsl/phong.hlsl) is this file
+// read through a few macros (vec3 -> float3, inversesqrt -> rsqrt, ...) that it defines, with
+// PHONG_HLSL, before including it. The few constructs the two languages spell differently go
+// through these names.
+#ifndef PHONG_HLSL
+#  define phong_const const                         // a global constant (HLSL: static const)
+#  define phong_mul(M, v) ((M) * (v))               // matrix times column vector (HLSL: mul(M, v))
+#  define phong_element(M, row, column) M[column][row] // GLSL indexes columns first (HLSL: M[row][column])
+#  define PHONG_FALLOFF_LINEAR linear               // phong_falloff's field (HLSL reserves `linear`: linear_)
+#endif
 
 #define PHONG_SPECULAR_NONE 0
 #define PHONG_SPECULAR_PHONG 1
@@ -48,6 +63,7 @@
 #define PHONG_SPOT_NONE 0
 #define PHONG_SPOT_OPENGL 1
 #define PHONG_SPOT_SMOOTH 2
+#define PHONG_SPOT_LINEAR 3
 #define PHONG_FACING_NONE 0
 #define PHONG_FACING_VIEW 1
 #define PHONG_FACING_FLAG 2
@@ -178,11 +194,17 @@
 #ifndef PHONG_MAX_LIGHTS
 #  define PHONG_MAX_LIGHTS 8
 #endif
+#ifndef PHONG_SPOT_LIGHTS
+#  define PHONG_SPOT_LIGHTS PHONG_MAX_LIGHTS
+#endif
 #if PHONG_MODE != PHONG_MODE_EXACT && PHONG_MODE != PHONG_MODE_FAST
 #  error "phong.glsl: PHONG_MODE must be PHONG_MODE_EXACT or PHONG_MODE_FAST (the stable mode needs double or twofold arithmetic: C++ only)"
 #endif
 #if PHONG_MAX_LIGHTS < 1
 #  error "phong.glsl: PHONG_MAX_LIGHTS must be at least 1"
+#endif
+#if PHONG_SPOT_LIGHTS < 0 || PHONG_SPOT_LIGHTS > PHONG_MAX_LIGHTS
+#  error "phong.glsl: PHONG_SPOT_LIGHTS must be in [0, PHONG_MAX_LIGHTS]"
 #endif
 
 // The specular gate matters only with a specular term (features.hpp's detail::gated).
@@ -205,13 +227,14 @@ precision highp int;
 /// not have inf).
 struct phong_falloff {
     float constant;
-    float linear;
+    float PHONG_FALLOFF_LINEAR; // `linear`: the macro spells it for HLSL, where linear is reserved
     float quadratic;
     float range;
 };
 
-/// phong::spot_cone: the unit axis s from the light outward, OpenGL's exponent e >= 0 and cos
-/// cutoff (in [0, 1], or -1: no spot), the smooth model's cos_inner >= cos_outer (-1 and -1: no spot).
+/// phong::spot_cone: the unit axis s from the light outward (zero: no cone, whatever the other
+/// fields hold: the default of a uniform), OpenGL's exponent e >= 0 and cos cutoff (in [0, 1], or
+/// -1: no spot), the smooth and linear models' cos_inner >= cos_outer (-1 and -1: no spot).
 struct phong_spot_cone {
     vec3 direction;
     float exponent;
@@ -262,15 +285,15 @@ struct phong_shading_terms {
 
 /// The smallest normal float, 2^-126 (exact_min_square<float>): a squared length below it is
 /// not used (its vector is taken as 0), as in the C++ exact mode.
-const float phong_min_square = 1.17549435e-38;
+phong_const float phong_min_square = 1.17549435e-38;
 /// The largest float (largest<float>): a squared length above it overflowed.
-const float phong_largest = 3.40282347e38;
+phong_const float phong_largest = 3.40282347e38;
 /// attenuation_denominator_min<float> = 2^-63: the floor under an attenuation's denominator.
-const float phong_attenuation_denominator_min = 1.08420217e-19;
+phong_const float phong_attenuation_denominator_min = 1.08420217e-19;
 /// Blinn: |l + v|^2 below 2^-48 = u^2 is taken as l = -v (no halfway vector). A GLSL compiler
 /// may fuse l = d / |d| with the sum (no `precise` in GLSL 3.30 / ES 3.00), after which l = -v
 /// leaves |l + v| of a few rounding errors, not 0; the C++ SIMD lanes use the same threshold.
-const float phong_halfway_min_square = 3.55271368e-15;
+phong_const float phong_halfway_min_square = 3.55271368e-15;
 
 /// 1/sqrt(x) as the mode takes it: the exact mode divides by sqrt (the C++ rsqrt, two
 /// roundings); the fast mode takes GLSL's inversesqrt (the hardware's estimate; C++: fast::rsqrt).
@@ -300,15 +323,16 @@ vec3 phong_normalize(vec3 v)
     int e = int(floatBitsToUint(m) >> 23);
     float scale = uintBitsToFloat(uint(max(254 - e, 1)) << 23);
     vec3 s = v * scale;
-    return (m > 0.0 && m <= phong_largest) ? s * phong_rsqrt(dot(s, s)) : vec3(0.0);
+    return (m > 0.0 && m <= phong_largest) ? s * phong_rsqrt(dot(s, s)) : vec3(0.0, 0.0, 0.0);
 }
 
 /// phong::pow_unit: x^m for a base x in [0, 1] and m >= 0, with pow(0, 0) = 1 and 0^m = 0 for
 /// m > 0 (GLSL's pow is undefined at x = 0, m <= 0). Accuracy: the driver's pow.
 float phong_pow_unit(float x, float m)
 {
-    if (m == 0.0) return 1.0;
-    return x > 0.0 ? pow(min(x, 1.0), m) : 0.0;
+    // Selects, not branches: pow's value where x = 0 (undefined in GLSL) is never used.
+    float p = pow(min(x, 1.0), m);
+    return m == 0.0 ? 1.0 : (x > 0.0 ? p : 0.0);
 }
 
 /// phong::toward: the unit vector from the point q toward the homogeneous point P,
@@ -373,12 +397,22 @@ float phong_spot_smooth(vec3 l, vec3 s, float cos_inner, float cos_outer)
     return t * t * (3.0 - 2.0 * t);
 }
 
+/// phong::spot_linear: clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1), c = dot(-l, s): the
+/// straight edge between the cones (LearnOpenGL's flashlight). Pre: cos_outer <= cos_inner.
+/// Edge: cos_inner = cos_outer gives a hard edge (1 where c >= cos_outer), no division by 0.
+float phong_spot_linear(vec3 l, vec3 s, float cos_inner, float cos_outer)
+{
+    float c = -dot(l, s);
+    float width = cos_inner - cos_outer;
+    if (!(width > 0.0)) return c >= cos_outer ? 1.0 : 0.0;
+    return clamp((c - cos_outer) / width, 0.0, 1.0);
+}
+
 /// detail::cosine_power: the specular power of c = x * scale, min(max(c, 0), 1)^m with
 /// pow(0, 0) = 1 (x: the cosine times a positive length, so of c's sign).
 float phong_cosine_power(float x, float scale, float m)
 {
-    if (x > 0.0) return phong_pow_unit(min(x * scale, 1.0), m);
-    return m == 0.0 ? 1.0 : 0.0;
+    return phong_pow_unit(x > 0.0 ? min(x * scale, 1.0) : 0.0, m);
 }
 
 /// phong::specular_reflection (Phong, seeds 000 and 003):
@@ -436,7 +470,7 @@ vec3 phong_view_perspective(vec3 q)
 /// projection matrix (M02: row 0, column 2, GLSL's M[2][0]). Pre: M00 != 0, M11 != 0.
 vec3 phong_view_orthographic(mat4 ec_lds)
 {
-    return phong_normalize(vec3(-ec_lds[2][0] / ec_lds[0][0], -ec_lds[2][1] / ec_lds[1][1], 1.0));
+    return phong_normalize(vec3(-phong_element(ec_lds, 0, 2) / phong_element(ec_lds, 0, 0), -phong_element(ec_lds, 1, 2) / phong_element(ec_lds, 1, 1), 1.0));
 }
 
 /// phong::view_vector: v = normalize(E.xyz - E.w q) for the homogeneous eye E (w = 1 a point, w =
@@ -450,7 +484,7 @@ vec3 phong_view_vector(vec4 eye, vec3 q)
 /// inverse transpose of the model-view's upper 3x3: seed 003's tnorm). Edge: a zero result stays 0.
 vec3 phong_transform_normal(mat3 N, vec3 n)
 {
-    return phong_normalize(N * n);
+    return phong_normalize(phong_mul(N, n));
 }
 
 // ---- The model at a point (C++: detail/exact.hpp's prepare, add_light; shade.hpp's terms_of) ---
@@ -480,7 +514,7 @@ phong_frame phong_prepare_unit(vec3 q, vec3 n, bool n_ok, vec3 given_view, phong
 {
     phong_frame s;
     s.position = q;
-    vec3 v = vec3(0.0);
+    vec3 v = vec3(0.0, 0.0, 0.0);
     bool v_ok = true;
 #if PHONG_VIEW == PHONG_VIEW_FIXED_DIRECTION
     v = phong_normalize(env.eye.xyz);
@@ -534,13 +568,14 @@ phong_frame phong_prepare(vec3 q, vec3 normal, vec3 given_view, phong_environmen
 
 /// detail::light_factor: f_i = attenuation(distance) * spot(l) for one light; distance = |L.xyz
 /// - Q| (positional lights only: a directional light is not attenuated), l the unit light vector
-/// (0 if none). Pre: the light's parameters in phong::validate(light)'s domain.
-float phong_light_factor(phong_light L, float distance, float w, vec3 l)
+/// (0 if none); cone: whether the light may have a cone (false: its spot fields are not read, as
+/// for a zero axis). Pre: the light's parameters in phong::validate(light)'s domain.
+float phong_light_factor(phong_light L, float distance, float w, vec3 l, bool cone)
 {
     float f = 1.0;
 #if PHONG_ATTENUATION != PHONG_ATTENUATION_NONE && PHONG_LIGHTS != PHONG_LIGHTS_DIRECTIONAL
 #  if PHONG_ATTENUATION == PHONG_ATTENUATION_POLYNOMIAL
-    float fa = phong_attenuation_polynomial(distance, L.attenuation.constant, L.attenuation.linear, L.attenuation.quadratic);
+    float fa = phong_attenuation_polynomial(distance, L.attenuation.constant, L.attenuation.PHONG_FALLOFF_LINEAR, L.attenuation.quadratic);
 #  else
     float fa = phong_attenuation_windowed(distance, L.attenuation.range);
 #  endif
@@ -551,24 +586,33 @@ float phong_light_factor(phong_light L, float distance, float w, vec3 l)
 #  endif
 #endif
 #if PHONG_SPOT != PHONG_SPOT_NONE
-    // The model reads the axis's direction (validate accepts it within 1e-3 of unit length).
-    vec3 s = L.spot.direction * phong_rsqrt(dot(L.spot.direction, L.spot.direction));
+    // A zero axis is no cone (a light whose spot uniforms are left at 0 is lit). For lights in
+    // uniforms the condition is the same on every pixel (a uniform branch).
+    float axis2 = cone ? dot(L.spot.direction, L.spot.direction) : 0.0;
+    if (axis2 > 0.0) {
+        // The model reads the axis's direction (validate accepts it within 1e-3 of unit length).
+        vec3 s = L.spot.direction * phong_rsqrt(axis2);
 #  if PHONG_SPOT == PHONG_SPOT_OPENGL
-    f *= phong_spot_opengl(l, s, L.spot.exponent, L.spot.cos_cutoff);
+        f *= phong_spot_opengl(l, s, L.spot.exponent, L.spot.cos_cutoff);
+#  elif PHONG_SPOT == PHONG_SPOT_SMOOTH
+        f *= phong_spot_smooth(l, s, L.spot.cos_inner, L.spot.cos_outer);
 #  else
-    f *= phong_spot_smooth(l, s, L.spot.cos_inner, L.spot.cos_outer);
+        f *= phong_spot_linear(l, s, L.spot.cos_inner, L.spot.cos_outer);
 #  endif
+    }
 #endif
     return f;
 }
 
-/// detail::exact::add_light: one light's terms added to the sums (m: the shininess).
-///   d = L.xyz - w Q,  l = d / |d|,  f = phong_light_factor,  ambient += La f,
-///   lit: the normal exists, |d|^2 a normal float, and (gated) n.l > 0;
-///   diffuse += Ld f max(n.l, 0),  specular += Ls f s  (Phong: max(r.v, 0)^m with r.v = (2 (n.d)(n.v)
-///   - d.v) / |d|; Blinn: max(n.h, 0)^m with n.h = (n.l + n.v) / |l + v|).
-/// Edge: a light at Q (or a directional light with xyz = 0) adds its ambient term only.
-void phong_add_light(inout phong_sums sums, phong_frame s, phong_light L, float m)
+/// detail::exact::add_light's scalars for one light: the factors its ambient, diffuse and
+/// specular colours are scaled by (m: the shininess),
+///   d = L.xyz - w Q,  l = d / |d|,  f = phong_light_factor,
+///   x = f (or 1 without PHONG_ATTENUATE_AMBIENT),  y = f max(n.l, 0),  z = f s,
+/// y and z for a lit pair only (the normal exists, |d|^2 a normal float, and, gated, n.l > 0),
+/// 0 otherwise; s: Phong max(r.v, 0)^m with r.v = (2 (n.d)(n.v) - d.v) / |d|, Blinn max(n.h, 0)^m
+/// with n.h = (n.l + n.v) / |l + v|. Edge: a light at Q (or a directional light with xyz = 0)
+/// gives (x, 0, 0). cone: as for phong_light_factor (false: the light has no cone).
+vec3 phong_light_weights(phong_frame s, phong_light L, float m, bool cone)
 {
 #if PHONG_LIGHTS == PHONG_LIGHTS_POSITIONAL
     float w = 1.0;
@@ -582,7 +626,7 @@ void phong_add_light(inout phong_sums sums, phong_frame s, phong_light L, float 
 #endif
     float dd = dot(d, d);
     float nd = dot(s.normal, d);
-    vec3 l = vec3(0.0);
+    vec3 l = vec3(0.0, 0.0, 0.0);
     float inv = 0.0;
 #if PHONG_SPOT != PHONG_SPOT_NONE
     inv = phong_exact_inverse_length(dd);
@@ -592,19 +636,22 @@ void phong_add_light(inout phong_sums sums, phong_frame s, phong_light L, float 
 #if PHONG_ATTENUATION != PHONG_ATTENUATION_NONE && PHONG_LIGHTS != PHONG_LIGHTS_DIRECTIONAL
     distance = sqrt(dd);
 #endif
-    float f = phong_light_factor(L, distance, w, l);
+    float f = phong_light_factor(L, distance, w, l, cone);
+    vec3 weights = vec3(0.0, 0.0, 0.0);
 #if PHONG_LIGHT_AMBIENT
 #  if PHONG_ATTENUATE_AMBIENT
-    sums.ambient += L.ambient * f;
+    weights.x = f;
 #  else
-    sums.ambient += L.ambient;
+    weights.x = 1.0;
 #  endif
 #endif
     bool on = s.defined && dd >= phong_min_square && dd <= phong_largest;
 #if PHONG_GATED
     on = on && nd > 0.0;
 #endif
-    if (!on) return;
+    // The pair's terms are selected by `on`, not branched over: shader compilers for SIMD lanes
+    // (llvmpipe's) run both sides of a branch whose lanes disagree, and pay for the masks. An unlit
+    // lane's values (|d| = 0: inf or NaN) are never selected.
 #if PHONG_SPECULAR == PHONG_SPECULAR_NONE && PHONG_SPOT == PHONG_SPOT_NONE
     float nl = nd / sqrt(dd);
 #else
@@ -615,21 +662,45 @@ void phong_add_light(inout phong_sums sums, phong_frame s, phong_light L, float 
 #endif
 #if PHONG_DIFFUSE
 #  if PHONG_GATED
-    sums.diffuse += L.diffuse * (f * nl);
+    weights.y = on ? f * nl : 0.0;
 #  else
-    sums.diffuse += L.diffuse * (f * max(nl, 0.0));
+    weights.y = on ? f * max(nl, 0.0) : 0.0;
 #  endif
 #endif
 #if PHONG_SPECULAR == PHONG_SPECULAR_PHONG
-    if (s.sees_viewer)
-        sums.specular += L.specular * (f * phong_cosine_power(2.0 * nd * s.nv - dot(d, s.view), inv, m));
+    float power = phong_cosine_power(2.0 * nd * s.nv - dot(d, s.view), inv, m);
 #elif PHONG_SPECULAR == PHONG_SPECULAR_BLINN
 #  if PHONG_SPOT == PHONG_SPOT_NONE
     l = d * inv;
 #  endif
-    if (s.sees_viewer)
-        sums.specular += L.specular * (f * phong_cosine_power(nl + s.nv, phong_inverse_halfway_length(l, s.view), m));
+    float power = phong_cosine_power(nl + s.nv, phong_inverse_halfway_length(l, s.view), m);
 #endif
+#if PHONG_SPECULAR != PHONG_SPECULAR_NONE
+    weights.z = on && s.sees_viewer ? f * power : 0.0;
+#endif
+    return weights;
+}
+
+/// The light's colours scaled by its weights (phong_light_weights) added to the sums.
+void phong_add_light_weighted(inout phong_sums sums, phong_light L, vec3 weights)
+{
+#if PHONG_LIGHT_AMBIENT
+    sums.ambient += L.ambient * weights.x;
+#endif
+#if PHONG_DIFFUSE
+    sums.diffuse += L.diffuse * weights.y;
+#endif
+#if PHONG_SPECULAR != PHONG_SPECULAR_NONE
+    sums.specular += L.specular * weights.z;
+#endif
+}
+
+/// detail::exact::add_light: one light's terms added to the sums (m: the shininess):
+///   ambient += La x,  diffuse += Ld y,  specular += Ls z  with (x, y, z) = phong_light_weights
+/// (the light's cone read with PHONG_SPOT; a zero spot axis is no cone).
+void phong_add_light(inout phong_sums sums, phong_frame s, phong_light L, float m)
+{
+    phong_add_light_weighted(sums, L, phong_light_weights(s, L, m, true));
 }
 
 /// shade.hpp's terms_of: the model's terms from the per-light sums:
@@ -637,10 +708,10 @@ void phong_add_light(inout phong_sums sums, phong_frame s, phong_light L, float 
 phong_shading_terms phong_terms_of(phong_sums sums, phong_material mat, phong_environment env)
 {
     phong_shading_terms t;
-    t.emission = vec3(0.0);
-    t.ambient = vec3(0.0);
-    t.diffuse = vec3(0.0);
-    t.specular = vec3(0.0);
+    t.emission = vec3(0.0, 0.0, 0.0);
+    t.ambient = vec3(0.0, 0.0, 0.0);
+    t.diffuse = vec3(0.0, 0.0, 0.0);
+    t.specular = vec3(0.0, 0.0, 0.0);
     t.alpha = mat.alpha;
 #if PHONG_EMISSION
     t.emission = mat.emission;
@@ -694,13 +765,36 @@ phong_shading_terms phong_terms_at(phong_frame s, phong_material mat, phong_ligh
                                    phong_environment env)
 {
     phong_sums sums;
-    sums.ambient = vec3(0.0);
-    sums.diffuse = vec3(0.0);
-    sums.specular = vec3(0.0);
-    for (int i = 0; i < PHONG_MAX_LIGHTS; ++i) {
-        if (i >= count) break;
-        phong_add_light(sums, s, lights[i], mat.shininess);
+    sums.ambient = vec3(0.0, 0.0, 0.0);
+    sums.diffuse = vec3(0.0, 0.0, 0.0);
+    sums.specular = vec3(0.0, 0.0, 0.0);
+    // Two loops: the first PHONG_SPOT_LIGHTS lights, whose cones are read, then the others, which
+    // have none (their spot fields are not read).
+#if PHONG_MAX_LIGHTS == 1
+    // One light: no loop, its fields read at a constant index.
+    if (count > 0)
+        phong_add_light_weighted(sums, lights[0], phong_light_weights(s, lights[0], mat.shininess, PHONG_SPOT_LIGHTS > 0));
+#else
+    int n = min(count, PHONG_MAX_LIGHTS);
+    int i = 0;
+#if PHONG_SPOT != PHONG_SPOT_NONE
+    int k = min(n, PHONG_SPOT_LIGHTS);
+    if (k > 0) {
+        do {
+            phong_add_light_weighted(sums, lights[i], phong_light_weights(s, lights[i], mat.shininess, true));
+            ++i;
+        } while (i < k);
     }
+#endif
+#if PHONG_SPOT == PHONG_SPOT_NONE || PHONG_SPOT_LIGHTS < PHONG_MAX_LIGHTS
+    if (n > i) {
+        do {
+            phong_add_light_weighted(sums, lights[i], phong_light_weights(s, lights[i], mat.shininess, false));
+            ++i;
+        } while (i < n);
+    }
+#endif
+#endif // PHONG_MAX_LIGHTS == 1
     return phong_terms_of(sums, mat, env);
 }
 
@@ -738,6 +832,6 @@ phong_color phong_shade(vec3 q, vec3 n, vec3 v, phong_material mat, phong_light 
 phong_color phong_shade_vertex(vec3 p, vec3 n, mat4 model_view, mat3 normal_matrix, phong_material mat,
                                phong_light lights[PHONG_MAX_LIGHTS], int count, phong_environment env)
 {
-    vec4 eye = model_view * vec4(p, 1.0);
-    return phong_shade(eye.xyz, normal_matrix * n, vec3(0.0), mat, lights, count, env, true);
+    vec4 eye = phong_mul(model_view, vec4(p, 1.0));
+    return phong_shade(eye.xyz, phong_mul(normal_matrix, n), vec3(0.0, 0.0, 0.0), mat, lights, count, env, true);
 }

@@ -27,8 +27,10 @@ enum class light_kind : unsigned char { any, positional, directional };
 enum class attenuation_model : unsigned char { none, polynomial, windowed };
 
 /// Spot cone. `opengl`: max(-l.s, 0)^e inside the cutoff, 0 outside (cutoff 180 = no spot).
-/// `smooth`: smoothstep from the outer to the inner cone (Filament, three.js).
-enum class spot_model : unsigned char { none, opengl, smooth };
+/// `smooth`: smoothstep from the outer to the inner cone (Filament, three.js). `linear`: a
+/// straight ramp in the cosine from the outer to the inner cone (LearnOpenGL, Unity, Godot).
+/// With any of them, a light whose spot axis is zero has no cone (spot = 1).
+enum class spot_model : unsigned char { none, opengl, smooth, linear };
 
 /// Two-sided lighting: how the normal is conditionally negated. `none`: used as given. `view`:
 /// negated when it faces away from the viewer, n.v < 0 (seed 000's "conditionally negated").
@@ -67,7 +69,7 @@ enum class view_model : unsigned char {
 /// m beyond ~1/eps^2 (2.8e14 float, 8e31 double) a highlight's factor is as uncertain as the
 /// inputs' last bits (exactly parallel vectors may give 0 instead of 1).
 /// `fast`: the exact mode's formulas and guards (the same NaN and degenerate-input policy) with the
-/// specular power and the light vector's 1/|d| taken by the approximations of phong/fast_math.hpp
+/// specular power and the light vector's 1/|d| taken by the approximations of phong/core/fast_math.hpp
 /// (fast::pow_unit, fast::rsqrt): for colours that end in 8-bit or half-float pixels.
 enum class evaluation : unsigned char { exact, stable, fast };
 

@@ -160,9 +160,9 @@ PHONG_INLINE constexpr light<light_scalar_t<L>, light_qualifier_v<L>> to_light(c
 /// inf or negative strengths; attenuation coefficients that are negative, non-finite or all
 /// zero; range <= 0 or NaN; a spot exponent that is negative or non-finite; a cutoff cosine
 /// outside [0, 1] other than -1 (180 degrees); smooth cone cosines outside [-1, 1] or with
-/// cos_outer > cos_inner; a spot axis that is not unit length (within 1e-3).
+/// cos_outer > cos_inner; a spot axis that is neither unit length (within 1e-3) nor zero.
 /// Accepted although degenerate (shade gives a defined result): a directional light with
-/// xyz = 0 (no direction: contributes its ambient only).
+/// xyz = 0 (no direction: contributes its ambient only); a zero spot axis (no cone).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr validation validate(const light<T, Q>& L)
 {
@@ -189,7 +189,8 @@ PHONG_INLINE constexpr validation validate(const light<T, Q>& L)
     if (!(finite(s.cos_outer) && s.cos_outer >= T(-1) && s.cos_outer <= T(1))) return {"light.spot.cos_outer: must be in [-1, 1] (outer angle in [0, 180] degrees)"};
     if (s.cos_outer > s.cos_inner) return {"light.spot.cos_outer: must be <= cos_inner (outer cone narrower than inner)"};
     const T axis2 = s.direction.x * s.direction.x + s.direction.y * s.direction.y + s.direction.z * s.direction.z;
-    if (!(finite(axis2) && axis2 > T(0.998) && axis2 < T(1.002))) return {"light.spot.direction: must be unit length"};
+    if (!(finite(axis2) && ((axis2 > T(0.998) && axis2 < T(1.002)) || axis2 == T(0))))
+        return {"light.spot.direction: must be unit length (or zero: no cone)"};
     return {};
 }
 

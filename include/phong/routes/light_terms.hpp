@@ -123,10 +123,16 @@ PHONG_INLINE constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_u
         // would otherwise carry that rounding into the wider route's once-rounded colour).
         decltype(auto) cone = spot_of(L);
         glm::vec<3, T, Q> s(cone.direction);
+        // A zero axis is no cone (spot_cone's convention: spot fields left at zero, as shader
+        // uniforms are, light the point). The cone below then reads s = 0 (finite, selected away).
+        const mask_t<T> has_cone = phong::dot(s, s) > T(0);
         if constexpr (std::is_same_v<U, T>) s = phong::normalize_unscaled(s); // |s| within 1e-3 of 1: in range
         else s = phong::normalize(s);
-        if constexpr (F.spot == spot_model::opengl) f = f * phong::spot_opengl(l, s, T(cone.exponent), T(cone.cos_cutoff));
-        else f = f * phong::spot_smooth(l, s, T(cone.cos_inner), T(cone.cos_outer));
+        T spot;
+        if constexpr (F.spot == spot_model::opengl) spot = phong::spot_opengl(l, s, T(cone.exponent), T(cone.cos_cutoff));
+        else if constexpr (F.spot == spot_model::smooth) spot = phong::spot_smooth(l, s, T(cone.cos_inner), T(cone.cos_outer));
+        else spot = phong::spot_linear(l, s, T(cone.cos_inner), T(cone.cos_outer));
+        f = f * phong::select(has_cone, spot, T(1));
     }
     if constexpr (!std::is_same_v<W, unweighted>) f = f * T(visibility);
     return f;

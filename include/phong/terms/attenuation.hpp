@@ -59,20 +59,23 @@ PHONG_INLINE constexpr T attenuation_windowed(T d, T range)
     return window * window / phong::max(d * d, T(attenuation_denominator_min<Floor>));
 }
 
-/// A spot cone: the axis the light points along and its two parametrizations, OpenGL's
-/// (exponent and cutoff) and the smooth inner/outer cone. The default is no spot.
+/// A spot cone: the axis the light points along and its parametrizations, OpenGL's (exponent and
+/// cutoff) and the inner/outer cone (read by the smooth and the linear edge). The default is no
+/// spot. A zero axis is no cone either (every spot model gives 1): a light whose spot fields are
+/// all left at zero, as GLSL and HLSL uniforms are, is lit, not dark.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct spot_cone {
-    glm::vec<3, T, Q> direction{T(0), T(0), T(-1)}; ///< unit axis s, from the light outward
+    glm::vec<3, T, Q> direction{T(0), T(0), T(-1)}; ///< unit axis s, from the light outward; zero: no cone
     T exponent = T(0);     ///< OpenGL spot exponent e >= 0
     T cos_cutoff = T(-1);  ///< cos of OpenGL's cutoff angle: in [0, 1] (0..90 degrees), or -1 (180: no spot)
-    T cos_inner = T(-1);   ///< smooth model: full strength where cos(angle) >= cos_inner
-    T cos_outer = T(-1);   ///< smooth model: zero where cos(angle) <= cos_outer; cos_outer <= cos_inner
+    T cos_inner = T(-1);   ///< smooth and linear models: full strength where cos(angle) >= cos_inner
+    T cos_outer = T(-1);   ///< smooth and linear models: zero where cos(angle) <= cos_outer; cos_outer <= cos_inner
 
     /// OpenGL spot: axis (normalized here), exponent, cutoff in degrees (0..90, or 180 = no spot).
-    /// Edge: a zero axis or a cutoff outside that range (negative, above 90 other than 180, NaN)
-    /// makes a cone validate(light) rejects, naming light.spot.direction or light.spot.cos_cutoff
-    /// (the cosine alone cannot tell -10 from 10 degrees, so such a cutoff stores cos_cutoff = 2).
+    /// Edge: a zero axis stores direction 0, no cone (spot = 1). A cutoff outside that range
+    /// (negative, above 90 other than 180, NaN) makes a cone validate(light) rejects, naming
+    /// light.spot.cos_cutoff (the cosine alone cannot tell -10 from 10 degrees, so such a cutoff
+    /// stores cos_cutoff = 2).
     PHONG_INLINE static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
     {
         spot_cone s;
@@ -82,11 +85,12 @@ struct spot_cone {
         s.cos_cutoff = in_range ? phong::cos_degrees(cutoff_degrees) : T(2);
         return s;
     }
-    /// Smooth spot: full strength inside inner_degrees, none outside outer_degrees
-    /// (0 <= inner <= outer <= 180). Edge: a zero axis, an angle outside [0, 180] (or NaN) or
-    /// inner > outer makes a cone validate(light) rejects (light.spot.direction; light.spot.cos_inner
-    /// or light.spot.cos_outer, stored as 2 for an angle out of range; light.spot.cos_outer for
-    /// inner > outer); inner = outer: a hard edge.
+    /// Smooth or linear spot (the same fields; features::spot picks the edge): full strength
+    /// inside inner_degrees, none outside outer_degrees
+    /// (0 <= inner <= outer <= 180). Edge: a zero axis stores direction 0, no cone (spot = 1);
+    /// an angle outside [0, 180] (or NaN) or inner > outer makes a cone validate(light) rejects
+    /// (light.spot.cos_inner or light.spot.cos_outer, stored as 2 for an angle out of range;
+    /// light.spot.cos_outer for inner > outer); inner = outer: a hard edge.
     PHONG_INLINE static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
     {
         spot_cone s;
@@ -126,6 +130,25 @@ PHONG_INLINE constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<
     const T hard = phong::select(c >= cos_outer, T(1), T(0));
     const T t = phong::clamp((c - cos_outer) / phong::select(width > T(0), width, T(1)), T(0), T(1));
     return phong::select(width > T(0), t * t * (T(3) - T(2) * t), hard);
+}
+
+/// Linear spot factor, the edge most tutorials and engines write (LearnOpenGL's flashlight,
+/// Unity's and Godot's spot lights): a straight ramp in the cosine between the two cones,
+///   spot = clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1),  c = dot(-l, s)
+///   (TeX: \mathrm{clamp}\big(\frac{c - \cos\theta_o}{\cos\theta_i - \cos\theta_o}, 0, 1\big)).
+/// Pre: l, s unit; -1 <= cos_outer <= cos_inner <= 1. Edge: cos_inner == cos_outer gives a hard
+/// edge (1 where c >= cos_outer, else 0), no division by zero; cos_inner = cos_outer = -1 gives 1
+/// (no cone); l = 0 (light at Q) gives c = 0. Bound: spot in [0, 1]; its slope in c is
+/// 1 / (cos_inner - cos_outer), so an error E in the cone cosine moves spot by at most
+/// E / (cos_inner - cos_outer) (against smoothstep's 1.5 E / (cos_inner - cos_outer)).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T spot_linear(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T cos_inner, T cos_outer)
+{
+    const T c = -phong::dot(l, s);
+    const T width = cos_inner - cos_outer;
+    const T hard = phong::select(c >= cos_outer, T(1), T(0));
+    const T t = phong::clamp((c - cos_outer) / phong::select(width > T(0), width, T(1)), T(0), T(1));
+    return phong::select(width > T(0), t, hard);
 }
 
 } // namespace phong
