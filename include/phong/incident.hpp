@@ -57,9 +57,7 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr void check_incident([[maybe_unused]] const incident<T, Q>& in)
 {
     if constexpr (std::is_floating_point_v<T>) {
-#if defined(NDEBUG)
-        if (!std::is_constant_evaluated()) return;
-#endif
+        if (!value_checks_on()) return;
         const T ll = phong::dot(in.direction, in.direction);
         require(ll >= T(0.998) && ll <= T(1.002), "phong::incident: direction must be unit length");
         require(in.distance >= T(0) && in.distance <= std::numeric_limits<T>::max(), "phong::incident: distance must be finite and >= 0");
@@ -195,31 +193,27 @@ PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>&
                                                         const Lights& lights, const Incidents& incidents, const environment<T, Q>& env,
                                                         bool front_facing)
 {
-    static_assert(light_list<Lights>, "phong: the lights must be a range of phong::light<T> or of a type with a "
-                                      "phong::light_traits specialization (see light.hpp), or masked() of one");
+    if constexpr (incident_light_list<Lights>)
+        static_assert(F.lights != light_kind::any ||
+                          light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>,
+                      "shade_incident with light_kind::any reads each light's w: give light_traits a position, or set "
+                      "features::lights to positional or directional");
     static_assert(!is_weighted<std::remove_cvref_t<Lights>>::value, "shade_incident: weighted() lists are not supported (use masked())");
     static_assert(F.view == view_model::given || F.view == view_model::fixed_direction,
                   "shade_incident reads no position: features::view must be given or fixed_direction");
     static_assert(!is_surface<Surface>::value || (!F.emission && !F.alpha), "phong::surface has no emission or alpha: pass a material");
     const material<T, Q>& mat = material_of(surf);
-    check_parameters(mat, env);
-    if constexpr (F.unit_inputs) {
-        check_unit(normal, "shade_incident: normal must be unit length (features::unit_inputs)");
-        if constexpr (F.view == view_model::given) check_unit(view, "shade_incident: view vector must be unit length (features::unit_inputs)");
-        else check_unit(glm::vec<3, T, Q>(env.eye), "shade_incident: environment::eye.xyz must be unit length (features::unit_inputs)");
-    }
-    if constexpr (widened<F, T>) {
+    check_inputs<F, entry_point::shade_incident, Lights>(normal, view, mat, env);
+    if constexpr (!incident_light_list<Lights>) {
+        return {}; // not instantiated further: check_inputs' static_assert is the one error reported
+    } else if constexpr (widened<F, T>) {
         using W = double;
         constexpr features E = exact_of<F>;
         return color<F, T, Q>(total_of<F>(evaluate_incident<E>(glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view), widen<W>(mat), lights,
                                                                  incidents, widen<W>(env), front_facing)));
     } else {
         // the twofold route's formulas start from an error-free L - Q: from a given l, the exact ones
-        constexpr features G = [] {
-            features g = F;
-            if (g.mode == evaluation::stable) g.mode = evaluation::exact;
-            return g;
-        }();
+        constexpr features G = F.mode == evaluation::stable ? F.with_mode(evaluation::exact) : F;
         return total_of<F>(evaluate_incident<G>(normal, view, mat, lights, incidents, env, front_facing));
     }
 }
@@ -236,7 +230,8 @@ PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>&
 /// surf: a material<T, Q>, or a surface<T, Q> (ka, kd, ks, shininess per point, e.g. from texture
 /// maps: nothing else built per call). lights: a range of light<T> or of the renderer's own light
 /// type (light_traits), or masked(lights, bits); only the lights' colours, attenuation and spot
-/// are read (not their position, except w with light_kind::any). incidents: a random-access range
+/// are read (not their position, except w with light_kind::any: a light_traits specialization
+/// without position() is taken, incident_light_source). incidents: a random-access range
 /// (std::span, std::array, a C array) with incidents[i] for the i-th light of the list, masked
 /// or not (the light's direction from this point, and its distance).
 /// The viewer: view_model::given, the overload below with v; fixed_direction: environment::eye.xyz,

@@ -174,6 +174,20 @@ PHONG_INLINE constexpr void require(bool ok, const char* message, const char* fi
     }
 }
 
+/// Whether the debug-only value checks run here: always in constant evaluation (a failed check is
+/// a compile error), at run time only without NDEBUG. Under NDEBUG at run time false, so a check
+/// written `if (value_checks_on()) { ... }` is not even evaluated. Every debug-only check of a
+/// parameter (validate() of the material, environment, lights and weights, unit_inputs' unit
+/// vectors, an incident's direction) takes this one test.
+PHONG_INLINE constexpr bool value_checks_on() noexcept
+{
+#if defined(NDEBUG)
+    return std::is_constant_evaluated();
+#else
+    return true;
+#endif
+}
+
 /// ok, reported where it is false as require() reports it (a compile error in constant
 /// evaluation, the precondition handler in debug builds), for a bound the caller keeps in every
 /// build: where ok is false it skips the read past a range. Release builds pay a compare there,

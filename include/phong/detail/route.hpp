@@ -54,9 +54,7 @@ template <class Light>
 PHONG_INLINE constexpr void check_light([[maybe_unused]] const Light& L)
 {
     if constexpr (std::is_floating_point_v<light_scalar_t<Light>>) {
-#if defined(NDEBUG)
-        if (!std::is_constant_evaluated()) return;
-#endif
+        if (!value_checks_on()) return;
         const validation v = phong::validate(phong::to_light(L));
         require(static_cast<bool>(v), v.message());
     }
@@ -69,9 +67,7 @@ template <class W>
 PHONG_INLINE constexpr void check_weight([[maybe_unused]] W weight)
 {
     if constexpr (std::is_floating_point_v<W>) {
-#if defined(NDEBUG)
-        if (!std::is_constant_evaluated()) return;
-#endif
+        if (!value_checks_on()) return;
         require(finite_non_negative(weight), "phong::weighted: weights[i] must be finite and >= 0");
     }
 }
@@ -93,14 +89,15 @@ template <class R> using list_element_t = decltype(*std::begin(std::declval<R&>(
 template <class Lights>
 concept light_list = requires { typename list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>; } &&
                      light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>;
+/// What shade_incident<F> takes as lights: a range (masked() too) of incident_light_sources
+/// (light_traits without a position: shade_incident reads each light's direction from its incident).
+template <class Lights>
+concept incident_light_list = requires { typename list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>; } &&
+                              incident_light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>;
 
 /// F without its specular term.
 template <features F>
-inline constexpr features without_specular = [] {
-    features f = F;
-    f.specular = specular_model::none;
-    return f;
-}();
+inline constexpr features without_specular = F.with_specular(specular_model::none);
 
 /// The lights of a std::array, unrolled at compile time (each_light; a function rather than a
 /// lambda, so that it carries the same inlining attribute as every step of the light loop). An
