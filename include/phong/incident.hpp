@@ -67,6 +67,11 @@ PHONG_INLINE constexpr void check_incident([[maybe_unused]] const incident<T, Q>
 /// The per-point frame without a position: unit normal, view vector (given, or environment::eye's
 /// direction for fixed_direction; used as is under unit_inputs), whether both exist, the poison
 /// (NaN when the normal or the view input is not finite), n.v.
+/// Apart from exact::prepare, whose steps it follows: there is no position, so the NaN test reads
+/// the normal and the view input alone (exact::prepare's also reads |Q|^2), and fixed_direction's
+/// v is unit_of(eye) (exact_inverse_length: 0 where |eye|^2 is not a normal number) where
+/// exact::prepare normalizes with rescaling; one function for both would change one route's bits
+/// for a non-finite or non-unit eye.
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr exact::surface_frame<T, Q> incident_frame(const glm::vec<3, T, Q>& normal, const glm::vec<3, T, Q>& given_view,
                                                                  const environment<T, Q>& env, bool front_facing)
@@ -96,6 +101,9 @@ PHONG_INLINE constexpr exact::surface_frame<T, Q> incident_frame(const glm::vec<
 /// spot of l), the ambient term, and for a lit pair (the point has a normal and, where gated,
 /// n.l > 0) the diffuse term and the specular term (Phong: r.v = 2 (n.l)(n.v) - l.v; Blinn:
 /// n.h = (n.l + n.v) / |l + v|), as the exact route forms them from d = l, |d| = 1.
+/// Apart from exact::add_light: the light vector and distance are given, so there is no d to
+/// square, no 1/|d| and no range test of |d|^2 (exact::add_light's lit pair), and f reads the given
+/// distance; exact::add_light on d = l would add those steps (and their roundings) back.
 template <features F, class T, glm::qualifier Q, class Light, class U>
 PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
                                                const incident<U, Q>& in, T m)
@@ -119,53 +127,22 @@ PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exa
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, true);
 }
 
-/// The range a light list iterates: masked()'s lights, or the list itself.
-template <class Lights>
-PHONG_INLINE constexpr const auto& light_range(const Lights& lights)
-{
-    if constexpr (is_masked<std::remove_cvref_t<Lights>>::value) return lights.lights;
-    else return lights;
-}
-
-/// The i-th light of the list, checked; where `on` (masked() skips the lights whose bit is 0), its
-/// terms from incidents[i]. Checked: a list without a size has i checked against the incidents
-/// here, per light (a sized one once per call, add_incident_lights).
-template <features F, bool Checked, class T, glm::qualifier Q, class Light, class Incidents>
-PHONG_INLINE constexpr void add_listed_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
-                                             const Incidents& incidents, std::size_t i, T m, bool on)
-{
-    check_light(L);
-    if (!on) return;
-    if constexpr (Checked)
-        if (!within_bounds(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights")) return;
-    add_incident_light<F>(sums, s, L, incidents[i], m);
-}
-
 /// The lights with their incidents (incidents[i] belongs to the i-th light of the list, masked
-/// or not). An incident list shorter than the light list is never read past (every build; reported
-/// by within_bounds), tested once per call where the list has a size (then no light is added),
-/// else per light (the lights past the incidents are not). The first light is added
-/// before the loop, in straight-line code that starts from the sums' -0 (evaluate_incident):
-/// there -0 + x = x is folded away, and a list of one light has no loop at all.
+/// or not), by the one light loop (each_light's, detail/route.hpp: each_listed_light): an
+/// incident list shorter than the light list is never read past (every build; reported by
+/// within_bounds), tested once per call where the list has a size (then no light is added), else
+/// per light (the lights past the incidents are not). The first light is added before the loop,
+/// in straight-line code that starts from the sums' -0 (evaluate_incident): there -0 + x = x is
+/// folded away, and a list of one light has no loop at all.
 template <features F, class T, glm::qualifier Q, class Lights, class Incidents>
 PHONG_INLINE constexpr void add_incident_lights(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Lights& lights,
                                                 const Incidents& incidents, T m)
 {
-    constexpr bool sized = requires { std::size(light_range(lights)); };
-    if constexpr (sized)
-        if (!within_bounds(std::size(light_range(lights)) <= std::size(incidents), "phong::shade_incident: fewer incidents than lights"))
-            return;
-    std::uint64_t bits = 1;
-    if constexpr (is_masked<std::remove_cvref_t<Lights>>::value) bits = lights.mask;
-    auto it = std::begin(light_range(lights));
-    const auto end = std::end(light_range(lights));
-    if (it == end) return;
-    add_listed_light<F, !sized>(sums, s, *it, incidents, 0, m, (bits & 1u) != 0);
-    std::size_t i = 1;
-    for (++it; it != end; ++it, ++i) {
-        if constexpr (is_masked<std::remove_cvref_t<Lights>>::value) bits >>= 1;
-        add_listed_light<F, !sized>(sums, s, *it, incidents, i, m, (bits & 1u) != 0);
-    }
+    each_listed_light<true>(lights, incidents, "phong::shade_incident: fewer incidents than lights",
+                            [&](const auto& L, std::size_t i, bool on) PHONG_DETAIL_LAMBDA_INLINE {
+                                check_light(L);
+                                if (on) add_incident_light<F>(sums, s, L, incidents[i], m);
+                            });
 }
 
 /// The widened incident list of the stable mode's wider route is read lazily: incident<float>

@@ -52,6 +52,17 @@
 #  endif
 #endif
 
+/// PHONG_DETAIL_LAMBDA_INLINE: PHONG_INLINE's decision for a lambda (after its parameter list),
+/// so that a light loop's body passed as a lambda (detail::each_listed_light) is inlined as the
+/// loop's own steps are. g++ and clang++ when optimizing (not under AddressSanitizer, nor with
+/// PHONG_NO_FORCE_INLINE); empty elsewhere.
+#if !defined(PHONG_NO_FORCE_INLINE) && !defined(PHONG_DETAIL_ASAN) && !defined(__CUDACC__) && (defined(__GNUC__) || defined(__clang__)) && \
+    defined(__OPTIMIZE__)
+#  define PHONG_DETAIL_LAMBDA_INLINE __attribute__((always_inline))
+#else
+#  define PHONG_DETAIL_LAMBDA_INLINE
+#endif
+
 namespace phong {
 
 /// A precondition handler: called with the failed check's message (validate's, naming the field
