@@ -11,7 +11,10 @@
 #   `benchmarks/bits_hash.sh clang++ -O3`. The hashes are those of that compiler and those flags:
 #   compare runs made with the same ones.
 # Environment: BITS_HASH_JOBS (default 2) modes compiled in parallel; BITS_HASH_DIR (default
-# build/bits_hash) where the four executables go.
+# build/bits_hash) where the executables go; BITS_HASH_MODES (default "0 1 2 3": exact, stable,
+# stable twofold, fast) and BITS_HASH_SETS (a bit mask of the feature sets, bit i for the i-th
+# run_set in bits_hash.cpp's main; default all) for a quicker subset, whose lines are those of the
+# full run.
 # Output: the hash lines on stdout, sorted; the compiler line first, as a comment.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,12 +28,14 @@ mkdir -p "$dir"
 src=benchmarks/support/bits_hash.cpp
 
 build() { # mode
-  "$cxx" -std=c++20 "${flags[@]}" -Iinclude -DBITS_HASH_MODE="$1" "$src" -o "$dir/bits_hash_$1"
+  "$cxx" -std=c++20 "${flags[@]}" -Iinclude -DBITS_HASH_MODE="$1" -DBITS_HASH_SETS="${BITS_HASH_SETS:-0xffffffffu}" "$src" \
+    -o "$dir/bits_hash_$1"
 }
 export -f build
 export cxx src dir
 pids=()
-for mode in 0 1 2 3; do
+modes=${BITS_HASH_MODES:-0 1 2 3}
+for mode in $modes; do
   build "$mode" &
   pids+=($!)
   while (( $(jobs -rp | wc -l) >= jobs )); do wait -n; done
@@ -40,4 +45,4 @@ for pid in "${pids[@]}"; do wait "$pid" || status=1; done
 (( status == 0 )) || { echo "bits_hash.sh: build failed" >&2; exit 1; }
 
 echo "# $("$cxx" --version | head -1) | ${flags[*]}"
-for mode in 0 1 2 3; do "$dir/bits_hash_$mode"; done | sort
+for mode in $modes; do "$dir/bits_hash_$mode"; done | sort
