@@ -43,3 +43,43 @@ TEST_CASE("feature_set<F>: one type per feature set, value is F, and shade<Set::
         CHECK(e.x > 0.0f); // a lit point, ambient at least
     }
 }
+
+namespace {
+/// Two feature sets equal field by field: the same template argument (features has no operator==).
+template <phong::features A, phong::features B>
+constexpr bool same = std::is_same_v<phong::feature_set<A>, phong::feature_set<B>>;
+} // namespace
+
+TEST_CASE("features' setters: each changes its own field only, in any order, and match designated initializers")
+{
+    using namespace phong;
+    constexpr features a = features{}.with_lights(light_kind::directional).with_view(view_model::fixed_direction).with_unit_inputs(true).with_specular_gate(false);
+    constexpr features b = features{}.with_specular_gate(false).with_unit_inputs(true).with_view(view_model::fixed_direction).with_lights(light_kind::directional);
+    constexpr features c{.specular_gate = false, .lights = light_kind::directional, .view = view_model::fixed_direction, .unit_inputs = true};
+    static_assert(same<a, b> && same<a, c>);
+    // every setter, from the default, against the field written directly
+    constexpr features d = features{}
+                               .with_scene_ambient(false)
+                               .with_light_ambient(true)
+                               .with_diffuse(false)
+                               .with_specular(specular_model::blinn)
+                               .with_attenuation(attenuation_model::windowed)
+                               .with_spot(spot_model::smooth)
+                               .with_attenuate_ambient(false)
+                               .with_two_sided(facing::flag)
+                               .with_emission(true)
+                               .with_alpha(true)
+                               .with_mode(evaluation::stable)
+                               .with_precision(stable_precision::twofold)
+                               .with_stable_twofold_above(64);
+    constexpr features e{.scene_ambient = false, .light_ambient = true, .diffuse = false, .specular = specular_model::blinn,
+                         .attenuation = attenuation_model::windowed, .spot = spot_model::smooth, .attenuate_ambient = false,
+                         .two_sided = facing::flag, .emission = true, .alpha = true, .mode = evaluation::stable,
+                         .precision = stable_precision::twofold, .stable_twofold_above = 64};
+    static_assert(same<d, e>);
+    // the value a setter is called on is unchanged; presets::with_mode is with_mode
+    constexpr features p = presets::classic_phong;
+    static_assert(p.with_mode(evaluation::fast).mode == evaluation::fast && p.mode == evaluation::exact);
+    static_assert(same<presets::with_mode(p, evaluation::stable), p.with_mode(evaluation::stable)>);
+    CHECK(a.lights == light_kind::directional); // a run-time line for doctest's count
+}

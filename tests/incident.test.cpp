@@ -307,3 +307,42 @@ TEST_CASE_TEMPLATE("shade_incident: the first light outside the loop (masks, ind
     CHECK(near(shade_incident<no_ambient>(z, z, mat, same, first), vec3<T>(expected), tolerance<T>::rel(8)));
     CHECK(near(shade_incident<no_ambient>(z, z, mat, same, last), vec3<T>(expected), tolerance<T>::rel(8)));
 }
+
+namespace {
+/// A renderer's light that only shade_incident reads: colours, no position (the incident carries
+/// the direction).
+template <class T> struct colour_only_light {
+    vec3<T> colour;
+};
+} // namespace
+
+template <class T> struct phong::light_traits<colour_only_light<T>> {
+    static const vec3<T>& diffuse(const colour_only_light<T>& L) { return L.colour; }
+    static const vec3<T>& specular(const colour_only_light<T>& L) { return L.colour; }
+};
+
+static_assert(incident_light_source<colour_only_light<float>> && !light_source<colour_only_light<float>>,
+              "a light_traits without position is a light for shade_incident only");
+static_assert(std::is_same_v<light_scalar_t<colour_only_light<double>>, double>);
+
+TEST_CASE_TEMPLATE("shade_incident: a light_traits without position, the same bits as light<T> with that colour", T, float, double)
+{
+    // The position is never read by shade_incident with positional lights: a light<T> anywhere,
+    // with the same colours, gives the same bits.
+    const std::array<colour_only_light<T>, 2> mine{{{vec3<T>(T(0.9), T(0.5), T(0.25))}, {vec3<T>(T(0.125), T(1), T(0.5))}}};
+    std::array<light<T>, 2> theirs{};
+    for (int k = 0; k < 2; ++k) {
+        theirs[k].position = glm::vec<4, T>(T(100 + k), T(-7), T(3), T(1)); // arbitrary: not read
+        theirs[k].diffuse = theirs[k].specular = mine[k].colour;
+    }
+    const std::array<incident<T>, 2> in{{{vec3<T>(T(0), T(0.6), T(0.8)), T(2)}, {vec3<T>(T(0.8), T(0), T(0.6)), T(5)}}};
+    const vec3<T> n(T(0), T(0), T(1)), v(T(0.6), T(0), T(0.8));
+    const material<T> m{};
+    const vec3<T> a = shade_incident<given_phong>(n, v, m, mine, in);
+    const vec3<T> b = shade_incident<given_phong>(n, v, m, theirs, in);
+    CHECK(same_bits(a, b));
+    // by hand: kd * (0.8 L0 + 0.6 L1) + ks * ((r.v)^32 ...) > kd * n.l terms alone
+    CHECK(a.x > T(0.7) * (T(0.8) * T(0.9) + T(0.6) * T(0.125)) * T(0.999));
+    const vec3<T> masked_only = shade_incident<given_phong>(n, v, m, masked(mine, 0b10), in);
+    CHECK(same_bits(masked_only, shade_incident<given_phong>(n, v, m, masked(theirs, 0b10), in)));
+}

@@ -4,7 +4,7 @@
 // SPDX-License-Identifier: MIT
 //
 // The layers, each including only the ones below it (docs/batch.md, "Source layout"):
-//   batch.hpp              shade_batch's overloads (this header)
+//   batch.hpp              shade_batch, two templates (this header)
 //   batch_types.hpp        the argument types: soa3, soa_rgba, soa_points, aos_points, material_table
 //   detail/batch/          the machinery: driver.hpp (the call's set-up and runs of steps),
 //                          kernel.hpp (shade_lanes), checks.hpp (preconditions), folding.hpp,
@@ -19,12 +19,64 @@
 #include "sum/shade.hpp"
 #include "ext/batch/driver.hpp"
 
+#include <iterator>
 #include <span>
 #include <type_traits>
+#include <utility>
 
 namespace phong {
 
-/// Shades N points at once: out[i] = shade<F>(position[i], normal[i], mat, lights, env,
+namespace detail {
+
+/// What shade_batch takes as materials: one material<T, Q> for all points, a material_table<T, Q>,
+/// or N materials (anything that converts to std::span<const material<T, Q>>: a span, a std::vector).
+template <class M, class T, glm::qualifier Q>
+concept batch_materials = std::is_same_v<M, material<T, Q>> || std::is_same_v<M, material_table<T, Q>> ||
+                          std::is_convertible_v<const M&, std::span<const material<T, Q>>>;
+
+/// What shade_batch writes: SoA channels (soa_rgba<T>), or N interleaved colours (anything that
+/// converts to std::span<color<F, T, Q>>: a span, a std::vector lvalue).
+template <class O, features F, class T, glm::qualifier Q>
+concept batch_output = std::is_same_v<std::remove_cvref_t<O>, soa_rgba<T>> || std::is_convertible_v<O, std::span<color<F, T, Q>>>;
+
+/// The qualifier of a batch_materials type (glm::defaultp where it names none).
+template <class M> inline constexpr glm::qualifier materials_qualifier_v = glm::defaultp;
+template <class T, glm::qualifier Q> inline constexpr glm::qualifier materials_qualifier_v<material<T, Q>> = Q;
+template <class T, glm::qualifier Q> inline constexpr glm::qualifier materials_qualifier_v<material_table<T, Q>> = Q;
+template <class M>
+    requires requires { typename std::remove_cvref_t<decltype(*std::begin(std::declval<const M&>()))>; }
+inline constexpr glm::qualifier materials_qualifier_v<M> = materials_qualifier_v<std::remove_cvref_t<decltype(*std::begin(std::declval<const M&>()))>>;
+
+/// The scalar type and qualifier of soa_points<T> (the materials' qualifier) and aos_points<T, Q>.
+template <class P, class Materials> struct batch_points_of {};
+template <class T, class Materials> struct batch_points_of<soa_points<T>, Materials> {
+    using scalar = T;
+    static constexpr glm::qualifier qualifier = materials_qualifier_v<Materials>;
+};
+template <class T, glm::qualifier Q, class Materials> struct batch_points_of<aos_points<T, Q>, Materials> {
+    using scalar = T;
+    static constexpr glm::qualifier qualifier = Q;
+};
+
+/// The materials as shade_points_impl takes them: a material or a table by reference, N
+/// materials as a std::span (so the same instantiations whatever container the caller holds).
+template <class T, glm::qualifier Q, class M>
+decltype(auto) batch_materials_arg(const M& materials)
+{
+    if constexpr (std::is_same_v<M, material<T, Q>> || std::is_same_v<M, material_table<T, Q>>) return (materials);
+    else return std::span<const material<T, Q>>(materials);
+}
+/// The output as shade_points_impl takes it: soa_rgba<T>, or a std::span of colours.
+template <features F, class T, glm::qualifier Q, class O>
+decltype(auto) batch_output_arg(O&& out)
+{
+    if constexpr (std::is_same_v<std::remove_cvref_t<O>, soa_rgba<T>>) return static_cast<const soa_rgba<T>&>(out);
+    else return std::span<color<F, T, Q>>(out);
+}
+
+} // namespace detail
+
+/// Shades N points at once: out[i] = shade<F>(position[i], normal[i], materials(i), lights, env,
 /// front_facing[i]) for every i. The kernels are shade<F>'s own templates (detail::prepare,
 /// add_light, finish) run on simd_batch<T>, batch_width<T> points per step; a tail shorter than
 /// the width goes through padded copies. Lights, material and environment are broadcast to the
@@ -32,12 +84,17 @@ namespace phong {
 /// baseline) the points are shaded one by one through shade<F>'s route instead: the same colours
 /// as shade<F>, bit for bit.
 ///   positions, normals: structure of arrays (x, y, z spans of length N), as shade<F> takes them;
-///   mat: one material for all points, or a span of N materials (one per point);
-///   out: SoA channels (soa_rgba: r, g, b, and a when F.alpha), or a span of N interleaved
-///        colours (std::span<color<F, T>>: glm::vec3, or glm::vec4 when F.alpha);
+///   materials: one material<T, Q> for all points; N materials, one per point (a
+///        std::span<const material<T, Q>>, or anything that converts to one, e.g. a std::vector);
+///        or a material_table<T, Q> (point i takes materials.materials[materials.ids[i]]; the same
+///        bits as the per-point form given those materials);
+///   lights: a span of light<T, Q> (a std::vector converts);
+///   out: SoA channels (soa_rgba<T>: r, g, b, and a when F.alpha; a braced {r, g, b, a} is one),
+///        or N interleaved colours (std::span<color<F, T, Q>>, or a std::vector of them:
+///        glm::vec3, or glm::vec4 when F.alpha);
 ///   front_facing: N flags, read only for facing::flag; empty means all front-facing.
 /// Per-point view vectors (view_model::given: a compile error here), per-point light masks and
-/// AoS glm::vec3 inputs: the soa_points / aos_points overloads below.
+/// AoS glm::vec3 inputs: the soa_points / aos_points form below.
 /// Pre (checked through the precondition handler, detail/config.hpp; the span lengths and the
 /// aliasing rule in every build, NDEBUG included, and nothing is shaded when one fails; the values
 /// in debug builds): spans of length N (out may be longer; only its first N elements are
@@ -47,7 +104,9 @@ namespace phong {
 /// an SoA output channel may be exactly one of the coordinate spans (same data(), in-place
 /// shading: each point is read before its colour is stored). An output shifted against an input
 /// would otherwise overwrite points before they are read. Lights, a shared material and env are
-/// copied before the first store and may alias anything.
+/// copied before the first store and may alias anything. A table: ids N long, every id in the
+/// table (an id past the table takes its last entry, memory-safe in release builds; an empty
+/// table shades nothing, every build).
 /// Edges and NaN policy: those of shade<F>, point by point.
 /// Lights: a span of light<T> (they go to SIMD lanes once per call). A renderer's own light type
 /// (light_traits, light.hpp): convert the list once per call with to_light, not per point.
@@ -55,163 +114,43 @@ namespace phong {
 /// __float128 reference; against the scalar shade<F> the results differ by the SIMD rsqrt
 /// estimate (< 2 ulp, float lanes) and the exp/log implementations, amplified by the exponent m in
 /// exact mode (by about sqrt(m) in stable mode).
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa3<T>& positions, const soa3<T>& normals, const material<T, Q>& mat,
-                 std::span<const light<T, Q>> lights, const soa_rgba<T>& out, const environment<T, Q>& env = {},
+template <features F, class T, class Materials, glm::qualifier Q = detail::materials_qualifier_v<Materials>, class Output = soa_rgba<T>>
+    requires detail::batch_materials<Materials, T, Q> && detail::batch_output<Output, F, T, Q>
+void shade_batch(const soa3<T>& positions, const soa3<T>& normals, const Materials& materials,
+                 std::type_identity_t<std::span<const light<T, Q>>> lights, Output&& out, const environment<T, Q>& env = {},
                  std::span<const bool> front_facing = {})
 {
-    detail::shade_batch_impl<F>(positions, normals, mat, lights, out, env, front_facing);
+    detail::shade_batch_impl<F>(positions, normals, detail::batch_materials_arg<T, Q>(materials), lights,
+                                detail::batch_output_arg<F, T, Q>(static_cast<Output&&>(out)), env, front_facing);
 }
 
-/// shade_batch with one material per point (materials.size() == N).
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa3<T>& positions, const soa3<T>& normals, std::span<const material<T, Q>> materials,
-                 std::span<const light<T, Q>> lights, const soa_rgba<T>& out, const environment<T, Q>& env = {},
-                 std::span<const bool> front_facing = {})
-{
-    detail::shade_batch_impl<F>(positions, normals, materials, lights, out, env, front_facing);
-}
-
-/// shade_batch writing interleaved colours (rgb, or rgba when F.alpha), one material for all.
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa3<T>& positions, const soa3<T>& normals, const material<T, Q>& mat,
-                 std::span<const light<T, Q>> lights, std::span<color<F, T, Q>> out, const environment<T, Q>& env = {},
-                 std::span<const bool> front_facing = {})
-{
-    detail::shade_batch_impl<F>(positions, normals, mat, lights, out, env, front_facing);
-}
-
-/// shade_batch writing interleaved colours, one material per point.
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa3<T>& positions, const soa3<T>& normals, std::span<const material<T, Q>> materials,
-                 std::span<const light<T, Q>> lights, std::span<color<F, T, Q>> out, const environment<T, Q>& env = {},
-                 std::span<const bool> front_facing = {})
-{
-    detail::shade_batch_impl<F>(positions, normals, materials, lights, out, env, front_facing);
-}
-
-/// Shades N points given as soa_points (or aos_points, below): for every i,
-///   out[i] = shade<F>(p[i], n[i], [v[i],] mat, masked(lights, light_masks[i]), env, front_facing[i]),
+/// Shades N points given as soa_points<T> (structure of arrays) or aos_points<T, Q> (positions,
+/// normals and views as glm vectors: a ray tracer's hit records, loaded into lanes with a small
+/// transpose; the same lanes as soa_points, so the same results bit for bit): for every i,
+///   out[i] = shade<F>(p[i], n[i], [v[i],] materials(i), masked(lights, light_masks[i]), env, front_facing[i]),
 /// with v[i] = points.views (view_model::given only: secondary rays each with their own view
 /// vector), masked() only when light_masks is given (shadows: each point its own set of lights;
 /// a light whose bit is clear gives that point nothing, its ambient term included, exactly as if
-/// it were removed), front_facing only for facing::flag. Every other argument, the kernels,
-/// edges, NaN policy and accuracy are those of the shade_batch overloads above; masks and views
+/// it were removed), front_facing only for facing::flag. materials, lights and out as above (one
+/// material, N materials, or a material_table: a ray tracer's scene materials and per-hit ids);
+/// the kernels, edges, NaN policy and accuracy are those of the form above; masks and views
 /// change no other lane's result (but the stable mode picks its route per step from every lane:
 /// the twofold route where any lane's shininess is above 2^20 on float lanes, and its depth with
-/// features::stable_twofold_above > 0).
-/// lights, materials and out are spans (a std::vector converts); N = the number of positions.
+/// features::stable_twofold_above > 0). N = the number of positions.
+///   shade_batch<F>(aos_points<float>{.positions = P, .normals = N, .views = V, .light_masks = visible},
+///                  material_table<float>{.materials = scene_materials, .ids = hit_material}, lights, out, env);
 /// Pre (debug assertions): normals, and views with view_model::given, N long (views empty
 /// otherwise); front_facing and light_masks empty or N long; out at least N long; per-point
 /// materials N long; validate(material) and validate(L). Masks with more than 64 lights: lights
 /// past the 64th are seen by no point.
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa_points<T>& points, const material<T, Q>& mat, std::type_identity_t<std::span<const light<T, Q>>> lights,
-                 const soa_rgba<T>& out, const environment<T, Q>& env = {})
+template <features F, class Points, class Materials, class T = typename detail::batch_points_of<Points, Materials>::scalar,
+          glm::qualifier Q = detail::batch_points_of<Points, Materials>::qualifier, class Output = soa_rgba<T>>
+    requires detail::batch_materials<Materials, T, Q> && detail::batch_output<Output, F, T, Q>
+void shade_batch(const Points& points, const Materials& materials, std::type_identity_t<std::span<const light<T, Q>>> lights,
+                 Output&& out, const environment<T, Q>& env = {})
 {
-    detail::shade_points_impl<F>(points, mat, lights, out, env);
-}
-
-/// shade_batch over soa_points, one material per point.
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa_points<T>& points, std::type_identity_t<std::span<const material<T, Q>>> materials,
-                 std::type_identity_t<std::span<const light<T, Q>>> lights, const soa_rgba<T>& out,
-                 const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, materials, lights, out, env);
-}
-
-/// shade_batch over soa_points writing interleaved colours (glm::vec3, or vec4 when F.alpha).
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa_points<T>& points, const material<T, Q>& mat, std::type_identity_t<std::span<const light<T, Q>>> lights,
-                 std::type_identity_t<std::span<color<F, T, Q>>> out, const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, mat, lights, out, env);
-}
-
-/// shade_batch over soa_points, one material per point, interleaved colours.
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa_points<T>& points, std::type_identity_t<std::span<const material<T, Q>>> materials,
-                 std::type_identity_t<std::span<const light<T, Q>>> lights, std::type_identity_t<std::span<color<F, T, Q>>> out,
-                 const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, materials, lights, out, env);
-}
-
-/// shade_batch over aos_points (positions, normals and views as glm vectors): the same lanes as
-/// the SoA overloads, so the same results bit for bit. Everything else as above.
-template <features F, class T, glm::qualifier Q>
-void shade_batch(const aos_points<T, Q>& points, const material<T, Q>& mat, std::type_identity_t<std::span<const light<T, Q>>> lights,
-                 const soa_rgba<T>& out, const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, mat, lights, out, env);
-}
-
-/// shade_batch over aos_points, one material per point.
-template <features F, class T, glm::qualifier Q>
-void shade_batch(const aos_points<T, Q>& points, std::type_identity_t<std::span<const material<T, Q>>> materials,
-                 std::type_identity_t<std::span<const light<T, Q>>> lights, const soa_rgba<T>& out,
-                 const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, materials, lights, out, env);
-}
-
-/// shade_batch over aos_points writing interleaved colours: hit records in, colours out.
-template <features F, class T, glm::qualifier Q>
-void shade_batch(const aos_points<T, Q>& points, const material<T, Q>& mat, std::type_identity_t<std::span<const light<T, Q>>> lights,
-                 std::type_identity_t<std::span<color<F, T, Q>>> out, const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, mat, lights, out, env);
-}
-
-/// shade_batch over aos_points, one material per point, interleaved colours.
-template <features F, class T, glm::qualifier Q>
-void shade_batch(const aos_points<T, Q>& points, std::type_identity_t<std::span<const material<T, Q>>> materials,
-                 std::type_identity_t<std::span<const light<T, Q>>> lights, std::type_identity_t<std::span<color<F, T, Q>>> out,
-                 const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, materials, lights, out, env);
-}
-
-/// shade_batch over soa_points with a material table: point i takes materials.materials[
-/// materials.ids[i]] (see material_table); the same bits as the per-point overload given those
-/// materials. Everything else as above.
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa_points<T>& points, const material_table<T, Q>& materials,
-                 std::type_identity_t<std::span<const light<T, Q>>> lights, const soa_rgba<T>& out,
-                 const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, materials, lights, out, env);
-}
-
-/// shade_batch over soa_points with a material table, interleaved colours.
-template <features F, class T, glm::qualifier Q = glm::defaultp>
-void shade_batch(const soa_points<T>& points, const material_table<T, Q>& materials,
-                 std::type_identity_t<std::span<const light<T, Q>>> lights, std::type_identity_t<std::span<color<F, T, Q>>> out,
-                 const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, materials, lights, out, env);
-}
-
-/// shade_batch over aos_points with a material table: a ray tracer's hit arrays (positions,
-/// normals, views -ray.dir, shadow masks) and its material ids, as it keeps them.
-///   shade_batch<F>(aos_points<float>{.positions = P, .normals = N, .views = V, .light_masks = visible},
-///                  material_table<float>{.materials = scene_materials, .ids = hit_material}, lights, out, env);
-template <features F, class T, glm::qualifier Q>
-void shade_batch(const aos_points<T, Q>& points, const material_table<T, Q>& materials,
-                 std::type_identity_t<std::span<const light<T, Q>>> lights, const soa_rgba<T>& out,
-                 const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, materials, lights, out, env);
-}
-
-/// shade_batch over aos_points with a material table, interleaved colours.
-template <features F, class T, glm::qualifier Q>
-void shade_batch(const aos_points<T, Q>& points, const material_table<T, Q>& materials,
-                 std::type_identity_t<std::span<const light<T, Q>>> lights, std::type_identity_t<std::span<color<F, T, Q>>> out,
-                 const environment<T, Q>& env = {})
-{
-    detail::shade_points_impl<F>(points, materials, lights, out, env);
+    detail::shade_points_impl<F>(points, detail::batch_materials_arg<T, Q>(materials), lights,
+                                 detail::batch_output_arg<F, T, Q>(static_cast<Output&&>(out)), env);
 }
 
 } // namespace phong

@@ -54,6 +54,17 @@
 #  endif
 #endif
 
+/// PHONG_DETAIL_LAMBDA_INLINE: PHONG_INLINE's decision for a lambda (after its parameter list),
+/// so that a light loop's body passed as a lambda (detail::each_listed_light) is inlined as the
+/// loop's own steps are. g++ and clang++ when optimizing (not under AddressSanitizer, nor with
+/// PHONG_NO_FORCE_INLINE); empty elsewhere.
+#if !defined(PHONG_NO_FORCE_INLINE) && !defined(PHONG_DETAIL_ASAN) && !defined(__CUDACC__) && (defined(__GNUC__) || defined(__clang__)) && \
+    defined(__OPTIMIZE__)
+#  define PHONG_DETAIL_LAMBDA_INLINE __attribute__((always_inline))
+#else
+#  define PHONG_DETAIL_LAMBDA_INLINE
+#endif
+
 namespace phong {
 
 /// A precondition handler: called with the failed check's message (validate's, naming the field
@@ -188,6 +199,20 @@ PHONG_INLINE constexpr void require(bool ok, const char* message, const char* fi
         (void)file;
         (void)line;
     }
+}
+
+/// Whether the debug-only value checks run here: always in constant evaluation (a failed check is
+/// a compile error), at run time only without NDEBUG. Under NDEBUG at run time false, so a check
+/// written `if (value_checks_on()) { ... }` is not even evaluated. Every debug-only check of a
+/// parameter (validate() of the material, environment, lights and weights, unit_inputs' unit
+/// vectors, an incident's direction) takes this one test.
+PHONG_INLINE constexpr bool value_checks_on() noexcept
+{
+#if defined(NDEBUG)
+    return std::is_constant_evaluated();
+#else
+    return true;
+#endif
 }
 
 /// ok, reported where it is false as require() reports it (a compile error in constant

@@ -121,6 +121,30 @@ struct features {
     /// Pre: unit length within 1e-3, finite. A zero or NaN vector breaks the precondition: the
     /// NaN policy (NaN in, NaN out) is then not kept.
     bool unit_inputs = false;
+
+    /// The same feature set with one field changed: the one way a feature set is derived from
+    /// another (a preset, or features{}), in any order and chained, with no designated-initializer
+    /// order to keep (C++20 wants designators in declaration order):
+    ///   constexpr features F = presets::raytracer_phong.with_unit_inputs(true).with_specular_gate(false);
+    ///   constexpr features G = features{}.with_lights(light_kind::directional).with_view(view_model::fixed_direction);
+    /// Each returns a copy; the value it is called on is unchanged.
+    PHONG_INLINE constexpr features with_scene_ambient(bool value) const { features f = *this; f.scene_ambient = value; return f; }
+    PHONG_INLINE constexpr features with_light_ambient(bool value) const { features f = *this; f.light_ambient = value; return f; }
+    PHONG_INLINE constexpr features with_diffuse(bool value) const { features f = *this; f.diffuse = value; return f; }
+    PHONG_INLINE constexpr features with_specular(specular_model value) const { features f = *this; f.specular = value; return f; }
+    PHONG_INLINE constexpr features with_specular_gate(bool value) const { features f = *this; f.specular_gate = value; return f; }
+    PHONG_INLINE constexpr features with_lights(light_kind value) const { features f = *this; f.lights = value; return f; }
+    PHONG_INLINE constexpr features with_attenuation(attenuation_model value) const { features f = *this; f.attenuation = value; return f; }
+    PHONG_INLINE constexpr features with_spot(spot_model value) const { features f = *this; f.spot = value; return f; }
+    PHONG_INLINE constexpr features with_attenuate_ambient(bool value) const { features f = *this; f.attenuate_ambient = value; return f; }
+    PHONG_INLINE constexpr features with_two_sided(facing value) const { features f = *this; f.two_sided = value; return f; }
+    PHONG_INLINE constexpr features with_view(view_model value) const { features f = *this; f.view = value; return f; }
+    PHONG_INLINE constexpr features with_emission(bool value) const { features f = *this; f.emission = value; return f; }
+    PHONG_INLINE constexpr features with_alpha(bool value) const { features f = *this; f.alpha = value; return f; }
+    PHONG_INLINE constexpr features with_mode(evaluation value) const { features f = *this; f.mode = value; return f; }
+    PHONG_INLINE constexpr features with_precision(stable_precision value) const { features f = *this; f.precision = value; return f; }
+    PHONG_INLINE constexpr features with_stable_twofold_above(unsigned value) const { features f = *this; f.stable_twofold_above = value; return f; }
+    PHONG_INLINE constexpr features with_unit_inputs(bool value) const { features f = *this; f.unit_inputs = value; return f; }
 };
 
 /// A feature set as a type, for templating a CUDA kernel on it: nvcc 13 rejects a class-type
@@ -201,8 +225,7 @@ inline constexpr features seed003_diffuse = diffuse_only;                    ///
 /// The same feature set evaluated in another mode (e.g. with_mode(classic_phong, evaluation::stable)).
 PHONG_INLINE constexpr features with_mode(features f, evaluation mode)
 {
-    f.mode = mode;
-    return f;
+    return f.with_mode(mode);
 }
 
 } // namespace presets

@@ -53,9 +53,11 @@ struct light {
 /// a light<T> per point. light<T, Q> has one (below); any other type has none: shade<F> then
 /// stops with a static_assert that names light_traits. A specialization has static functions
 /// (PHONG_HD ones for CUDA device code), each returning a value or a reference:
-///   position(L) -> glm::vec<4, U, Q>  required: the homogeneous position, as light::position
-///                                      (w = 1 positional, w = 0 directional; U, Q: the light's scalar
-///                                      type and qualifier, read from this function's return type);
+///   position(L) -> glm::vec<4, U, Q>  required by shade<F> (shade_incident<F> reads it only with
+///                                      light_kind::any, for w): the homogeneous position, as
+///                                      light::position (w = 1 positional, w = 0 directional; U, Q:
+///                                      the light's scalar type and qualifier, read from this
+///                                      function's return type, else from diffuse's);
 ///   diffuse(L)  -> glm::vec<3, U, Q>  required: Ld (seed 001 lightdiff);
 ///   specular(L) -> glm::vec<3, U, Q>  required: Ls (seed 001 lightspec);
 ///   ambient(L)  -> glm::vec<3, U, Q>  optional, default 0: La (seed 001 lightamb);
@@ -95,26 +97,47 @@ template <class T, glm::qualifier Q> struct homogeneous_position_of<glm::vec<4, 
     using scalar = T;
     static constexpr glm::qualifier qualifier = Q;
 };
+template <class V> struct colour_of {};
+template <class T, glm::qualifier Q> struct colour_of<glm::vec<3, T, Q>> {
+    using scalar = T;
+    static constexpr glm::qualifier qualifier = Q;
+};
 template <class L>
 using light_position_t = std::remove_cvref_t<decltype(light_traits<L>::position(std::declval<const L&>()))>;
+template <class L>
+using light_diffuse_t = std::remove_cvref_t<decltype(light_traits<L>::diffuse(std::declval<const L&>()))>;
+template <class L>
+concept traits_with_position = requires(const L& l) { light_traits<L>::position(l); };
+/// A light's scalar type and qualifier: from position's glm::vec<4, U, Q> where the traits have
+/// one, else from diffuse's glm::vec<3, U, Q> (a light that only shade_incident reads).
+template <class L> struct light_fields : colour_of<light_diffuse_t<L>> {};
+template <traits_with_position L> struct light_fields<L> : homogeneous_position_of<light_position_t<L>> {};
 } // namespace detail
+
+/// A type shade_incident<F> takes as a light: light_traits<L> gives diffuse and specular (a
+/// glm::vec<3, U, Q>; cv and references ignored); position is optional (shade_incident reads the
+/// light's direction from its incident, and w only with light_kind::any).
+template <class L>
+concept incident_light_source = requires(const std::remove_cvref_t<L>& l) {
+    light_traits<std::remove_cvref_t<L>>::diffuse(l);
+    light_traits<std::remove_cvref_t<L>>::specular(l);
+} && requires { typename detail::light_fields<std::remove_cvref_t<L>>::scalar; };
 
 /// A type shade<F> takes as a light: light_traits<L> gives position (a glm::vec<4, U, Q>),
 /// diffuse and specular (cv and references ignored).
 template <class L>
-concept light_source = requires(const std::remove_cvref_t<L>& l) {
+concept light_source = incident_light_source<L> && requires(const std::remove_cvref_t<L>& l) {
     light_traits<std::remove_cvref_t<L>>::position(l);
-    light_traits<std::remove_cvref_t<L>>::diffuse(l);
-    light_traits<std::remove_cvref_t<L>>::specular(l);
     typename detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::scalar;
 };
 
-/// The scalar type U (light_scalar_t) and qualifier (light_qualifier_v) of a light_source's
-/// fields, read from light_traits<L>::position's return type glm::vec<4, U, Q>.
-template <light_source L>
-using light_scalar_t = typename detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::scalar;
-template <light_source L>
-inline constexpr glm::qualifier light_qualifier_v = detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::qualifier;
+/// The scalar type U (light_scalar_t) and qualifier (light_qualifier_v) of a light's fields, read
+/// from light_traits<L>::position's return type glm::vec<4, U, Q> (from diffuse's glm::vec<3, U, Q>
+/// for a light without a position).
+template <incident_light_source L>
+using light_scalar_t = typename detail::light_fields<std::remove_cvref_t<L>>::scalar;
+template <incident_light_source L>
+inline constexpr glm::qualifier light_qualifier_v = detail::light_fields<std::remove_cvref_t<L>>::qualifier;
 
 namespace detail {
 /// The fields of a light_source as shade<F> reads them: light_traits' function, or the default
@@ -140,13 +163,14 @@ template <class L> PHONG_INLINE constexpr decltype(auto) spot_of([[maybe_unused]
 } // namespace detail
 
 /// The light<U, Q> a light_source stands for: every field read through light_traits (defaults
-/// where the traits leave one out). For what needs a light<T> itself: validate(), and shade_batch,
-/// which takes a span of light<T> (convert the list once per call, not per point).
-template <light_source L>
+/// where the traits leave one out; light<U, Q>'s default position for an incident_light_source
+/// without one). For what needs a light<T> itself: validate(), and shade_batch, which takes a span
+/// of light<T> (convert the list once per call, not per point).
+template <incident_light_source L>
 PHONG_INLINE constexpr light<light_scalar_t<L>, light_qualifier_v<L>> to_light(const L& l)
 {
     light<light_scalar_t<L>, light_qualifier_v<L>> out;
-    out.position = detail::position_of(l);
+    if constexpr (detail::traits_with_position<L>) out.position = detail::position_of(l);
     out.ambient = detail::ambient_of(l);
     out.diffuse = detail::diffuse_of(l);
     out.specular = detail::specular_of(l);

@@ -53,9 +53,7 @@ template <class Light>
 PHONG_INLINE constexpr void check_light([[maybe_unused]] const Light& L)
 {
     if constexpr (std::is_floating_point_v<light_scalar_t<Light>>) {
-#if defined(NDEBUG)
-        if (!std::is_constant_evaluated()) return;
-#endif
+        if (!value_checks_on()) return;
         const validation v = phong::validate(phong::to_light(L));
         require(static_cast<bool>(v), v.message());
     }
@@ -68,9 +66,7 @@ template <class W>
 PHONG_INLINE constexpr void check_weight([[maybe_unused]] W weight)
 {
     if constexpr (std::is_floating_point_v<W>) {
-#if defined(NDEBUG)
-        if (!std::is_constant_evaluated()) return;
-#endif
+        if (!value_checks_on()) return;
         require(finite_non_negative(weight), "phong::weighted: weights[i] must be finite and >= 0");
     }
 }
@@ -92,14 +88,72 @@ template <class R> using list_element_t = decltype(*std::begin(std::declval<R&>(
 template <class Lights>
 concept light_list = requires { typename list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>; } &&
                      light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>;
+/// What shade_incident<F> takes as lights: a range (masked() too) of incident_light_sources
+/// (light_traits without a position: shade_incident reads each light's direction from its incident).
+template <class Lights>
+concept incident_light_list = requires { typename list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>; } &&
+                              incident_light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>;
+
+/// The range a light list iterates: masked()'s or weighted()'s lights, or the list itself.
+/// (Not const where the list is not: a view such as std::views::filter iterates only as non-const.)
+template <class Lights>
+PHONG_INLINE constexpr auto& light_range(Lights& lights)
+{
+    if constexpr (is_masked<std::remove_cvref_t<Lights>>::value || is_weighted<std::remove_cvref_t<Lights>>::value) return (lights.lights);
+    else return (lights);
+}
+
+/// each_listed_light without a second range.
+struct no_second_range {};
+
+/// The one loop over a light list (each_light's masked, weighted and plain lists, SIMD lanes
+/// included, and shade_incident's lights): visit(L, i, on) for the i-th light L of
+/// light_range(lights) in order, on = bit i of masked()'s mask (true for other lists; lights past
+/// bit 63 are off).
+/// second: a range with an entry per light, read by visit at index i (weighted()'s weights,
+/// shade_incident's incidents), or no_second_range. It is never read past (every build; reported
+/// by within_bounds with the message too_few): where the light range has a size, tested once per
+/// call (nothing is visited when second is shorter), else per light (the loop stops at the first
+/// light without an entry).
+/// PeelFirst: the first light visited before the loop, in straight-line code (shade_incident: its
+/// sums start at -0, so the first light's terms become the sums with no addition, and a list of
+/// one light has no loop at all). A std::array is not visited here: each_array_light unrolls it.
+template <bool PeelFirst = false, class Lights, class Second, class Visit>
+PHONG_INLINE constexpr void each_listed_light(Lights& lights, [[maybe_unused]] const Second& second,
+                                              [[maybe_unused]] const char* too_few, Visit&& visit)
+{
+    constexpr bool with_second = !std::is_same_v<Second, no_second_range>;
+    constexpr bool masked_list = is_masked<std::remove_cvref_t<Lights>>::value;
+    constexpr bool sized = requires { std::size(light_range(lights)); };
+    if constexpr (with_second && sized)
+        if (!within_bounds(std::size(light_range(lights)) <= std::size(second), too_few)) return;
+    [[maybe_unused]] std::uint64_t bits = 0;
+    if constexpr (masked_list) bits = lights.mask;
+    std::size_t i = 0;
+    auto it = std::begin(light_range(lights));
+    const auto end = std::end(light_range(lights));
+    const auto step = [&]() PHONG_DETAIL_LAMBDA_INLINE {
+        if constexpr (with_second && !sized)
+            if (!within_bounds(i < std::size(second), too_few)) return false;
+        if constexpr (masked_list) {
+            visit(*it, i, (bits & 1u) != 0);
+            bits >>= 1;
+        } else {
+            visit(*it, i, true);
+        }
+        return true;
+    };
+    if constexpr (PeelFirst) {
+        if (it == end || !step()) return;
+        ++it, ++i;
+    }
+    for (; it != end; ++it, ++i)
+        if (!step()) return;
+}
 
 /// F without its specular term.
 template <features F>
-inline constexpr features without_specular = [] {
-    features f = F;
-    f.specular = specular_model::none;
-    return f;
-}();
+inline constexpr features without_specular = F.with_specular(specular_model::none);
 
 /// The lights of a std::array, unrolled at compile time (each_light; a function rather than a
 /// lambda, so that it carries the same inlining attribute as every step of the light loop). An
@@ -129,38 +183,27 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
     using R = std::remove_cvref_t<Lights>;
     if constexpr (is_std_array<R>::value) {
         each_array_light<F>(sums, s, lights, m, std::make_index_sequence<std::tuple_size_v<R>>{});
-    } else if constexpr (is_masked<R>::value) {
-        std::uint64_t bits = lights.mask;
-        for (auto&& L : lights.lights) {
-            check_light_if<Check>(L);
-            if (bits & 1u) detail::add_light<F>(sums, s, L, m, unweighted{});
-            bits >>= 1;
-        }
     } else if constexpr (is_weighted<R>::value) {
-        // A weight for every light: once per call where the list has a size, else per light.
-        constexpr bool sized = requires { std::size(lights.lights); };
-        constexpr const char* too_few = "phong::weighted: fewer weights than lights";
-        if constexpr (sized)
-            if (!within_bounds(std::size(lights.lights) <= lights.weights.size(), too_few)) return;
-        std::size_t i = 0;
-        for (auto&& L : lights.lights) {
-            if constexpr (!sized)
-                if (!within_bounds(i < lights.weights.size(), too_few)) return;
-            check_light_if<Check>(L);
-            const auto weight = lights.weights[i++];
-            check_weight(weight);
-            if (weight != 0) detail::add_light<F>(sums, s, L, m, weight); // 0: the light is not seen
-        }
-    } else if constexpr (std::is_floating_point_v<T>) {
-        // The same loop twice, so each copy is compiled knowing whether the point has a normal
-        // and a view vector (g++ does not unswitch it by itself).
-        if (s.defined) {
-            for (auto&& L : lights) check_light_if<Check>(L), detail::add_light<F>(sums, s, L, m, unweighted{});
-        } else {
-            for (auto&& L : lights) check_light_if<Check>(L), detail::add_light<F>(sums, s, L, m, unweighted{});
-        }
+        each_listed_light(lights, lights.weights, "phong::weighted: fewer weights than lights",
+                          [&](const auto& L, std::size_t i, bool) PHONG_DETAIL_LAMBDA_INLINE {
+                              check_light_if<Check>(L);
+                              const auto weight = lights.weights[i];
+                              check_weight(weight);
+                              if (weight != 0) detail::add_light<F>(sums, s, L, m, weight); // 0: the light is not seen
+                          });
     } else {
-        for (auto&& L : lights) detail::add_light<F>(sums, s, L, m, unweighted{});
+        const auto add = [&](const auto& L, std::size_t, bool on) PHONG_DETAIL_LAMBDA_INLINE {
+            check_light_if<Check && std::is_floating_point_v<T>>(L);
+            if (on) detail::add_light<F>(sums, s, L, m, unweighted{});
+        };
+        if constexpr (std::is_floating_point_v<T> && !is_masked<R>::value) {
+            // The same loop twice, so each copy is compiled knowing whether the point has a normal
+            // and a view vector (g++ does not unswitch it by itself).
+            if (s.defined) each_listed_light(lights, no_second_range{}, nullptr, add);
+            else each_listed_light(lights, no_second_range{}, nullptr, add);
+        } else {
+            each_listed_light(lights, no_second_range{}, nullptr, add);
+        }
     }
 }
 

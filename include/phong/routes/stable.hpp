@@ -68,6 +68,9 @@ PHONG_INLINE constexpr twofold_vector<T, Q> difference_twofold(const glm::vec<3,
 /// The per-point frame: n and v twofold from the exact normal and the exact view vector (-Q, the
 /// given v, E.xyz - E.w Q). features::unit_inputs does not skip this: the twofold unit vectors are
 /// what the stable mode's accuracy rests on.
+/// Apart from exact::prepare (not the same steps in another arithmetic type): each vector here is
+/// a pair (hi, lo) from power-of-two rescaled inputs, where the exact frame rounds once, so the two
+/// frames' bits differ by design (accuracy.hpp bounds each).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
@@ -209,6 +212,10 @@ PHONG_INLINE constexpr T specular_factor(const surface_frame<T, Q>& s, const lig
 }
 
 /// One light's terms added to the sums. A SIMD batch takes the twofold depth when any lane needs it.
+/// Apart from exact::add_light: d = L.xyz - w Q is carried with its rounding error and l, n.l and
+/// the specular chord are twofold (the exact step rounds each once and takes the power of the
+/// cosine), so the bits differ by design; the steps both share (f, the ambient and diffuse sums)
+/// are detail/light_terms.hpp's.
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class W>
 PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, T m, W visibility)
 {

@@ -57,9 +57,7 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr void check_incident([[maybe_unused]] const incident<T, Q>& in)
 {
     if constexpr (std::is_floating_point_v<T>) {
-#if defined(NDEBUG)
-        if (!std::is_constant_evaluated()) return;
-#endif
+        if (!value_checks_on()) return;
         const T ll = phong::dot(in.direction, in.direction);
         require(ll >= T(0.998) && ll <= T(1.002), "phong::incident: direction must be unit length");
         require(in.distance >= T(0) && in.distance <= std::numeric_limits<T>::max(), "phong::incident: distance must be finite and >= 0");
@@ -69,6 +67,11 @@ PHONG_INLINE constexpr void check_incident([[maybe_unused]] const incident<T, Q>
 /// The per-point frame without a position: unit normal, view vector (given, or environment::eye's
 /// direction for fixed_direction; used as is under unit_inputs), whether both exist, the poison
 /// (NaN when the normal or the view input is not finite), n.v.
+/// Apart from exact::prepare, whose steps it follows: there is no position, so the NaN test reads
+/// the normal and the view input alone (exact::prepare's also reads |Q|^2), and fixed_direction's
+/// v is unit_of(eye) (exact_inverse_length: 0 where |eye|^2 is not a normal number) where
+/// exact::prepare normalizes with rescaling; one function for both would change one route's bits
+/// for a non-finite or non-unit eye.
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr exact::surface_frame<T, Q> incident_frame(const glm::vec<3, T, Q>& normal, const glm::vec<3, T, Q>& given_view,
                                                                  const environment<T, Q>& env, bool front_facing)
@@ -98,6 +101,9 @@ PHONG_INLINE constexpr exact::surface_frame<T, Q> incident_frame(const glm::vec<
 /// spot of l), the ambient term, and for a lit pair (the point has a normal and, where gated,
 /// n.l > 0) the diffuse term and the specular term (Phong: r.v = 2 (n.l)(n.v) - l.v; Blinn:
 /// n.h = (n.l + n.v) / |l + v|), as the exact route forms them from d = l, |d| = 1.
+/// Apart from exact::add_light: the light vector and distance are given, so there is no d to
+/// square, no 1/|d| and no range test of |d|^2 (exact::add_light's lit pair), and f reads the given
+/// distance; exact::add_light on d = l would add those steps (and their roundings) back.
 template <features F, class T, glm::qualifier Q, class Light, class U>
 PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
                                                const incident<U, Q>& in, T m)
@@ -121,53 +127,22 @@ PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exa
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, true);
 }
 
-/// The range a light list iterates: masked()'s lights, or the list itself.
-template <class Lights>
-PHONG_INLINE constexpr const auto& light_range(const Lights& lights)
-{
-    if constexpr (is_masked<std::remove_cvref_t<Lights>>::value) return lights.lights;
-    else return lights;
-}
-
-/// The i-th light of the list, checked; where `on` (masked() skips the lights whose bit is 0), its
-/// terms from incidents[i]. Checked: a list without a size has i checked against the incidents
-/// here, per light (a sized one once per call, add_incident_lights).
-template <features F, bool Checked, class T, glm::qualifier Q, class Light, class Incidents>
-PHONG_INLINE constexpr void add_listed_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
-                                             const Incidents& incidents, std::size_t i, T m, bool on)
-{
-    check_light(L);
-    if (!on) return;
-    if constexpr (Checked)
-        if (!within_bounds(i < std::size(incidents), "phong::shade_incident: fewer incidents than lights")) return;
-    add_incident_light<F>(sums, s, L, incidents[i], m);
-}
-
 /// The lights with their incidents (incidents[i] belongs to the i-th light of the list, masked
-/// or not). An incident list shorter than the light list is never read past (every build; reported
-/// by within_bounds), tested once per call where the list has a size (then no light is added),
-/// else per light (the lights past the incidents are not). The first light is added
-/// before the loop, in straight-line code that starts from the sums' -0 (evaluate_incident):
-/// there -0 + x = x is folded away, and a list of one light has no loop at all.
+/// or not), by the one light loop (each_light's, detail/route.hpp: each_listed_light): an
+/// incident list shorter than the light list is never read past (every build; reported by
+/// within_bounds), tested once per call where the list has a size (then no light is added), else
+/// per light (the lights past the incidents are not). The first light is added before the loop,
+/// in straight-line code that starts from the sums' -0 (evaluate_incident): there -0 + x = x is
+/// folded away, and a list of one light has no loop at all.
 template <features F, class T, glm::qualifier Q, class Lights, class Incidents>
 PHONG_INLINE constexpr void add_incident_lights(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Lights& lights,
                                                 const Incidents& incidents, T m)
 {
-    constexpr bool sized = requires { std::size(light_range(lights)); };
-    if constexpr (sized)
-        if (!within_bounds(std::size(light_range(lights)) <= std::size(incidents), "phong::shade_incident: fewer incidents than lights"))
-            return;
-    std::uint64_t bits = 1;
-    if constexpr (is_masked<std::remove_cvref_t<Lights>>::value) bits = lights.mask;
-    auto it = std::begin(light_range(lights));
-    const auto end = std::end(light_range(lights));
-    if (it == end) return;
-    add_listed_light<F, !sized>(sums, s, *it, incidents, 0, m, (bits & 1u) != 0);
-    std::size_t i = 1;
-    for (++it; it != end; ++it, ++i) {
-        if constexpr (is_masked<std::remove_cvref_t<Lights>>::value) bits >>= 1;
-        add_listed_light<F, !sized>(sums, s, *it, incidents, i, m, (bits & 1u) != 0);
-    }
+    each_listed_light<true>(lights, incidents, "phong::shade_incident: fewer incidents than lights",
+                            [&](const auto& L, std::size_t i, bool on) PHONG_DETAIL_LAMBDA_INLINE {
+                                check_light(L);
+                                if (on) add_incident_light<F>(sums, s, L, incidents[i], m);
+                            });
 }
 
 /// The widened incident list of the stable mode's wider route is read lazily: incident<float>
@@ -195,31 +170,27 @@ PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>&
                                                         const Lights& lights, const Incidents& incidents, const environment<T, Q>& env,
                                                         bool front_facing)
 {
-    static_assert(light_list<Lights>, "phong: the lights must be a range of phong::light<T> or of a type with a "
-                                      "phong::light_traits specialization (see light.hpp), or masked() of one");
+    if constexpr (incident_light_list<Lights>)
+        static_assert(F.lights != light_kind::any ||
+                          light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>,
+                      "shade_incident with light_kind::any reads each light's w: give light_traits a position, or set "
+                      "features::lights to positional or directional");
     static_assert(!is_weighted<std::remove_cvref_t<Lights>>::value, "shade_incident: weighted() lists are not supported (use masked())");
     static_assert(F.view == view_model::given || F.view == view_model::fixed_direction,
                   "shade_incident reads no position: features::view must be given or fixed_direction");
     static_assert(!is_surface<Surface>::value || (!F.emission && !F.alpha), "phong::surface has no emission or alpha: pass a material");
     const material<T, Q>& mat = material_of(surf);
-    check_parameters(mat, env);
-    if constexpr (F.unit_inputs) {
-        check_unit(normal, "shade_incident: normal must be unit length (features::unit_inputs)");
-        if constexpr (F.view == view_model::given) check_unit(view, "shade_incident: view vector must be unit length (features::unit_inputs)");
-        else check_unit(glm::vec<3, T, Q>(env.eye), "shade_incident: environment::eye.xyz must be unit length (features::unit_inputs)");
-    }
-    if constexpr (widened<F, T>) {
+    check_inputs<F, entry_point::shade_incident, Lights>(normal, view, mat, env);
+    if constexpr (!incident_light_list<Lights>) {
+        return {}; // not instantiated further: check_inputs' static_assert is the one error reported
+    } else if constexpr (widened<F, T>) {
         using W = double;
         constexpr features E = exact_of<F>;
         return color<F, T, Q>(total_of<F>(evaluate_incident<E>(glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view), widen<W>(mat), lights,
                                                                  incidents, widen<W>(env), front_facing)));
     } else {
         // the twofold route's formulas start from an error-free L - Q: from a given l, the exact ones
-        constexpr features G = [] {
-            features g = F;
-            if (g.mode == evaluation::stable) g.mode = evaluation::exact;
-            return g;
-        }();
+        constexpr features G = F.mode == evaluation::stable ? F.with_mode(evaluation::exact) : F;
         return total_of<F>(evaluate_incident<G>(normal, view, mat, lights, incidents, env, front_facing));
     }
 }
@@ -236,7 +207,8 @@ PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>&
 /// surf: a material<T, Q>, or a surface<T, Q> (ka, kd, ks, shininess per point, e.g. from texture
 /// maps: nothing else built per call). lights: a range of light<T> or of the renderer's own light
 /// type (light_traits), or masked(lights, bits); only the lights' colours, attenuation and spot
-/// are read (not their position, except w with light_kind::any). incidents: a random-access range
+/// are read (not their position, except w with light_kind::any: a light_traits specialization
+/// without position() is taken, incident_light_source). incidents: a random-access range
 /// (std::span, std::array, a C array) with incidents[i] for the i-th light of the list, masked
 /// or not (the light's direction from this point, and its distance).
 /// The viewer: view_model::given, the overload below with v; fixed_direction: environment::eye.xyz,

@@ -37,9 +37,7 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const environment<T, Q>& env)
 {
     if constexpr (std::is_floating_point_v<T>) {
-#if defined(NDEBUG)
-        if (!std::is_constant_evaluated()) return;
-#endif
+        if (!value_checks_on()) return;
         const validation vm = phong::validate(mat);
         require(static_cast<bool>(vm), vm.message());
         const validation ve = phong::validate(env);
@@ -53,11 +51,7 @@ inline constexpr bool widened = F.mode == evaluation::stable && F.precision == s
 
 /// F as the wider path runs it: the exact mode's formulas (in double, on float inputs).
 template <features F>
-inline constexpr features exact_of = [] {
-    features e = F;
-    e.mode = evaluation::exact;
-    return e;
-}();
+inline constexpr features exact_of = F.with_mode(evaluation::exact);
 
 template <class W, class T, glm::qualifier Q>
 PHONG_INLINE constexpr material<W, Q> widen(const material<T, Q>& m)
@@ -75,9 +69,7 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>& v, [[maybe_unused]] const char* message)
 {
     if constexpr (std::is_floating_point_v<T>) {
-#if defined(NDEBUG)
-        if (!std::is_constant_evaluated()) return;
-#endif
+        if (!value_checks_on()) return;
         const T vv = phong::dot(v, v);
         require(vv >= T(0.998) && vv <= T(1.002), message);
     }
@@ -100,17 +92,37 @@ PHONG_INLINE constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& pos
 template <features F, class T>
 using arithmetic_t = std::conditional_t<widened<F, T>, double, T>;
 
-/// shade<F>'s checks of its parameters: the material, the environment, and unit_inputs' unit vectors.
-template <features F, class T, glm::qualifier Q>
+/// Which public entry point checks its inputs (check_inputs): the messages name it.
+enum class entry_point : unsigned char { shade, shade_incident };
+
+/// The entry checks of shade<F> (shade_terms<F>, shade_batch's point-by-point route) and of
+/// shade_incident<F>, written once: the lights are a light list (a static_assert naming
+/// light_traits), validate(material) and validate(environment), and unit_inputs' unit vectors (the
+/// normal; the view vector with view_model::given; environment::eye.xyz with fixed_direction).
+/// The value checks are debug-only (value_checks_on); the messages name the entry point.
+template <features F, entry_point E, class Lights, class T, glm::qualifier Q>
 PHONG_INLINE constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q>& normal, [[maybe_unused]] const glm::vec<3, T, Q>& view,
-                                     const material<T, Q>& mat, const environment<T, Q>& env)
+                                         const material<T, Q>& mat, const environment<T, Q>& env)
 {
+    if constexpr (E == entry_point::shade)
+        static_assert(light_list<Lights>, "phong: the lights must be a range of phong::light<T> or of a type with a "
+                                          "phong::light_traits specialization (position, diffuse, specular; see light.hpp), "
+                                          "or masked() / weighted() of one");
+    else
+        static_assert(incident_light_list<Lights>, "phong: the lights must be a range of phong::light<T> or of a type with a "
+                                                   "phong::light_traits specialization (diffuse, specular; see light.hpp), "
+                                                   "or masked() of one");
     check_parameters(mat, env);
     if constexpr (F.unit_inputs) {
-        check_unit(normal, "shade: normal must be unit length (features::unit_inputs)");
-        if constexpr (F.view == view_model::given) check_unit(view, "shade: view vector must be unit length (features::unit_inputs)");
+        constexpr bool incident = E == entry_point::shade_incident;
+        check_unit(normal, incident ? "shade_incident: normal must be unit length (features::unit_inputs)"
+                                    : "shade: normal must be unit length (features::unit_inputs)");
+        if constexpr (F.view == view_model::given)
+            check_unit(view, incident ? "shade_incident: view vector must be unit length (features::unit_inputs)"
+                                      : "shade: view vector must be unit length (features::unit_inputs)");
         if constexpr (F.view == view_model::fixed_direction)
-            check_unit(glm::vec<3, T, Q>(env.eye), "shade: environment::eye.xyz must be unit length (fixed_direction, features::unit_inputs)");
+            check_unit(glm::vec<3, T, Q>(env.eye), incident ? "shade_incident: environment::eye.xyz must be unit length (features::unit_inputs)"
+                                                            : "shade: environment::eye.xyz must be unit length (fixed_direction, features::unit_inputs)");
     }
 }
 
@@ -122,17 +134,14 @@ PHONG_INLINE constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::
                                                                  const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
                                                                  Lights&& lights, const environment<T, Q>& env, bool front_facing)
 {
-    static_assert(light_list<Lights>, "phong: the lights must be a range of phong::light<T> or of a type with a "
-                                      "phong::light_traits specialization (position, diffuse, specular; see light.hpp)");
+    if constexpr (Check) check_inputs<F, entry_point::shade, Lights>(normal, view, mat, env);
     if constexpr (!light_list<Lights>) {
-        return {}; // not instantiated further: the static_assert above is the one error reported
+        return {}; // not instantiated further: check_inputs' static_assert is the one error reported
     } else if constexpr (widened<F, T>) {
-        if constexpr (Check) check_inputs<F>(normal, view, mat, env);
         using W = double;
         return evaluate<exact_of<F>, Check>(glm::vec<3, W, Q>(position), glm::vec<3, W, Q>(normal), glm::vec<3, W, Q>(view),
                                      widen<W>(mat), static_cast<Lights&&>(lights), widen<W>(env), front_facing);
     } else {
-        if constexpr (Check) check_inputs<F>(normal, view, mat, env);
         return evaluate<F, Check>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing);
     }
 }

@@ -32,11 +32,7 @@ inline constexpr bool ambient_hoistable = F.light_ambient && (!F.attenuate_ambie
 /// F as shade_lanes runs it with the ambient hoisted: the loop has no light ambient term (the
 /// folded sums start at ka (La + sum_i La_i), shade_points_impl).
 template <features F>
-inline constexpr features ambient_hoisted = [] {
-    features g = F;
-    g.light_ambient = false;
-    return g;
-}();
+inline constexpr features ambient_hoisted = F.with_light_ambient(false);
 
 /// Whether one material can be folded into the lights: every product La_i ka, Ld_i kd, Ls_i ks is
 /// 0 exactly (a zero factor) or a normal number. A product lost to underflow would drop a term
