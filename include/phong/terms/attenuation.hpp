@@ -1,4 +1,5 @@
-// phong: f_i(Q), the attenuation of light i at point Q: distance falloff and spot cones.
+// phong: f_i(Q), the attenuation of light i at point Q: distance falloff and spot cones (their
+// parameters, falloff and spot_cone, are a light's: inputs/light.hpp).
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -17,16 +18,6 @@ template <>
 inline constexpr double attenuation_denominator_min<double> = 1.4916681462400413e-154; // 2^-511
 template <>
 inline constexpr long double attenuation_denominator_min<long double> = 1.4916681462400413e-154L;
-
-/// Distance falloff coefficients of one light (OpenGL's constant, linear and quadratic
-/// attenuation, and a range for the windowed model). Defaults: f = 1 at every distance.
-template <class T>
-struct falloff {
-    T constant = T(1);  ///< c0 >= 0
-    T linear = T(0);    ///< c1 >= 0
-    T quadratic = T(0); ///< c2 >= 0; c0 + c1 + c2 > 0
-    T range = std::numeric_limits<T>::infinity(); ///< windowed model: f = 0 from here on; > 0
-};
 
 /// Polynomial attenuation (seed 000's f_i(Q), OpenGL):
 ///   f = 1 / max(c0 + c1 d + c2 d^2, attenuation_denominator_min<Floor>)
@@ -58,49 +49,6 @@ PHONG_INLINE constexpr T attenuation_windowed(T d, T range)
     const T window = phong::clamp(T(1) - pow<4>(ratio), T(0), T(1));
     return window * window / phong::max(d * d, T(attenuation_denominator_min<Floor>));
 }
-
-/// A spot cone: the axis the light points along and its parametrizations, OpenGL's (exponent and
-/// cutoff) and the inner/outer cone (read by the smooth and the linear edge). The default is no
-/// spot. A zero axis is no cone either (every spot model gives 1): a light whose spot fields are
-/// all left at zero, as GLSL and HLSL uniforms are, is lit, not dark.
-template <class T, glm::qualifier Q = glm::defaultp>
-struct spot_cone {
-    glm::vec<3, T, Q> direction{T(0), T(0), T(-1)}; ///< unit axis s, from the light outward; zero: no cone
-    T exponent = T(0);     ///< OpenGL spot exponent e >= 0
-    T cos_cutoff = T(-1);  ///< cos of OpenGL's cutoff angle: in [0, 1] (0..90 degrees), or -1 (180: no spot)
-    T cos_inner = T(-1);   ///< smooth and linear models: full strength where cos(angle) >= cos_inner
-    T cos_outer = T(-1);   ///< smooth and linear models: zero where cos(angle) <= cos_outer; cos_outer <= cos_inner
-
-    /// OpenGL spot: axis (normalized here), exponent, cutoff in degrees (0..90, or 180 = no spot).
-    /// Edge: a zero axis stores direction 0, no cone (spot = 1). A cutoff outside that range
-    /// (negative, above 90 other than 180, NaN) makes a cone validate(light) rejects, naming
-    /// light.spot.cos_cutoff (the cosine alone cannot tell -10 from 10 degrees, so such a cutoff
-    /// stores cos_cutoff = 2).
-    PHONG_INLINE static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
-    {
-        spot_cone s;
-        s.direction = phong::normalize(axis);
-        s.exponent = exponent;
-        const bool in_range = (cutoff_degrees >= T(0) && cutoff_degrees <= T(90)) || cutoff_degrees == T(180);
-        s.cos_cutoff = in_range ? phong::cos_degrees(cutoff_degrees) : T(2);
-        return s;
-    }
-    /// Smooth or linear spot (the same fields; features::spot picks the edge): full strength
-    /// inside inner_degrees, none outside outer_degrees
-    /// (0 <= inner <= outer <= 180). Edge: a zero axis stores direction 0, no cone (spot = 1);
-    /// an angle outside [0, 180] (or NaN) or inner > outer makes a cone validate(light) rejects
-    /// (light.spot.cos_inner or light.spot.cos_outer, stored as 2 for an angle out of range;
-    /// light.spot.cos_outer for inner > outer); inner = outer: a hard edge.
-    PHONG_INLINE static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
-    {
-        spot_cone s;
-        s.direction = phong::normalize(axis);
-        const auto in_range = [](T a) { return a >= T(0) && a <= T(180); };
-        s.cos_inner = in_range(inner_degrees) ? phong::cos_degrees(inner_degrees) : T(2);
-        s.cos_outer = in_range(outer_degrees) ? phong::cos_degrees(outer_degrees) : T(2);
-        return s;
-    }
-};
 
 /// OpenGL spot factor for the unit light direction l (from Q toward the light) and unit axis s:
 ///   c = dot(-l, s);  spot = c >= cos_cutoff ? clamp(c, 0, 1)^e : 0;  cos_cutoff = -1 (180 deg) gives 1.
