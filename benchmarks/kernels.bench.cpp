@@ -1,10 +1,10 @@
-// The scalar kernels behind the model, each beside what a user would call instead: phong::pow_unit
+// The scalar kernels behind the model, each beside what a user would call instead: phong::detail::pow_unit
 // (the specular and spot power, inline, detail/power.hpp) against std::pow, float and double; the
 // fast mode's approximations (phong/core/fast_math.hpp) beside their exact twins: fast::pow_unit against
-// phong::pow_unit, fast::pow_integer likewise (exponents 1..64 in turn), fast::rsqrt against
-// phong::rsqrt (bound counter: their published constants; the fast power's error over results
+// phong::detail::pow_unit, fast::detail::pow_integer likewise (exponents 1..64 in turn), fast::rsqrt against
+// phong::detail::rsqrt (bound counter: their published constants; the fast power's error over results
 // >= 2^-24, where its relative bound holds); on this build's widest SIMD lanes, fast::rsqrt and
-// fast::reciprocal_normal against 1 / sqrt(x) and 1 / x on the same lanes (rows kernel.lanes_*).
+// fast::detail::reciprocal_normal against 1 / sqrt(x) and 1 / x on the same lanes (rows kernel.lanes_*).
 // Time per call over 65536 (x, m) pairs of the lighting model's range (x in (0, 1], a third of them
 // within 1e-3 of 1 as near a highlight; m in [1, 200] and up to 1e4), and the error of every result
 // in T's normal range against pow in the __float128 reference type (tests/support/wide.hpp).
@@ -56,12 +56,12 @@ const power_inputs<T>& inputs()
 
 enum class power_kernel { phong, std_pow, fast, fast_integer };
 
-/// The exponent of pair i: the inputs' m, or for fast::pow_integer the integers 1..64 in turn (an
+/// The exponent of pair i: the inputs' m, or for fast::detail::pow_integer the integers 1..64 in turn (an
 /// n that changes every call mispredicts the squaring loop's branches: this row is pow_integer's
 /// error, and its time's worst case; shade_batch calls it with one n for a whole call).
 template <class T, power_kernel Kernel> T exponent_of(const power_inputs<T>& in, std::size_t i)
 {
-    return Kernel == power_kernel::fast_integer ? T(1 + i % phong::fast::pow_integer_max_exponent) : in.m[i];
+    return Kernel == power_kernel::fast_integer ? T(1 + i % phong::fast::detail::pow_integer_max_exponent) : in.m[i];
 }
 
 template <class T, power_kernel Kernel>
@@ -71,10 +71,10 @@ void power_row(benchmark::State& state)
     std::vector<T> out(n_pairs);
     for (auto _ : state) {
         for (std::size_t i = 0; i < n_pairs; ++i) {
-            if constexpr (Kernel == power_kernel::phong) out[i] = phong::pow_unit(in.x[i], in.m[i]);
+            if constexpr (Kernel == power_kernel::phong) out[i] = phong::detail::pow_unit(in.x[i], in.m[i]);
             else if constexpr (Kernel == power_kernel::fast) out[i] = phong::fast::pow_unit(in.x[i], in.m[i]);
             else if constexpr (Kernel == power_kernel::fast_integer)
-                out[i] = phong::fast::pow_integer(in.x[i], unsigned(exponent_of<T, Kernel>(in, i)));
+                out[i] = phong::fast::detail::pow_integer(in.x[i], unsigned(exponent_of<T, Kernel>(in, i)));
             else out[i] = T(std::pow(in.x[i], in.m[i]));
         }
         benchmark::DoNotOptimize(out.data());
@@ -102,21 +102,21 @@ void power_row(benchmark::State& state)
     state.counters["max_ulp"] = max_ulp;
     state.counters["nan_count"] = nan;
     state.counters["bound"] = Kernel == power_kernel::fast           ? phong::fast::pow_unit_max_rel
-                              : Kernel == power_kernel::fast_integer ? phong::fast::pow_integer_max_rel<T>
+                              : Kernel == power_kernel::fast_integer ? phong::fast::detail::pow_integer_max_rel<T>
                                                                      : -1;
     state.counters["K"] = 1;
     state.counters["N"] = double(n_pairs);
 }
 
 /// 1/sqrt(x) over squared distances of a scene's range (x in [1e-4, 1e4], log-uniform), one call
-/// per item: phong::rsqrt (1 / sqrt) or fast::rsqrt (estimate + Newton).
+/// per item: phong::detail::rsqrt (1 / sqrt) or fast::rsqrt (estimate + Newton).
 template <class T, bool Fast>
 void rsqrt_row(benchmark::State& state)
 {
     std::vector<T> x(n_pairs), out(n_pairs);
     for (std::size_t i = 0; i < n_pairs; ++i) x[i] = T(std::pow(10.0, -4 + 8 * uniform(3001, i, 0)));
     for (auto _ : state) {
-        for (std::size_t i = 0; i < n_pairs; ++i) out[i] = Fast ? phong::fast::rsqrt(x[i]) : phong::rsqrt(x[i]);
+        for (std::size_t i = 0; i < n_pairs; ++i) out[i] = Fast ? phong::fast::rsqrt(x[i]) : phong::detail::rsqrt(x[i]);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
     }
@@ -137,7 +137,7 @@ void rsqrt_row(benchmark::State& state)
 #if PHONG_HAS_XSIMD
 /// 1/sqrt(x) or 1/x over the rsqrt rows' x, on SIMD lanes (phong::simd_batch<T>: AVX-512 with
 /// -march=native here), one call per lane batch; ns per item. Fast: fast::rsqrt /
-/// fast::reciprocal_normal (estimate + Newton); else the exact twin, 1 / sqrt(x) or 1 / x.
+/// fast::detail::reciprocal_normal (estimate + Newton); else the exact twin, 1 / sqrt(x) or 1 / x.
 template <class T, bool Reciprocal, bool Fast>
 void lanes_row(benchmark::State& state)
 {
@@ -148,7 +148,7 @@ void lanes_row(benchmark::State& state)
         for (std::size_t i = 0; i + V::size <= n_pairs; i += V::size) {
             const V v = V::load_unaligned(x.data() + i);
             V r;
-            if constexpr (Reciprocal) r = Fast ? phong::fast::reciprocal_normal(v) : V(T(1)) / v;
+            if constexpr (Reciprocal) r = Fast ? phong::fast::detail::reciprocal_normal(v) : V(T(1)) / v;
             else r = Fast ? phong::fast::rsqrt(v) : V(T(1)) / xsimd::sqrt(v);
             r.store_unaligned(out.data() + i);
         }
@@ -165,7 +165,7 @@ void lanes_row(benchmark::State& state)
     state.counters["ns_per_pair"] = benchmark::Counter(double(state.iterations()) * double(n_pairs) * 1e-9,
                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.counters["max_rel_err"] = max_rel;
-    state.counters["bound"] = !Fast ? -1 : Reciprocal ? phong::fast::reciprocal_max_rel<T> : phong::fast::rsqrt_max_rel<T>;
+    state.counters["bound"] = !Fast ? -1 : Reciprocal ? phong::fast::detail::reciprocal_max_rel<T> : phong::fast::rsqrt_max_rel<T>;
     state.counters["K"] = 1;
     state.counters["N"] = double(n_pairs);
 }

@@ -41,7 +41,7 @@ namespace {
 constexpr phong::features model(phong::specular_model spec, phong::evaluation mode,
                                 phong::stable_precision precision = phong::stable_precision::wider, unsigned twofold_above = 0)
 {
-    phong::features f = phong::presets::seed003_ads;
+    phong::features f = phong::presets::glsl_ads;
     f.specular = spec;
     f.mode = mode;
     f.precision = precision;                // stable_twofold rows: float arithmetic with twofold vectors

@@ -18,7 +18,7 @@
 namespace stdx = std::experimental;
 using SV = stdx::native_simd<float>;
 namespace phong {
-template <> struct math_traits<SV> {
+template <> struct phong::detail::math_traits<SV> {
     using V = SV; using scalar = float; using mask = typename SV::mask_type;
     static V sqrt(const V& x) { return stdx::sqrt(x); }
     static V rsqrt(const V& x) { return V(1.f) / stdx::sqrt(x); }
@@ -34,7 +34,7 @@ template <> struct math_traits<SV> {
     static V abs(const V& x) { return stdx::abs(x); }
     static V min(const V& a, const V& b) { return stdx::min(a, b); }
     static V max(const V& a, const V& b) { return stdx::max(a, b); }
-    static V inverse_pow2_scale(const V& x) { return V([&](auto i) { return math_traits<float>::inverse_pow2_scale(x[i]); }); }
+    static V inverse_pow2_scale(const V& x) { return V([&](auto i) { return phong::detail::math_traits<float>::inverse_pow2_scale(x[i]); }); }
 };
 }
 using namespace phong;
@@ -50,7 +50,7 @@ template <class V> double run(int K, const std::vector<float>* p, const std::vec
         auto t0 = std::chrono::steady_clock::now();
         for (std::size_t i = 0; i < N; i += W) {
             auto ld = [&](const std::vector<float>& a) { if constexpr (std::is_same_v<V, SV>) return V(&a[i], stdx::element_aligned); else return V::load_unaligned(&a[i]); };
-            auto s = detail::prepare<F>(glm::vec<3, V>(ld(p[0]), ld(p[1]), ld(p[2])), glm::vec<3, V>(ld(n[0]), ld(n[1]), ld(n[2])), glm::vec<3, V>(V(0.f)), env, mask_t<V>(true));
+            auto s = detail::prepare<F>(glm::vec<3, V>(ld(p[0]), ld(p[1]), ld(p[2])), glm::vec<3, V>(ld(n[0]), ld(n[1]), ld(n[2])), glm::vec<3, V>(V(0.f)), env, phong::detail::mask_t<V>(true));
             detail::light_sums<V, glm::defaultp> sums{};
             for (auto& l : lv) detail::add_light<F>(sums, s, l, m.shininess);
             auto c = detail::finish<F>(sums, s, m, env);

@@ -378,15 +378,15 @@ constexpr phong::features stable_phong = phong::accuracy::measured_features(eval
 constexpr phong::features stable_blinn = phong::accuracy::measured_features(evaluation::stable, specular_model::blinn);
 constexpr phong::material<float> ce_material{.ka = glm::vec3(0), .kd = glm::vec3(1), .ks = glm::vec3(1), .shininess = 1000};
 // Q = (0, 0, -1e-37), light straight above at 1e-40: n.l = 1, r = v, so kd + ks = 2 (f = 1/c0 = 1).
-constexpr std::array<phong::light<float>, 1> ce_near{phong::light<float>::seed000({0, 0, -1e-37f + 1e-40f, 1}, glm::vec3(1))};
+constexpr std::array<phong::light<float>, 1> ce_near{phong::light<float>::with_strength({0, 0, -1e-37f + 1e-40f, 1}, glm::vec3(1))};
 constexpr glm::vec3 ce_near_color = phong::shade<stable_phong>(glm::vec3(0, 0, -1e-37f), glm::vec3(0, 0, 1), ce_material, ce_near);
 static_assert(ce_near_color.x > 1.999f && ce_near_color.x < 2.001f);
 // l = -v exactly (light at 2Q behind the surface, normal toward it): Blinn's term is 0, diffuse 1.
-constexpr std::array<phong::light<float>, 1> ce_opposite{phong::light<float>::seed000({0, 0, -4, 1}, glm::vec3(1))};
+constexpr std::array<phong::light<float>, 1> ce_opposite{phong::light<float>::with_strength({0, 0, -4, 1}, glm::vec3(1))};
 constexpr glm::vec3 ce_opposite_color = phong::shade<stable_blinn>(glm::vec3(0, 0, -2), glm::vec3(0, 0, -1), ce_material, ce_opposite);
 static_assert(ce_opposite_color.x == 1.0f);
 // The 1e30 scene: the light 1e30 straight above Q = (0, 0, -2e30): n.l = 1, r = v.
-constexpr std::array<phong::light<float>, 1> ce_huge{phong::light<float>::seed000({0, 0, -1e30f, 1}, glm::vec3(1))};
+constexpr std::array<phong::light<float>, 1> ce_huge{phong::light<float>::with_strength({0, 0, -1e30f, 1}, glm::vec3(1))};
 constexpr glm::vec3 ce_huge_color = phong::shade<stable_phong>(glm::vec3(0, 0, -2e30f), glm::vec3(0, 0, 1e30f), ce_material, ce_huge);
 static_assert(ce_huge_color.x > 1.999f && ce_huge_color.x < 2.001f);
 } // namespace

@@ -38,9 +38,9 @@ TEST_CASE_TEMPLATE("attenuation: polynomial 1 / (c0 + c1 d + c2 d^2) by hand", T
 
 TEST_CASE_TEMPLATE("attenuation: polynomial edges", T, float, double)
 {
-    // d = 0 with c0 = 0: capped at 1 / attenuation_denominator_min<T>, which is sqrt(smallest
+    // d = 0 with c0 = 0: capped at 1 / phong::detail::attenuation_denominator_min<T>, which is sqrt(smallest
     // normal): 2^-63 for float, 2^-511 for double (hand: float min 2^-126, double min 2^-1022).
-    const T cap = T(1) / phong::attenuation_denominator_min<T>;
+    const T cap = T(1) / phong::detail::attenuation_denominator_min<T>;
     CHECK(phong::attenuation_polynomial(T(0), T(0), T(0), T(1)) == cap);
     CHECK(phong::attenuation_polynomial(T(0), T(0), T(1), T(0)) == cap);
     if constexpr (std::is_same_v<T, float>) CHECK(cap == std::ldexp(1.0f, 63));
@@ -77,7 +77,7 @@ TEST_CASE_TEMPLATE("attenuation: windowed inverse square by hand", T, float, dou
     CHECK(phong::attenuation_windowed(T(2), pinf<T>) == T(0.25));
     CHECK(phong::attenuation_windowed(T(8), pinf<T>) == T(1) / T(64));
     // d = 0: the same finite cap as the polynomial model.
-    CHECK(phong::attenuation_windowed(T(0), T(4)) == T(1) / phong::attenuation_denominator_min<T>);
+    CHECK(phong::attenuation_windowed(T(0), T(4)) == T(1) / phong::detail::attenuation_denominator_min<T>);
 }
 
 TEST_CASE_TEMPLATE("attenuation: OpenGL spot cone", T, float, double)
@@ -94,7 +94,7 @@ TEST_CASE_TEMPLATE("attenuation: OpenGL spot cone", T, float, double)
     CHECK(phong::spot_opengl(l_axis, s, T(5), T(0.5)) == T(1));
     CHECK(error_ulp(phong::spot_opengl(l_45, s, T(2), T(0.5)), wide(0.5)) <= 2.0); // (1/sqrt2)^2
     // Outside (45 degrees with a 30 degree cutoff): 0.
-    CHECK(phong::spot_opengl(l_45, s, T(2), phong::cos_degrees(T(30))) == T(0));
+    CHECK(phong::spot_opengl(l_45, s, T(2), phong::detail::cos_degrees(T(30))) == T(0));
     // e = 0: a hard-edged cone of strength 1.
     CHECK(phong::spot_opengl(l_45, s, T(0), T(0.5)) == T(1));
     // Documented edge: l = 0 (light at Q) gives c = 0: inside only for a 90 degree cutoff, then

@@ -58,14 +58,14 @@ constexpr features batch_feature_sets[] = {
     features{.light_ambient = true, .lights = light_kind::any, .attenuation = attenuation_model::windowed,
              .spot = spot_model::smooth, .attenuate_ambient = false, .mode = evaluation::exact},
     features{.specular = specular_model::none, .lights = light_kind::directional, .two_sided = facing::view,
-             .view = view_model::orthographic, .mode = evaluation::stable},
+             .view = view_model::fixed_direction, .mode = evaluation::stable},
     features{.specular = specular_model::blinn, .specular_gate = false, .two_sided = facing::flag,
              .view = view_model::eye_point, .emission = true, .alpha = true, .mode = evaluation::stable},
-    presets::seed000_classic,
-    presets::with_mode(presets::seed000_classic, evaluation::stable),
-    presets::seed001_raytracer,
-    presets::seed003_ads,
-    presets::seed003_diffuse,
+    presets::classic_phong,
+    presets::with_mode(presets::classic_phong, evaluation::stable),
+    presets::blinn_phong_per_light_ambient,
+    presets::glsl_ads,
+    presets::diffuse_only,
 };
 
 /// Relative difference of two colours, per channel, against the largest channel of the reference.
@@ -636,8 +636,8 @@ TEST_CASE_TEMPLATE("shade_batch lanes: normal_square is exactly 'min <= dd <= ma
         const V lanes = V::load_aligned(x);
         const auto on = V::load_aligned(on_values) > V(T(0));
         alignas(64) T got[W], got_and[W];
-        phong::select(detail::normal_square(lanes), V(T(1)), V(T(0))).store_aligned(got);
-        phong::select(detail::both_normal_square(on, lanes), V(T(1)), V(T(0))).store_aligned(got_and);
+        phong::detail::select(detail::normal_square(lanes), V(T(1)), V(T(0))).store_aligned(got);
+        phong::detail::select(detail::both_normal_square(on, lanes), V(T(1)), V(T(0))).store_aligned(got_and);
         for (std::size_t k = 0; k < W; ++k) {
             CAPTURE(x[k]);
             const bool expected = x[k] >= lim::min() && x[k] <= lim::max();

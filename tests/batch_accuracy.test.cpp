@@ -44,7 +44,7 @@ error_stats measure_batch(const std::vector<phong_test::stiff_scene<T>>& scenes,
 }
 
 /// Shininess in [1, 64] rounded to an integer (the others kept): the fast mode's lanes then take
-/// fast::pow_integer (one integer shininess for all points) instead of fast::pow_unit's kernels.
+/// fast::detail::pow_integer (one integer shininess for all points) instead of fast::pow_unit's kernels.
 template <class T> void round_small_shininess(std::vector<phong_test::stiff_scene<T>>& scenes)
 {
     for (phong_test::stiff_scene<T>& s : scenes)

@@ -50,7 +50,7 @@ template <class Call, class Check> void expect_report(const char* name, const st
     }
 }
 
-template <class T> const light<T> lights1[1] = {light<T>::seed000({T(1), T(2), T(3), T(1)}, glm::vec<3, T>(T(1)))};
+template <class T> const light<T> lights1[1] = {light<T>::with_strength({T(1), T(2), T(3), T(1)}, glm::vec<3, T>(T(1)))};
 template <class T> std::span<const light<T>> the_lights() { return std::span<const light<T>>(lights1<T>); }
 
 /// Inputs for N points on the heap, each array its own allocation of exactly N.

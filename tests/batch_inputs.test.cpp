@@ -72,7 +72,7 @@ template <class T, features F> void check_inputs(std::uint64_t seed)
     scene_gen<T> gen(seed);
     int checked = 0;
     for (std::size_t count : {std::size_t(0), std::size_t(1), W - 1, W, W + 1, 3 * W + 5, std::size_t(61)}) {
-        for (int masked_lights = 0; masked_lights < 2; ++masked_lights) {
+        for (int masked_lights = 0; phong::detail::masked_lights < 2; ++masked_lights) {
             for (int per_point_material = 0; per_point_material < 2; ++per_point_material) {
                 const batch_case<T> c(gen, F, count, 1 + gen.integer(0, 4));
                 CAPTURE(count);
@@ -168,7 +168,7 @@ template <class T, features F> void check_long_call_equals_points_alone(std::uin
     scene_gen<T> gen(seed);
     const std::size_t count = (2 * detail::steps_per_call + 3) * W + 5; // three calls, the last one short, and a tail
     batch_case<T> c(gen, F, count, 3);
-    // An integer shininess: the fast mode's lanes then take fast::pow_integer.
+    // An integer shininess: the fast mode's lanes then take fast::detail::pow_integer.
     if (integer_shininess) c.base.mat.shininess = std::round(std::min(c.base.mat.shininess, T(64)));
     for (bool masked : {false, true}) {
         std::vector<color<F, T>> soa_out(count), aos_out(count);
@@ -195,7 +195,7 @@ template <class T, features F> void check_long_call_equals_points_alone(std::uin
 
 /// The fast mode's light loop with a power-of-two shininess n = 2^K known at compile time
 /// (add_masked_lights without masks: K squarings in a row) against the same call with every light
-/// mask set (each_visible_light: fast::pow_integer's chain entered by a jump), bit for bit (NaN
+/// mask set (each_visible_light: fast::detail::pow_integer's chain entered by a jump), bit for bit (NaN
 /// included: the bytes), for n = 1 to 64 and odd n (which both calls shade alike); and the
 /// specular term present at some points, so that the power is compared at all. The lights have
 /// no ambient term: a call without masks adds the sum of those once per call, a masked one per

@@ -100,7 +100,7 @@ constexpr features spot_exact{.scene_ambient = false, .light_ambient = true, .li
 
 } // namespace
 
-// Issue 15 item 2. Before the clamp in math_traits<xsimd::batch>::exp, the double cases reported
+// Issue 15 item 2. Before the clamp in phong::detail::math_traits<xsimd::batch>::exp, the double cases reported
 // "runtime error: -6.7e+28 is outside the range of representable values of type 'long'" in
 // xsimd's exp (asan preset).
 TEST_CASE("shade_batch: shininess 1e30 (double) and 1e38 (float) in the stable mode are UBSan-clean and exact")
@@ -193,10 +193,10 @@ TEST_CASE("shade_batch: spot exponents 1e300 (double) and 3e38 (float) are UBSan
 }
 
 #if PHONG_HAS_XSIMD
-TEST_CASE_TEMPLATE("math_traits<simd_batch>: exp, pow and pow_one_minus across the whole range", T, float, double)
+TEST_CASE_TEMPLATE("phong::detail::math_traits<simd_batch>: exp, pow and pow_one_minus across the whole range", T, float, double)
 {
     using V = simd_batch<T>;
-    using M = math_traits<V>;
+    using M = phong::detail::math_traits<V>;
     constexpr T inf = std::numeric_limits<T>::infinity(), big = std::numeric_limits<T>::max();
     const auto lane0 = [](const V& v) {
         alignas(64) T out[batch_width<T>];
@@ -274,7 +274,7 @@ template <class T> struct grid {
     soa3<T> normals() { return {column(3), column(4), column(5)}; }
 };
 
-template <class T> const light<T> one_light[1] = {light<T>::seed000({T(1), T(2), T(3), T(1)}, vec3<T>(T(1)))};
+template <class T> const light<T> one_light[1] = {light<T>::with_strength({T(1), T(2), T(3), T(1)}, vec3<T>(T(1)))};
 constexpr features plain{};
 
 } // namespace

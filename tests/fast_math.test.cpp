@@ -105,19 +105,19 @@ TEST_CASE_TEMPLATE("fast::pow_unit: the edges are exact", T, float, double)
     static_assert(pow_unit(T(1), T(3)) == T(1) && pow_unit(T(0), T(0)) == T(1)); // constexpr for scalars
 }
 
-/// fast::pow_integer for every n in [0, 64] over pow_bases, scalars and lanes: within (n - 1) u
+/// fast::detail::pow_integer for every n in [0, 64] over pow_bases, scalars and lanes: within (n - 1) u
 /// (the derivation beside pow_integer_max_rel; u = T's unit roundoff) where x^n >= T's smallest
 /// normal number, and pow_integer_max_rel overall; below, within 2^-126 absolute (float; double's
 /// smallest normal in double).
-TEST_CASE_TEMPLATE("fast::pow_integer: within (n - 1) u of x^n for n in [0, 64], edges exact", T, float, double)
+TEST_CASE_TEMPLATE("fast::detail::pow_integer: within (n - 1) u of x^n for n in [0, 64], edges exact", T, float, double)
 {
-    using phong::fast::pow_integer;
+    using phong::fast::detail::pow_integer;
     const W u = W(std::numeric_limits<T>::epsilon()) / 2;
     const W tiny = W(std::numeric_limits<T>::min());
     const std::vector<T> xs = pow_bases<T>();
     double worst = 0, worst_abs = 0;
     bool within_each = true, finite = true;
-    for (unsigned n = 0; n <= phong::fast::pow_integer_max_exponent; ++n) {
+    for (unsigned n = 0; n <= phong::fast::detail::pow_integer_max_exponent; ++n) {
         const W allowed = n == 0 ? W(0) : W(n - 1) * u * W(1.0001); // second-order terms: (n u)^2
         for (T x : xs) {
             const T got = pow_integer(x, n);
@@ -132,11 +132,11 @@ TEST_CASE_TEMPLATE("fast::pow_integer: within (n - 1) u of x^n for n in [0, 64],
             }
         }
     }
-    MESSAGE("fast::pow_integer, scalar: max relative error ", worst, " (bound ", phong::fast::pow_integer_max_rel<T>, "), max absolute ", worst_abs, " below the smallest normal");
+    MESSAGE("fast::detail::pow_integer, scalar: max relative error ", worst, " (bound ", phong::fast::detail::pow_integer_max_rel<T>, "), max absolute ", worst_abs, " below the smallest normal");
     CHECK(finite);
     CHECK(within_each);
-    CHECK(worst <= phong::fast::pow_integer_max_rel<T>);
-    CHECK(phong::fast::pow_integer_max_rel<T> <= phong::fast::pow_unit_max_rel);
+    CHECK(worst <= phong::fast::detail::pow_integer_max_rel<T>);
+    CHECK(phong::fast::detail::pow_integer_max_rel<T> <= phong::fast::pow_unit_max_rel);
     CHECK(worst_abs <= double(tiny));
     CHECK(pow_integer(T(0), 0u) == T(1)); // pow(0, 0) = 1
     CHECK(pow_integer(T(0), 1u) == T(0));
@@ -210,22 +210,22 @@ TEST_CASE_TEMPLATE("fast::rsqrt on SIMD lanes: within rsqrt_max_rel, edges", T, 
 }
 #endif
 
-/// fast::reciprocal_normal over [1, 2) densely (the estimate's error repeats every binade), and at
+/// fast::detail::reciprocal_normal over [1, 2) densely (the estimate's error repeats every binade), and at
 /// the ends of the normal range: within reciprocal_max_rel of 1/x (long double), scalars (1/x
 /// itself) and SIMD lanes (AVX-512 rcp14, AVX2 rcp + one Newton step; the derivation beside the
 /// constant gives 1.06 u and 3.3 u).
-TEST_CASE_TEMPLATE("fast::reciprocal_normal: within reciprocal_max_rel of 1/x, scalars and lanes", T, float, double)
+TEST_CASE_TEMPLATE("fast::detail::reciprocal_normal: within reciprocal_max_rel of 1/x, scalars and lanes", T, float, double)
 {
     const T ends[] = {std::numeric_limits<T>::min(), T(1e-30), T(3e7), std::numeric_limits<T>::max() / T(4)};
     double worst = 0;
     for (int i = 0; i < (1 << 16); ++i) {
         const T x = T(1) + T(i) / T(1 << 16);
-        worst = std::max(worst, double(std::fabs(W(phong::fast::reciprocal_normal(x)) * W(x) - 1)));
+        worst = std::max(worst, double(std::fabs(W(phong::fast::detail::reciprocal_normal(x)) * W(x) - 1)));
     }
-    for (T x : ends) worst = std::max(worst, double(std::fabs(W(phong::fast::reciprocal_normal(x)) * W(x) - 1)));
-    static_assert(phong::fast::reciprocal_normal(4.0f) == 0.25f && phong::fast::reciprocal_normal(0.5) == 2.0); // constexpr for scalars
-    MESSAGE("fast::reciprocal_normal, scalar: max relative error ", worst);
-    CHECK(worst <= phong::fast::reciprocal_max_rel<T>);
+    for (T x : ends) worst = std::max(worst, double(std::fabs(W(phong::fast::detail::reciprocal_normal(x)) * W(x) - 1)));
+    static_assert(phong::fast::detail::reciprocal_normal(4.0f) == 0.25f && phong::fast::detail::reciprocal_normal(0.5) == 2.0); // constexpr for scalars
+    MESSAGE("fast::detail::reciprocal_normal, scalar: max relative error ", worst);
+    CHECK(worst <= phong::fast::detail::reciprocal_max_rel<T>);
 #if PHONG_HAS_XSIMD
     using V = phong::simd_batch<T>;
     constexpr std::size_t n = V::size;
@@ -235,20 +235,20 @@ TEST_CASE_TEMPLATE("fast::reciprocal_normal: within reciprocal_max_rel of 1/x, s
     for (int i = 0; i < steps; i += int(n)) {
         for (std::size_t k = 0; k < n; ++k) in[k] = T(1) + T(i + int(k)) / T(steps); // [1, 2)
         if (i == 0) for (std::size_t k = 0; k < 4 && k < n; ++k) in[k] = ends[k];
-        phong::fast::reciprocal_normal(V::load_unaligned(in)).store_unaligned(out);
+        phong::fast::detail::reciprocal_normal(V::load_unaligned(in)).store_unaligned(out);
         for (std::size_t k = 0; k < n; ++k) worst_lanes = std::max(worst_lanes, double(std::fabs(W(out[k]) * W(in[k]) - 1)));
     }
-    MESSAGE("fast::reciprocal_normal, ", n, " lanes: max relative error ", worst_lanes);
-    CHECK(worst_lanes <= phong::fast::reciprocal_max_rel<T>);
+    MESSAGE("fast::detail::reciprocal_normal, ", n, " lanes: max relative error ", worst_lanes);
+    CHECK(worst_lanes <= phong::fast::detail::reciprocal_max_rel<T>);
 #endif
 }
 
 /// plan_pow_integer: the schedule written out by hand for a few n (n = 2^k: a chain of k
 /// squarings; 45 = 101101b: 5 squarings, multiplications after the 2nd, 4th and 5th, the bits
 /// 01101 below the top one), and pow_integer(x, plan) the same bits as pow_integer(x, n).
-TEST_CASE("fast::plan_pow_integer: the schedule of n's bits")
+TEST_CASE("fast::detail::plan_pow_integer: the schedule of n's bits")
 {
-    using phong::fast::plan_pow_integer;
+    using phong::fast::detail::plan_pow_integer;
     CHECK(plan_pow_integer(0).chain == 0u);
     CHECK(plan_pow_integer(1).chain == 1u);
     CHECK(plan_pow_integer(1).squarings == 0u);
@@ -260,7 +260,7 @@ TEST_CASE("fast::plan_pow_integer: the schedule of n's bits")
     CHECK(plan_pow_integer(45).squarings == 5u);
     CHECK(plan_pow_integer(45).multiplies == 13u);
     CHECK(plan_pow_integer(3).multiplies == 1u);
-    CHECK(phong::fast::pow_integer(0.5f, plan_pow_integer(45)) == std::ldexp(1.0f, -45)); // powers of two: exact
-    CHECK(phong::fast::pow_integer(3.0f, plan_pow_integer(5)) == 243.0f); // 3^5, exact in float
-    static_assert(plan_pow_integer(16).chain == 5u && phong::fast::pow_integer(2.0, plan_pow_integer(10)) == 1024.0); // constexpr
+    CHECK(phong::fast::detail::pow_integer(0.5f, plan_pow_integer(45)) == std::ldexp(1.0f, -45)); // powers of two: exact
+    CHECK(phong::fast::detail::pow_integer(3.0f, plan_pow_integer(5)) == 243.0f); // 3^5, exact in float
+    static_assert(plan_pow_integer(16).chain == 5u && phong::fast::detail::pow_integer(2.0, plan_pow_integer(10)) == 1024.0); // constexpr
 }

@@ -43,7 +43,7 @@ TEST_CASE_TEMPLATE("fast::pow_unit in a loop of bases near 1 with constant expon
 }
 
 #if PHONG_HAS_XSIMD
-// The exact mode's float lanes' power (detail/simd/lanes_power.hpp, through math_traits), bases and
+// The exact mode's float lanes' power (detail/simd/lanes_power.hpp, through phong::detail::math_traits), bases and
 // exponents varying per lane, against long double's pow within its documented bound
 // (pow_unit_lanes_error(m log2 x), relative, where x^m >= 2^-126).
 TEST_CASE("float lanes' pow_unit in a loop: within pow_unit_lanes_error")
@@ -57,7 +57,7 @@ TEST_CASE("float lanes' pow_unit in a loop: within pow_unit_lanes_error")
             xs[j] = float(1.0 - double(i * n + j) * (0.8 / (4000.0 * n)));
             ms[j] = float(1 + (i % 50) * int(j % 4));
         }
-        phong::math_traits<V>::pow_unit(V::load_unaligned(xs.data()), V::load_unaligned(ms.data())).store_unaligned(out.data());
+        phong::detail::math_traits<V>::pow_unit(V::load_unaligned(xs.data()), V::load_unaligned(ms.data())).store_unaligned(out.data());
         for (std::size_t j = 0; j < n; ++j) {
             const long double r = std::pow(static_cast<long double>(xs[j]), static_cast<long double>(ms[j]));
             if (r < 0x1p-126L) continue;
@@ -74,7 +74,7 @@ TEST_CASE("float lanes' pow_unit in a loop: within pow_unit_lanes_error")
 TEST_CASE("double lanes' exp, log, log1p and pow_unit in a loop: within a few ulp")
 {
     using V = xsimd::batch<double>;
-    using M = phong::math_traits<V>;
+    using M = phong::detail::math_traits<V>;
     constexpr std::size_t n = V::size;
     constexpr double eps = 0x1p-52;
     double worst[4] = {0, 0, 0, 0}; // error / tolerance: exp, log, log1p, pow_unit

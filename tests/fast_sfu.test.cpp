@@ -27,12 +27,12 @@ float worst_float(long double exact, long double error, int side)
 float emulated_pow_unit(float x, float m, int a, int b)
 {
     const long double lx = std::log2(static_cast<long double>(x));
-    const float lg2 = worst_float(lx, phong::fast::sfu_log2_abs * std::max(1.0L, std::fabs(lx)), a);
+    const float lg2 = worst_float(lx, phong::fast::detail::sfu_log2_abs * std::max(1.0L, std::fabs(lx)), a);
     volatile float product = m * lg2; // one float rounding, never contracted or kept wider
     const float y = std::min(static_cast<float>(product), 0.0f);
     const long double e = std::exp2(static_cast<long double>(y));
     if (e < 0x1p-126L) return 0.0f; // below float's normal range: flushed (-ftz), or subnormal within 2^-149
-    return worst_float(e, phong::fast::sfu_exp2_rel * e, b);
+    return worst_float(e, phong::fast::detail::sfu_exp2_rel * e, b);
 }
 
 struct worst {

@@ -321,9 +321,9 @@ template <class T> struct phong::light_traits<colour_only_light<T>> {
     static const vec3<T>& specular(const colour_only_light<T>& L) { return L.colour; }
 };
 
-static_assert(incident_light_source<colour_only_light<float>> && !light_source<colour_only_light<float>>,
+static_assert(phong::detail::incident_light_source<colour_only_light<float>> && !light_source<colour_only_light<float>>,
               "a light_traits without position is a light for shade_incident only");
-static_assert(std::is_same_v<light_scalar_t<colour_only_light<double>>, double>);
+static_assert(std::is_same_v<phong::detail::light_scalar_t<colour_only_light<double>>, double>);
 
 TEST_CASE_TEMPLATE("shade_incident: a light_traits without position, the same bits as light<T> with that colour", T, float, double)
 {

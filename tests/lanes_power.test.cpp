@@ -1,5 +1,5 @@
 // The float SIMD power of shade_batch's exact mode (include/phong/ext/simd/lanes_power.hpp, through
-// math_traits<simd_batch<float>>::pow_unit) against pow in the wide reference type (support/wide.hpp:
+// phong::detail::math_traits<simd_batch<float>>::pow_unit) against pow in the wide reference type (support/wide.hpp:
 // __float128 with g++, long double with clang++), on inputs its derivation did not pick: seeded
 // log-uniform bases over the whole normal range, bases within a few ulp of 1, subnormal bases,
 // exponents from 0 to 1e30. Checks the documented bound (detail::lanes::pow_unit_lanes_error) where
@@ -35,7 +35,7 @@ template <class Kernel> float on_lanes(Kernel kernel, float x, float m)
 /// pow_unit on one lane value (the others: copies), read back.
 float lanes_pow(float x, float m)
 {
-    return on_lanes([](const V& a, const V& b) { return phong::math_traits<V>::pow_unit(a, b); }, x, m);
+    return on_lanes([](const V& a, const V& b) { return phong::detail::math_traits<V>::pow_unit(a, b); }, x, m);
 }
 
 struct worst_case {
@@ -105,10 +105,10 @@ TEST_CASE("shade_batch's float power: within its documented bound on seeded base
     CHECK(worst.ratio > 0.05); // the bound is not vacuous by orders of magnitude
 }
 
-/// (1 - x)^m through math_traits<V>::pow_one_minus (the stable mode's power), one lane value.
+/// (1 - x)^m through phong::detail::math_traits<V>::pow_one_minus (the stable mode's power), one lane value.
 float lanes_pow_one_minus(float x, float m)
 {
-    return on_lanes([](const V& a, const V& b) { return phong::math_traits<V>::pow_one_minus(a, b); }, x, m);
+    return on_lanes([](const V& a, const V& b) { return phong::detail::math_traits<V>::pow_one_minus(a, b); }, x, m);
 }
 
 /// Checks (1 - x)^m against the wide reference on the exact 1 - x; returns error / bound.
@@ -205,7 +205,7 @@ TEST_CASE("shade_batch's float power: edges")
 TEST_CASE("shade_batch's float power without its select: the same bits where the power is kept")
 {
     const auto positive = [](float x, float m) {
-        return on_lanes([](const V& a, const V& b) { return phong::math_traits<V>::pow_unit_positive(a, b); }, x, m);
+        return on_lanes([](const V& a, const V& b) { return phong::detail::math_traits<V>::pow_unit_positive(a, b); }, x, m);
     };
     std::mt19937 rng(20261124);
     std::uniform_real_distribution<float> exponent(-40.0f, 0.0f);

@@ -42,7 +42,7 @@ wide wlog1p(wide x)
 TEST_CASE_TEMPLATE("math: special values at run time and in the constant-evaluation kernels", T, float, double)
 {
     // sqrt: sqrt(-0) = -0, x < 0 gives NaN, inf stays inf.
-    for (auto f : {+[](T x) { return phong::sqrt(x); }, +[](T x) { return ce_sqrt(x); }}) {
+    for (auto f : {+[](T x) { return phong::detail::sqrt(x); }, +[](T x) { return ce_sqrt(x); }}) {
         CHECK(f(T(0)) == T(0));
         CHECK(std::signbit(f(T(-0.0))));
         CHECK(std::isnan(f(T(-1))));
@@ -52,7 +52,7 @@ TEST_CASE_TEMPLATE("math: special values at run time and in the constant-evaluat
         CHECK(f(T(0.25)) == T(0.5));
     }
     // exp: overflow to inf, underflow to 0, exp(0) = 1.
-    for (auto f : {+[](T x) { return phong::exp(x); }, +[](T x) { return ce_exp(x); }}) {
+    for (auto f : {+[](T x) { return phong::detail::exp(x); }, +[](T x) { return ce_exp(x); }}) {
         CHECK(f(T(0)) == T(1));
         CHECK(f(T(1000)) == pinf<T>);
         CHECK(f(T(-1000)) == T(0));
@@ -61,7 +61,7 @@ TEST_CASE_TEMPLATE("math: special values at run time and in the constant-evaluat
         CHECK(std::isnan(f(qnan<T>)));
     }
     // log: log(0) = -inf, x < 0 NaN, log(1) = 0, log(inf) = inf.
-    for (auto f : {+[](T x) { return phong::log(x); }, +[](T x) { return ce_log(x); }}) {
+    for (auto f : {+[](T x) { return phong::detail::log(x); }, +[](T x) { return ce_log(x); }}) {
         CHECK(f(T(1)) == T(0));
         CHECK(f(T(0)) == -pinf<T>);
         CHECK(std::isnan(f(T(-1))));
@@ -69,7 +69,7 @@ TEST_CASE_TEMPLATE("math: special values at run time and in the constant-evaluat
         CHECK(std::isnan(f(qnan<T>)));
     }
     // log1p: log1p(-1) = -inf, x < -1 NaN, log1p(0) = 0.
-    for (auto f : {+[](T x) { return phong::log1p(x); }, +[](T x) { return ce_log1p(x); }}) {
+    for (auto f : {+[](T x) { return phong::detail::log1p(x); }, +[](T x) { return ce_log1p(x); }}) {
         CHECK(f(T(0)) == T(0));
         CHECK(f(T(-1)) == -pinf<T>);
         CHECK(std::isnan(f(T(-2))));
@@ -77,7 +77,7 @@ TEST_CASE_TEMPLATE("math: special values at run time and in the constant-evaluat
         CHECK(std::isnan(f(qnan<T>)));
     }
     // pow: IEEE rules the lighting model relies on (pow(0, 0) = 1 at m = 0).
-    for (auto f : {+[](T x, T y) { return phong::pow(x, y); }, +[](T x, T y) { return ce_pow(x, y); }}) {
+    for (auto f : {+[](T x, T y) { return phong::detail::pow(x, y); }, +[](T x, T y) { return ce_pow(x, y); }}) {
         CHECK(f(T(0), T(0)) == T(1));
         CHECK(f(T(0), T(2.5)) == T(0));
         CHECK(f(T(0), T(-1)) == pinf<T>);
@@ -92,13 +92,13 @@ TEST_CASE_TEMPLATE("math: special values at run time and in the constant-evaluat
 
 TEST_CASE_TEMPLATE("math: pow<N> by repeated squaring", T, float, double)
 {
-    CHECK(phong::pow<0>(qnan<T>) == T(1)); // documented: pow<0>(x) = 1 for every x
-    CHECK(phong::pow<0>(T(0)) == T(1));
-    CHECK(phong::pow<1>(T(0.3)) == T(0.3));
-    CHECK(phong::pow<2>(T(3)) == T(9));
-    CHECK(phong::pow<5>(T(2)) == T(32));
-    CHECK(phong::pow<10>(T(1.5)) == T(59049.0 / 1024.0)); // 3^10 / 2^10, exact in float
-    CHECK(phong::pow<7>(T(-2)) == T(-128));
+    CHECK(phong::detail::pow<0>(qnan<T>) == T(1)); // documented: pow<0>(x) = 1 for every x
+    CHECK(phong::detail::pow<0>(T(0)) == T(1));
+    CHECK(phong::detail::pow<1>(T(0.3)) == T(0.3));
+    CHECK(phong::detail::pow<2>(T(3)) == T(9));
+    CHECK(phong::detail::pow<5>(T(2)) == T(32));
+    CHECK(phong::detail::pow<10>(T(1.5)) == T(59049.0 / 1024.0)); // 3^10 / 2^10, exact in float
+    CHECK(phong::detail::pow<7>(T(-2)) == T(-128));
     // Accuracy against the wide reference. Each squaring doubles the relative error already
     // present, so the rounding errors add up to at most (N - 1) u (u = eps / 2) relative, which
     // is at most N - 1 ulp of the result.
@@ -109,7 +109,7 @@ TEST_CASE_TEMPLATE("math: pow<N> by repeated squaring", T, float, double)
         const double bound = double(N - 1);
         for (int i = 0; i < 200; ++i) {
             const T x = T(base(rng));
-            const double err = error_ulp(phong::pow<N>(x), wpow(wide(x), wide(N)));
+            const double err = error_ulp(phong::detail::pow<N>(x), wpow(wide(x), wide(N)));
             if (!(err <= bound)) { CHECK(err <= bound); return; }
         }
         CHECK(true);
@@ -126,35 +126,35 @@ TEST_CASE_TEMPLATE("math: fma rounds once, at run time and in constant evaluatio
     // (1 + eps)(1 - eps) - 1 = -eps^2 exactly; a separately rounded product gives 0.
     constexpr T eps = std::numeric_limits<T>::epsilon();
     const T a = T(1) + eps, b = T(1) - eps;
-    CHECK(phong::fma(a, b, T(-1)) == -eps * eps);
-    constexpr T ce = phong::fma(T(1) + eps, T(1) - eps, T(-1));
+    CHECK(phong::detail::fma(a, b, T(-1)) == -eps * eps);
+    constexpr T ce = phong::detail::fma(T(1) + eps, T(1) - eps, T(-1));
     CHECK(ce == -eps * eps);
-    constexpr T plain = phong::fma(T(3), T(4), T(5));
+    constexpr T plain = phong::detail::fma(T(3), T(4), T(5));
     CHECK(plain == T(17));
 }
 
 TEST_CASE_TEMPLATE("math: abs, min, max, clamp, select and their NaN rules", T, float, double)
 {
-    CHECK(phong::abs(T(-2)) == T(2));
-    CHECK(!std::signbit(phong::abs(T(-0.0))));
-    CHECK(phong::min(T(1), T(2)) == T(1));
-    CHECK(phong::max(T(1), T(2)) == T(2));
+    CHECK(phong::detail::abs(T(-2)) == T(2));
+    CHECK(!std::signbit(phong::detail::abs(T(-0.0))));
+    CHECK(phong::detail::min(T(1), T(2)) == T(1));
+    CHECK(phong::detail::max(T(1), T(2)) == T(2));
     // Documented: a NaN first argument is returned, a NaN second argument is not.
-    CHECK(std::isnan(phong::min(qnan<T>, T(1))));
-    CHECK(std::isnan(phong::max(qnan<T>, T(1))));
-    CHECK(phong::min(T(1), qnan<T>) == T(1));
-    CHECK(phong::max(T(1), qnan<T>) == T(1));
-    CHECK(std::isnan(phong::clamp(qnan<T>, T(0), T(1))));
-    CHECK(phong::clamp(T(-3), T(0), T(1)) == T(0));
-    CHECK(phong::clamp(T(3), T(0), T(1)) == T(1));
-    CHECK(phong::clamp(T(0.5), T(0), T(1)) == T(0.5));
-    CHECK(phong::select(true, T(1), T(2)) == T(1));
-    CHECK(phong::select(false, T(1), T(2)) == T(2));
+    CHECK(std::isnan(phong::detail::min(qnan<T>, T(1))));
+    CHECK(std::isnan(phong::detail::max(qnan<T>, T(1))));
+    CHECK(phong::detail::min(T(1), qnan<T>) == T(1));
+    CHECK(phong::detail::max(T(1), qnan<T>) == T(1));
+    CHECK(std::isnan(phong::detail::clamp(qnan<T>, T(0), T(1))));
+    CHECK(phong::detail::clamp(T(-3), T(0), T(1)) == T(0));
+    CHECK(phong::detail::clamp(T(3), T(0), T(1)) == T(1));
+    CHECK(phong::detail::clamp(T(0.5), T(0), T(1)) == T(0.5));
+    CHECK(phong::detail::select(true, T(1), T(2)) == T(1));
+    CHECK(phong::detail::select(false, T(1), T(2)) == T(2));
 }
 
 TEST_CASE_TEMPLATE("math: inverse_pow2_scale brings |x| into 1..2 with a power of two", T, float, double)
 {
-    using traits = phong::math_traits<T>;
+    using traits = phong::detail::math_traits<T>;
     auto is_pow2 = [](T s) {
         int e = 0;
         return std::frexp(s, &e) == T(0.5);
@@ -184,18 +184,18 @@ TEST_CASE_TEMPLATE("math: inverse_pow2_scale brings |x| into 1..2 with a power o
 
 TEST_CASE_TEMPLATE("math: cos_degrees", T, float, double)
 {
-    CHECK(phong::cos_degrees(T(0)) == T(1));
-    CHECK(phong::cos_degrees(T(90)) == T(0));
-    CHECK(phong::cos_degrees(T(180)) == T(-1));
+    CHECK(phong::detail::cos_degrees(T(0)) == T(1));
+    CHECK(phong::detail::cos_degrees(T(90)) == T(0));
+    CHECK(phong::detail::cos_degrees(T(180)) == T(-1));
     // cos 60 = 1/2, cos 45 = sqrt(1/2), cos 120 = -1/2, cos 30 = sqrt(3)/2: within 1 ulp.
-    CHECK(error_ulp(phong::cos_degrees(T(60)), wide(0.5)) <= 1.0);
-    CHECK(error_ulp(phong::cos_degrees(T(120)), wide(-0.5)) <= 1.0);
-    CHECK(error_ulp(phong::cos_degrees(T(45)), wsqrt(wide(0.5))) <= 1.0);
-    CHECK(error_ulp(phong::cos_degrees(T(30)), wsqrt(wide(3)) / 2) <= 1.0);
+    CHECK(error_ulp(phong::detail::cos_degrees(T(60)), wide(0.5)) <= 1.0);
+    CHECK(error_ulp(phong::detail::cos_degrees(T(120)), wide(-0.5)) <= 1.0);
+    CHECK(error_ulp(phong::detail::cos_degrees(T(45)), wsqrt(wide(0.5))) <= 1.0);
+    CHECK(error_ulp(phong::detail::cos_degrees(T(30)), wsqrt(wide(3)) / 2) <= 1.0);
     // Monotone decreasing on [0, 180].
     T previous = T(2);
     for (int d = 0; d <= 180; ++d) {
-        const T c = phong::cos_degrees(T(d));
+        const T c = phong::detail::cos_degrees(T(d));
         if (!(c < previous)) { CHECK(c < previous); break; }
         previous = c;
     }

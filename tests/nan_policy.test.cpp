@@ -33,11 +33,11 @@ template <class T> std::array<T, 3> bad_values() { return {nan_v<T>, inf_v<T>, -
 
 // Feature sets covering both evaluation modes, both specular models, every view model, alpha.
 constexpr features plain{};
-constexpr features classic = presets::seed000_classic; // eye_point, alpha, polynomial, two-sided
-constexpr features raytracer_stable = presets::with_mode(presets::seed001_raytracer, evaluation::stable);
+constexpr features classic = presets::classic_phong; // eye_point, alpha, polynomial, two-sided
+constexpr features raytracer_stable = presets::with_mode(presets::blinn_phong_per_light_ambient, evaluation::stable);
 constexpr features spot_windowed{.light_ambient = true, .specular = specular_model::blinn,
                                  .attenuation = attenuation_model::windowed, .spot = spot_model::smooth,
-                                 .two_sided = facing::flag, .view = view_model::orthographic, .emission = true,
+                                 .two_sided = facing::flag, .view = view_model::fixed_direction, .emission = true,
                                  .alpha = true, .mode = evaluation::stable};
 
 template <class T> struct scene {
@@ -50,9 +50,9 @@ template <class T> struct scene {
 
     scene()
     {
-        light<T> a = light<T>::seed000({T(2), T(3), T(1), T(1)}, glm::vec<3, T>(T(1)), {T(1), T(0.125), T(0.0625), T(50)});
+        light<T> a = light<T>::with_strength({T(2), T(3), T(1), T(1)}, glm::vec<3, T>(T(1)), {T(1), T(0.125), T(0.0625), T(50)});
         a.ambient = glm::vec<3, T>(T(0.25));
-        light<T> b = light<T>::seed000({T(0), T(1), T(1), T(0)}, glm::vec<3, T>(T(0.5)));
+        light<T> b = light<T>::with_strength({T(0), T(1), T(1), T(0)}, glm::vec<3, T>(T(0.5)));
         lights = {a, b};
     }
 };
@@ -124,7 +124,7 @@ template <class T, class Mutate, class Check> void for_each_feature_set(Mutate m
     scene<T> s;
     mutate(s);
     check(shade_scene<plain>(s), 3, "plain");
-    check(shade_scene<classic>(s), 4, "seed000_classic");
+    check(shade_scene<classic>(s), 4, "classic_phong");
     // -ffast-math: double's stable mode (twofold) refuses the build (docs/compilers.md).
     if constexpr (phong::detail::ieee::twofold_allowed<T> || sizeof(T) == 4) check(shade_scene<raytracer_stable>(s), 3, "seed001 stable");
     if constexpr (phong::detail::ieee::twofold_allowed<T> || sizeof(T) == 4) check(shade_scene<spot_windowed>(s), 4, "spot_windowed");
@@ -231,8 +231,8 @@ TEST_CASE_TEMPLATE("NaN policy: an OpenGL spot aimed at the point with a huge ex
     for (int i = 1; i <= 40; ++i) {
         for (int j = 1; j <= 40; ++j) {
             const glm::vec<3, T> d(T(i), T(j), T(3));
-            const glm::vec<3, T> l = phong::normalize(d);
-            above_one += -phong::dot(l, -l) > T(1) ? 1 : 0;
+            const glm::vec<3, T> l = phong::detail::normalize(d);
+            above_one += -phong::detail::dot(l, -l) > T(1) ? 1 : 0;
             for (T e : {T(1e4), T(1e30), std::numeric_limits<T>::max()}) {
                 INFO("d = (", i, ", ", j, ", 3), e = ", e);
                 const T spot = spot_opengl(l, glm::vec<3, T>(-l), e, T(0.5));
@@ -275,7 +275,7 @@ TEST_CASE("NaN policy: an overflowing light sum, exact against stable float")
     constexpr features exact{.scene_ambient = false, .specular = specular_model::none, .lights = light_kind::positional,
                              .attenuation = attenuation_model::polynomial};
     constexpr features stable = presets::with_mode(exact, evaluation::stable);
-    light<float> L = light<float>::seed000({0, 0, -3, 1}, glm::vec3(1e36f), {1e-3f, 0, 0, std::numeric_limits<float>::infinity()});
+    light<float> L = light<float>::with_strength({0, 0, -3, 1}, glm::vec3(1e36f), {1e-3f, 0, 0, std::numeric_limits<float>::infinity()});
     const std::array<light<float>, 1> lights{L};
     const material<float> mat{.ka = glm::vec3(0), .kd = glm::vec3(0, 0.5f, 0.5f), .ks = glm::vec3(0)};
     const glm::vec3 q(0, 0, -4), n(0, 0, 1); // the light 1 above Q: n.l = 1, f = 1 / 1e-3
@@ -435,7 +435,7 @@ static_assert(!validate(light<double>{.position = {0.0, std::numeric_limits<doub
 // A valid whole shade in constant evaluation compiles (the invalid counterpart must not: see
 // tests/nan_policy/constexpr_reject.cpp).
 static_assert([] {
-    const std::array<light<float>, 1> lights{light<float>::seed000({0, 0, 1, 0}, {1, 1, 1})};
+    const std::array<light<float>, 1> lights{light<float>::with_strength({0, 0, 1, 0}, {1, 1, 1})};
     const glm::vec3 c = shade<features{}>(glm::vec3(0, 0, -2), glm::vec3(0, 0, 1), material<float>{}, lights,
                                           environment<float>{});
     return c.x > 0.0f && c.x == c.y && c.y == c.z; // .x, not .r: GLM's unions allow only the member written

@@ -164,10 +164,10 @@ TEST_CASE_TEMPLATE("normal: face_viewer faces the viewer, keeps the length, is i
 TEST_CASE_TEMPLATE("normal: face_flag follows the caller's facing flag", T, float, double)
 {
     const vec3<T> n(T(0.25), T(-0.5), T(2));
-    CHECK(phong::face_flag(n, true) == n);
-    CHECK(phong::face_flag(n, false) == -n);
-    CHECK(phong::face_flag(phong::face_flag(n, false), false) == n);
-    CHECK(phong::face_flag(vec3<T>(0), false) == vec3<T>(0));
+    CHECK(phong::detail::face_flag(n, true) == n);
+    CHECK(phong::detail::face_flag(n, false) == -n);
+    CHECK(phong::detail::face_flag(phong::detail::face_flag(n, false), false) == n);
+    CHECK(phong::detail::face_flag(vec3<T>(0), false) == vec3<T>(0));
 }
 
 // ---- the normal matrix against finite differences ---------------------------------------------
@@ -180,7 +180,7 @@ TEST_CASE_TEMPLATE("normal: the inverse transpose carries normals to normals, ou
         const lmat3 LM = widen33(M);
         const ld cond = condition(LM);
         RC_PRE(cond < ld(200));
-        const lvec3 n = widen3(phong::transform_normal(phong::normal_matrix_inverse_transpose(M), generic_normal<T>(p)));
+        const lvec3 n = widen3(phong::transform_normal(phong::detail::normal_matrix_inverse_transpose(M), generic_normal<T>(p)));
         RC_ASSERT(std::abs(llen(n) - 1) <= tol<T>(1));
         const auto [du, dv] = world_tangents(LM, p);
         RC_ASSERT(std::abs(cos_angle(n, du)) <= tol<T>(cond));
@@ -200,7 +200,7 @@ TEST_CASE_TEMPLATE("normal: the cofactor gives the same line; it flips for mirro
         const lmat3 LM = widen33(M);
         const ld cond = condition(LM);
         RC_PRE(cond < ld(200));
-        const lvec3 n = widen3(phong::transform_normal(phong::normal_matrix_cofactor(M), generic_normal<T>(p)));
+        const lvec3 n = widen3(phong::transform_normal(phong::detail::normal_matrix_cofactor(M), generic_normal<T>(p)));
         const auto [du, dv] = world_tangents(LM, p);
         RC_ASSERT(std::abs(cos_angle(n, du)) <= tol<T>(cond));
         RC_ASSERT(std::abs(cos_angle(n, dv)) <= tol<T>(cond));
@@ -220,7 +220,7 @@ TEST_CASE_TEMPLATE("normal: seed 001's m = M m' taken literally is wrong under a
     const vec3<T> m(1, 1, 0), tangent(-1, 3, 0);
     const vec3<T> literal = M * m;
     CHECK(literal.x * tangent.x + literal.y * tangent.y + literal.z * tangent.z == T(8));
-    const vec3<T> right = phong::transform_normal(phong::normal_matrix_inverse_transpose(M), m);
+    const vec3<T> right = phong::transform_normal(phong::detail::normal_matrix_inverse_transpose(M), m);
     CHECK(std::abs(right.x * tangent.x + right.y * tangent.y + right.z * tangent.z) <= phong_test::tolerance<T>::rel(4));
     // ... and the finite-difference oracle agrees: the literal normal is off by about 37 degrees.
     const sample p{surface::sphere, 0, pi / 4, 0};
@@ -234,16 +234,16 @@ TEST_CASE_TEMPLATE("normal: singular maps keep a finite normal (cofactor)", T, f
 {
     // diag(1, 1, 0) squashes the sphere to the unit disk in z = 0: its normal is +-z.
     const mat3<T> flat(vec3<T>(1, 0, 0), vec3<T>(0, 1, 0), vec3<T>(0, 0, 0));
-    const mat3<T> cof = phong::normal_matrix_cofactor(flat);
+    const mat3<T> cof = phong::detail::normal_matrix_cofactor(flat);
     CHECK(cof == mat3<T>(vec3<T>(0), vec3<T>(0), vec3<T>(0, 0, 1))); // diag(bc, ca, ab) = diag(0, 0, 1)
-    CHECK(phong::normal_matrix_inverse_transpose(flat) == cof);      // det = 0: the cofactor
+    CHECK(phong::detail::normal_matrix_inverse_transpose(flat) == cof);      // det = 0: the cofactor
     const vec3<T> n = phong::transform_normal(cof, vec3<T>(T(0.6), T(0), T(0.8)));
     CHECK(n == vec3<T>(0, 0, 1));
     // Where the surface collapses to a curve (the disk's rim, p'.z = 0) there is no normal: 0.
     CHECK(phong::transform_normal(cof, vec3<T>(1, 0, 0)) == vec3<T>(0));
     // A rank-1 map: every cofactor is 0.
     const mat3<T> line(vec3<T>(1, 2, 3), vec3<T>(2, 4, 6), vec3<T>(0));
-    CHECK(phong::normal_matrix_cofactor(line) == mat3<T>(T(0)));
+    CHECK(phong::detail::normal_matrix_cofactor(line) == mat3<T>(T(0)));
 }
 
 TEST_CASE_TEMPLATE("normal: a determinant whose inverse overflows gives a finite, oriented normal", T, float, double)
@@ -254,7 +254,7 @@ TEST_CASE_TEMPLATE("normal: a determinant whose inverse overflows gives a finite
     REQUIRE(std::isinf(T(1) / (tiny * tiny)));
     for (const T sign : {T(1), T(-1)}) {
         const mat3<T> M(vec3<T>(sign * tiny, 0, 0), vec3<T>(0, tiny, 0), vec3<T>(0, 0, 1));
-        const mat3<T> N = phong::normal_matrix_inverse_transpose(M);
+        const mat3<T> N = phong::detail::normal_matrix_inverse_transpose(M);
         for (int c = 0; c < 3; ++c)
             for (int r = 0; r < 3; ++r) CHECK(std::isfinite(N[c][r]));
         // (M^{-1})^T = diag(sign / tiny, 1 / tiny, 1): the x axis keeps the direction sign * x.
@@ -304,9 +304,9 @@ TEST_CASE("normal: constant evaluation")
 {
     // diag(2, 4, 8): (M^{-1})^T = diag(1/2, 1/4, 1/8) exactly; cof = diag(32, 16, 8).
     constexpr glm::dmat3 M(glm::dvec3(2, 0, 0), glm::dvec3(0, 4, 0), glm::dvec3(0, 0, 8));
-    constexpr glm::dmat3 N = phong::normal_matrix_inverse_transpose(M);
+    constexpr glm::dmat3 N = phong::detail::normal_matrix_inverse_transpose(M);
     static_assert(N[0] == glm::dvec3(0.5, 0, 0) && N[1] == glm::dvec3(0, 0.25, 0) && N[2] == glm::dvec3(0, 0, 0.125));
-    constexpr glm::dmat3 C = phong::normal_matrix_cofactor(M);
+    constexpr glm::dmat3 C = phong::detail::normal_matrix_cofactor(M);
     static_assert(C[0] == glm::dvec3(32, 0, 0) && C[1] == glm::dvec3(0, 16, 0) && C[2] == glm::dvec3(0, 0, 8));
     static_assert(phong::transform_normal(M, glm::dvec3(0, 0, 3)) == glm::dvec3(0, 0, 1));
     static_assert(phong::face_viewer(glm::dvec3(0, 0, 1), glm::dvec3(0, 0, -1)) == glm::dvec3(0, 0, -1));

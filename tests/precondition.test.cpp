@@ -24,7 +24,7 @@ std::vector<call> calls;
 void record(const char* message, const char* file, int line) { calls.push_back({message, file, line}); }
 void other(const char*, const char*, int) {}
 
-const std::array<light<float>, 1> one_light{light<float>::seed000({0, 0, 1, 0}, {1, 1, 1})};
+const std::array<light<float>, 1> one_light{light<float>::with_strength({0, 0, 1, 0}, {1, 1, 1})};
 
 /// A renderer's own light type (one colour, a point light), read through light_traits.
 struct point_light {
@@ -134,7 +134,7 @@ TEST_CASE("fewer weights or incidents than lights: reported in debug builds, nev
 {
     calls.clear();
     const precondition_handler previous = set_precondition_handler(&record);
-    const std::array<light<float>, 2> two{one_light[0], light<float>::seed000({1, 0, 1, 0}, {0.5f, 0.25f, 1})};
+    const std::array<light<float>, 2> two{one_light[0], light<float>::with_strength({1, 0, 1, 0}, {0.5f, 0.25f, 1})};
     const std::array<float, 2> weights{0.5f, 0.75f};
     const glm::vec3 p(0, 0, -2), n(0, 0, 1);
     const std::array<light<float>, 0> none{};

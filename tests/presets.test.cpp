@@ -1,10 +1,10 @@
 // The seed presets of features.hpp against their seeds' formulas, written out literally in
 // tests/support/seeds.hpp (plain GLM, std::pow, long double), on random inputs:
-//   seed000_classic   ~ seeds::seed000 (perspective and orthographic ec_lds, oblique included)
-//   seed001_raytracer ~ seeds::seed001 (steps 1-18)
-//   seed003_ads       ~ seeds::phong_vert   (through shade_vertex, ModelView and NormalMatrix)
-//   seed003_diffuse   ~ seeds::diffuse_vert
-// The documented deviations of seed000_classic (dot products clamped at 0, no gate) are part of
+//   classic_phong   ~ seeds::seed000 (perspective and orthographic ec_lds, oblique included)
+//   blinn_phong_per_light_ambient ~ seeds::seed001 (steps 1-18)
+//   glsl_ads       ~ seeds::phong_vert   (through shade_vertex, ModelView and NormalMatrix)
+//   diffuse_only   ~ seeds::diffuse_vert
+// The documented deviations of classic_phong (dot products clamped at 0, no gate) are part of
 // seeds::seed000 as written there. Seeds 000 and 001 are checked in both evaluation modes.
 #include "support/generators.hpp"
 #include "support/numeric.hpp"
@@ -93,9 +93,9 @@ template <class T> mat4<T> random_projection(scene_gen<T>& g, bool& perspective)
 }
 } // namespace
 
-TEST_CASE_TEMPLATE("presets: seed000_classic equals seed 000's formula", T, float, double)
+TEST_CASE_TEMPLATE("presets: classic_phong equals seed 000's formula", T, float, double)
 {
-    constexpr phong::features F = phong::presets::seed000_classic;
+    constexpr phong::features F = phong::presets::classic_phong;
     scene_gen<T> g(2000);
     double worst = 0, worst_eps = 0;
     int tested = 0, orthographic = 0;
@@ -132,15 +132,15 @@ TEST_CASE_TEMPLATE("presets: seed000_classic equals seed 000's formula", T, floa
         ++tested;
         orthographic += !perspective;
     }
-    MESSAGE("seed000_classic vs seed 000: " << tested << " scenes (" << orthographic << " orthographic), worst " << worst_eps << " eps");
+    MESSAGE("classic_phong vs seed 000: " << tested << " scenes (" << orthographic << " orthographic), worst " << worst_eps << " eps");
     CHECK(tested >= 300);
     CHECK(orthographic >= 100);
     CHECK(worst <= 1.0);
 }
 
-TEST_CASE_TEMPLATE("presets: seed001_raytracer equals seed 001's steps 1-18", T, float, double)
+TEST_CASE_TEMPLATE("presets: blinn_phong_per_light_ambient equals seed 001's steps 1-18", T, float, double)
 {
-    constexpr phong::features F = phong::presets::seed001_raytracer;
+    constexpr phong::features F = phong::presets::blinn_phong_per_light_ambient;
     scene_gen<T> g(2001);
     double worst = 0, worst_eps = 0;
     int tested = 0;
@@ -179,15 +179,15 @@ TEST_CASE_TEMPLATE("presets: seed001_raytracer equals seed 001's steps 1-18", T,
         worst_eps = std::max(worst_eps, e);
         ++tested;
     }
-    MESSAGE("seed001_raytracer vs seed 001: " << tested << " hit points, worst " << worst_eps << " eps");
+    MESSAGE("blinn_phong_per_light_ambient vs seed 001: " << tested << " hit points, worst " << worst_eps << " eps");
     CHECK(tested >= 350);
     CHECK(worst <= 1.0);
 }
 
-TEST_CASE_TEMPLATE("presets: seed003_ads and seed003_diffuse equal phong.vert and diffuse.vert", T, float, double)
+TEST_CASE_TEMPLATE("presets: glsl_ads and diffuse_only equal phong.vert and diffuse.vert", T, float, double)
 {
-    constexpr phong::features ads = phong::presets::seed003_ads;
-    constexpr phong::features diffuse = phong::presets::seed003_diffuse;
+    constexpr phong::features ads = phong::presets::glsl_ads;
+    constexpr phong::features diffuse = phong::presets::diffuse_only;
     scene_gen<T> g(2003);
     double worst_ads = 0, worst_diffuse = 0, worst_eps = 0;
     int tested = 0;

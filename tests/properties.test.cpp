@@ -63,7 +63,7 @@ constexpr features rich{.scene_ambient = true, .light_ambient = true, .diffuse =
                         .specular = phong::specular_model::blinn, .specular_gate = true,
                         .lights = phong::light_kind::any, .attenuation = phong::attenuation_model::polynomial,
                         .spot = phong::spot_model::none, .attenuate_ambient = true,
-                        .two_sided = phong::facing::view, .view = phong::view_model::perspective,
+                        .two_sided = phong::facing::view, .view = phong::view_model::eye_at_origin,
                         .emission = true, .alpha = false, .mode = evaluation::stable};
 constexpr features classic{}; // seed 000's defaults, exact
 
@@ -189,12 +189,12 @@ TEST_CASE_TEMPLATE("properties: a light behind the surface gives no diffuse and 
             const vec3<T> Q = gen_point<T>(), n = gen_normal<T>();
             // The light behind the tangent plane: toward it d = -a n + t, t = n x u along the plane.
             const T a = *grid<T>(1, 64, T(0.25));
-            const vec3<T> d = -a * n + phong::cross(n, *gen_vec3<T>(-8, 8, T(0.5)));
+            const vec3<T> d = -a * n + phong::detail::cross(n, *gen_vec3<T>(-8, 8, T(0.5)));
             phong::light<T> L = *gen_light<T>(false);
             L.position = *rc::gen::arbitrary<bool>() ? vec4<T>(Q + d, T(1)) : vec4<T>(d, T(0));
             // Strictly behind (n.d < 0, with a margin so that rounding cannot move it across).
             const vec3<T> dd = vec3<T>(L.position) - Q * L.position.w;
-            RC_PRE(double(phong::dot(n, dd)) < -1e-3 * double(phong::length(n)) * double(phong::length(dd)));
+            RC_PRE(double(phong::detail::dot(n, dd)) < -1e-3 * double(phong::detail::length(n)) * double(phong::detail::length(dd)));
             const phong::material<T> mat = *gen_material<T>(128);
             phong::environment<T> env;
             const vec3<T> c = phong::shade<F>(Q, n, mat, std::vector<phong::light<T>>{L}, env);
@@ -215,14 +215,14 @@ TEST_CASE_TEMPLATE("properties: reflect keeps length and is an involution", T, f
 {
     check_property("|reflect(i, n)| = |i| and reflect(reflect(i, n), n) = i for unit n", [] {
         const vec3<T> i = *gen_vec3<T>(-64, 64, T(1) / T(16));
-        const vec3<T> n = phong::normalize(*gen_nonzero_vec3<T>(-16, 16, T(0.25)));
+        const vec3<T> n = phong::detail::normalize(*gen_nonzero_vec3<T>(-16, 16, T(0.25)));
         const vec3<T> r = phong::reflect(i, n);
-        const T len = phong::length(i);
+        const T len = phong::detail::length(i);
         // A few roundings in dot(n, i) n, relative to |i|; n itself is unit within ~1 eps.
-        RC_ASSERT(std::abs(phong::length(r) - len) <= T(8) * eps<T> * len);
+        RC_ASSERT(std::abs(phong::detail::length(r) - len) <= T(8) * eps<T> * len);
         RC_ASSERT(near(phong::reflect(r, n), i, 16, len));
         // The mirror image: the component along n flips, the rest stays.
-        RC_ASSERT(std::abs(phong::dot(r, n) + phong::dot(i, n)) <= T(8) * eps<T> * len);
+        RC_ASSERT(std::abs(phong::detail::dot(r, n) + phong::detail::dot(i, n)) <= T(8) * eps<T> * len);
     });
 }
 
@@ -232,9 +232,9 @@ TEST_CASE_TEMPLATE("properties: pow_unit is a power, x^(a+b) = x^a x^b, in [0, 1
         const T x = T(*rc::gen::inRange(1, 257)) / T(256); // (0, 1] on a grid
         const T a = T(*rc::gen::inRange(0, 513)) / T(8);   // [0, 64]
         const T b = T(*rc::gen::inRange(0, 513)) / T(8);
-        const T xa = phong::pow_unit(x, a), xb = phong::pow_unit(x, b), xab = phong::pow_unit(x, a + b);
+        const T xa = phong::detail::pow_unit(x, a), xb = phong::detail::pow_unit(x, b), xab = phong::detail::pow_unit(x, a + b);
         for (const T r : {xa, xb, xab}) RC_ASSERT(r >= T(0) && r <= T(1));
-        RC_ASSERT(phong::pow_unit(x, T(0)) == T(1)); // x^0 = 1, 0^0 included
+        RC_ASSERT(phong::detail::pow_unit(x, T(0)) == T(1)); // x^0 = 1, 0^0 included
         // Each result within its documented bound, the product rounded once more: a relative
         // tolerance of a few ulp (float: 1 ulp each) or 3 (|y| + m + 4) 2^-53 each (double).
         const double y = double(a + b) * std::abs(std::log2(double(x)));
@@ -252,7 +252,7 @@ TEST_CASE_TEMPLATE("properties: a directional light is the limit of a far positi
             constexpr features F = decltype(f_constant)::value;
             const vec3<T> Q = gen_point<T>(), n = gen_normal<T>();
             phong::material<T> mat = *gen_material<T>(32);
-            const vec3<T> dir = phong::normalize(*gen_nonzero_vec3<T>(-8, 8, T(0.25)));
+            const vec3<T> dir = phong::detail::normalize(*gen_nonzero_vec3<T>(-8, 8, T(0.25)));
             phong::light<T> directional = *gen_light<T>(true);
             directional.position = vec4<T>(dir, T(0));
             // Far away along dir: positional at Q + t dir (t = 2^20 in float, 2^40 in double).
@@ -260,13 +260,13 @@ TEST_CASE_TEMPLATE("properties: a directional light is the limit of a far positi
             phong::light<T> positional = directional;
             positional.position = vec4<T>(Q + dir * t, T(1));
             // Away from the gate (n.l = 0), where the limit is not uniform.
-            RC_PRE(std::abs(double(phong::dot(phong::normalize(n), dir))) > 1e-2);
+            RC_PRE(std::abs(double(phong::detail::dot(phong::detail::normalize(n), dir))) > 1e-2);
             phong::environment<T> env;
             const vec3<T> a = phong::shade<F>(Q, n, mat, std::vector<phong::light<T>>{directional}, env);
             const vec3<T> b = phong::shade<F>(Q, n, mat, std::vector<phong::light<T>>{positional}, env);
             // The directions differ by about |Q| / t (plus the rounding of Q + t dir, ~eps), which
             // the specular power multiplies by m; plus the usual roundings.
-            const double angle = (double(phong::length(Q)) + 1) / double(t) + 4 * double(eps<T>);
+            const double angle = (double(phong::detail::length(Q)) + 1) / double(t) + 4 * double(eps<T>);
             const double tol = (4 + 2 * double(mat.shininess)) * angle + 64 * double(eps<T>);
             for (int k = 0; k < 3; ++k) RC_ASSERT(std::abs(double(a[k]) - double(b[k])) <= tol);
         };
@@ -301,11 +301,11 @@ TEST_CASE_TEMPLATE("properties: attenuation is monotone non-increasing in distan
     check_property("shade: a light moved away along its direction gets no brighter (attenuation, spot none)", [] {
         constexpr features F{.attenuation = phong::attenuation_model::polynomial};
         const vec3<T> Q = gen_point<T>(), n = gen_normal<T>();
-        const vec3<T> dir = phong::normalize(*gen_nonzero_vec3<T>(-8, 8, T(0.25)));
+        const vec3<T> dir = phong::detail::normalize(*gen_nonzero_vec3<T>(-8, 8, T(0.25)));
         phong::light<T> L = *gen_light<T>(false);
         L.attenuation = {T(1), *grid<T>(0, 16, T(0.125)), *grid<T>(0, 16, T(0.125)), std::numeric_limits<T>::infinity()};
         // Away from the gate (n.l = 0), where the specular term jumps.
-        RC_PRE(std::abs(double(phong::dot(phong::normalize(n), dir))) > 1e-2);
+        RC_PRE(std::abs(double(phong::detail::dot(phong::detail::normalize(n), dir))) > 1e-2);
         const T t1 = *grid<T>(1, 256, T(0.125)), t2 = *grid<T>(1, 256, T(0.125));
         phong::material<T> mat = *gen_material<T>(64);
         phong::light<T> near_light = L, far_light = L;
@@ -316,7 +316,7 @@ TEST_CASE_TEMPLATE("properties: attenuation is monotone non-increasing in distan
         const vec3<T> b = phong::shade<F>(Q, n, mat, std::vector<phong::light<T>>{far_light}, env);
         // The same l up to the rounding of Q + t dir (an angle of about eps |Q| / t, which the
         // specular power multiplies by m); r.v and n.l stay put, f decreases. Values are <= 2.
-        const double angle = 4 * double(eps<T>) * (1 + double(phong::length(Q)) / double(std::min(t1, t2)));
+        const double angle = 4 * double(eps<T>) * (1 + double(phong::detail::length(Q)) / double(std::min(t1, t2)));
         for (int k = 0; k < 3; ++k) RC_ASSERT(double(b[k]) <= double(a[k]) + (8 + 2 * double(mat.shininess)) * angle);
     });
 }
@@ -324,7 +324,7 @@ TEST_CASE_TEMPLATE("properties: attenuation is monotone non-increasing in distan
 TEST_CASE_TEMPLATE("properties: the general view vector equals seed 000's formulas", T, float, double)
 {
     // glm::perspective and off-axis glm::frustum: view_vector(eye_from_projection(M), Q) =
-    // view_perspective(Q) = normalize(O - Q).
+    // phong::detail::view_perspective(Q) = normalize(O - Q).
     check_property("perspective, frustum: v = normalize(-Q)", [] {
         const vec3<T> Q = gen_point<T>();
         mat4<T> M;
@@ -337,7 +337,7 @@ TEST_CASE_TEMPLATE("properties: the general view vector equals seed 000's formul
             M = glm::frustum(l + dx, r + dx, b, t, *grid<T>(1, 10, T(0.1)), T(100));
         }
         const vec3<T> v = phong::view_vector(phong::eye_from_projection(M), Q);
-        RC_ASSERT(near(v, phong::view_perspective(Q), 16, T(1)));
+        RC_ASSERT(near(v, phong::detail::view_perspective(Q), 16, T(1)));
     });
     // glm::ortho and an oblique orthographic matrix (ortho times a shear): view_orthographic's
     // formula normalize(-M02/M00, -M12/M11, 1) is the definition.
@@ -351,15 +351,15 @@ TEST_CASE_TEMPLATE("properties: the general view vector equals seed 000's formul
         S[2][1] = *grid<T>(-16, 16, T(1) / T(16)); // y += b z
         M = M * S;
         const vec3<T> v = phong::view_vector(phong::eye_from_projection(M), Q);
-        RC_ASSERT(near(v, phong::view_orthographic(M), 16, T(1)));
+        RC_ASSERT(near(v, phong::detail::view_orthographic(M), 16, T(1)));
         // And the shear itself: v = normalize(-a, -b, 1) (M02/M00 = a, M12/M11 = b by construction).
-        RC_ASSERT(near(v, phong::normalize(vec3<T>(-S[2][0], -S[2][1], T(1))), 16, T(1)));
+        RC_ASSERT(near(v, phong::detail::normalize(vec3<T>(-S[2][0], -S[2][1], T(1))), 16, T(1)));
     });
 }
 
 TEST_CASE_TEMPLATE("properties: the constexpr path equals the run-time path within constexpr_tolerance_ulp", T, float, double)
 {
-    const auto tol = std::uint64_t(phong::constexpr_tolerance_ulp);
+    const auto tol = std::uint64_t(phong::detail::constexpr_tolerance_ulp);
     check_property("ce::sqrt, exp, log, log1p, pow vs std::", [tol] {
         // x = mantissa * 2^e on grids: covers the exponent range of T.
         const int max_e = std::is_same_v<T, float> ? 100 : 800;

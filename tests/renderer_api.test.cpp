@@ -139,7 +139,7 @@ template <class T> struct phong::light_traits<my_light<T>> {
 static_assert(light_source<light<float>> && light_source<const light<double>&> && light_source<my_light<float>>);
 static_assert(!light_source<int> && !light_source<glm::vec4> && !light_source<material<float>>,
               "a type without a light_traits specialization is not a light (tests/nan_policy/light_traits_reject.cpp: the error)");
-static_assert(std::is_same_v<light_scalar_t<renderer_light<double>>, double>);
+static_assert(std::is_same_v<phong::detail::light_scalar_t<renderer_light<double>>, double>);
 
 TEST_CASE_TEMPLATE("given view: v = -Q reproduces eye_at_origin, v = E - Q reproduces eye_point, bit for bit", T, float, double)
 {
@@ -185,7 +185,7 @@ TEST_CASE_TEMPLATE("unit inputs: on unit normal and view the results equal the n
         const vec3<T> n_exact = axes[std::size_t(i) % 6], v_exact = axes[std::size_t(i / 6) % 6];
         CHECK(same_bits(shade<U>(s.position, n_exact, v_exact, s.mat, s.lights), shade<F>(s.position, n_exact, v_exact, s.mat, s.lights)));
         CHECK(same_bits(shade<PU>(s.position, n_exact, v_exact, s.mat, s.lights), shade<P>(s.position, n_exact, v_exact, s.mat, s.lights)));
-        const vec3<T> n = phong::normalize(s.normal), v = phong::normalize(g.direction());
+        const vec3<T> n = phong::detail::normalize(s.normal), v = phong::detail::normalize(g.direction());
         const vec3<T> a = shade<U>(s.position, n, v, s.mat, s.lights), b = shade<F>(s.position, n, v, s.mat, s.lights);
         const vec3<T> c = shade<PU>(s.position, n, v, s.mat, s.lights), d = shade<P>(s.position, n, v, s.mat, s.lights);
         const double bound = (16 + 8 * double(s.mat.shininess)) * double(std::numeric_limits<T>::epsilon());

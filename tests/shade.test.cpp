@@ -63,7 +63,7 @@ TEST_CASE_TEMPLATE("shade: one light straight above the point, by hand", T, floa
     mat.kd = vec3<T>(0.25, 0.5, 0.75);
     mat.ks = vec3<T>(0.125, 0.25, 0.0625);
     mat.shininess = T(37);
-    const std::array<phong::light<T>, 1> lights{phong::light<T>::seed000(vec4<T>(0, 0, 0, 1), vec3<T>(1, 0.5, 2))};
+    const std::array<phong::light<T>, 1> lights{phong::light<T>::with_strength(vec4<T>(0, 0, 0, 1), vec3<T>(1, 0.5, 2))};
     phong::environment<T> env;
     env.ambient = vec3<T>(0.5, 1, 0.25);
     // 0.5*0.5 + 0.25*1 + 0.125*1 = 0.625; 0.25*1 + 0.5*0.5 + 0.25*0.5 = 0.625;
@@ -94,7 +94,7 @@ TEST_CASE_TEMPLATE("shade: 45 degree directional light with attenuation ignored,
     mat.kd = vec3<T>(1, 0, 0);
     mat.ks = vec3<T>(0, 1, 0);
     mat.shininess = T(2);
-    phong::light<T> L = phong::light<T>::seed000(vec4<T>(1, 0, 1, 0), vec3<T>(1));
+    phong::light<T> L = phong::light<T>::with_strength(vec4<T>(1, 0, 1, 0), vec3<T>(1));
     L.attenuation = {T(3), T(3), T(3), T(0.5)};
     const std::vector<phong::light<T>> lights{L};
     const vec3<T> Q(0, 0, -1), n(0, 0, 1);
@@ -139,7 +139,7 @@ constexpr features all_terms{.scene_ambient = true, .light_ambient = true, .diff
                              .specular = phong::specular_model::phong, .specular_gate = true,
                              .lights = phong::light_kind::any, .attenuation = phong::attenuation_model::polynomial,
                              .spot = phong::spot_model::none, .attenuate_ambient = true,
-                             .two_sided = phong::facing::none, .view = phong::view_model::perspective,
+                             .two_sided = phong::facing::none, .view = phong::view_model::eye_at_origin,
                              .emission = true, .alpha = false, .mode = evaluation::exact};
 
 template <class T> phong::material<T> test_material(T m = T(8))
@@ -212,7 +212,7 @@ TEST_CASE_TEMPLATE("shade: documented edges, exact and stable", T, float, double
     {
         both([&](auto mode) {
             constexpr features F = with(all_terms, decltype(mode)::value);
-            const T cap = T(1) / phong::attenuation_denominator_min<T>;
+            const T cap = T(1) / phong::detail::attenuation_denominator_min<T>;
             phong::light<T> L = test_light<T>(vec4<T>(Q, T(1)));
             L.attenuation = {T(0), T(0), T(1), std::numeric_limits<T>::infinity()};
             const std::vector<phong::light<T>> at{L};

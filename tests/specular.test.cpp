@@ -25,9 +25,9 @@ template <class T> struct factor {
 };
 template <class T> const factor<T> factors[] = {
     {"specular_reflection", false, &phong::specular_reflection<T, glm::defaultp>},
-    {"specular_reflection_stable", false, &phong::specular_reflection_stable<T, glm::defaultp>},
+    {"specular_reflection_stable", false, &phong::detail::specular_reflection_stable<T, glm::defaultp>},
     {"specular_halfway", true, &phong::specular_halfway<T, glm::defaultp>},
-    {"specular_halfway_stable", true, &phong::specular_halfway_stable<T, glm::defaultp>},
+    {"specular_halfway_stable", true, &phong::detail::specular_halfway_stable<T, glm::defaultp>},
 };
 
 // The factor in the wide type, from the formulas in the doc comments applied to the given vectors.
@@ -99,13 +99,13 @@ TEST_CASE_TEMPLATE("specular: documented edges", T, float, double)
 
 TEST_CASE_TEMPLATE("specular: pow_one_minus", T, float, double)
 {
-    CHECK(phong::pow_one_minus(T(0), T(50)) == T(1));
-    CHECK(phong::pow_one_minus(T(0), T(0)) == T(1));
-    CHECK(phong::pow_one_minus(T(1), T(3)) == T(0));
-    CHECK(phong::pow_one_minus(T(1), T(0)) == T(1)); // pow(0, 0) = 1
-    CHECK(phong::pow_one_minus(T(7), T(2)) == T(0)); // x >= 1 gives 0
-    CHECK(phong::pow_one_minus(T(7), T(0)) == T(1));
-    CHECK(error_ulp(phong::pow_one_minus(T(0.5), T(3)), wide(0.125)) <= 4.0);
+    CHECK(phong::detail::pow_one_minus(T(0), T(50)) == T(1));
+    CHECK(phong::detail::pow_one_minus(T(0), T(0)) == T(1));
+    CHECK(phong::detail::pow_one_minus(T(1), T(3)) == T(0));
+    CHECK(phong::detail::pow_one_minus(T(1), T(0)) == T(1)); // pow(0, 0) = 1
+    CHECK(phong::detail::pow_one_minus(T(7), T(2)) == T(0)); // x >= 1 gives 0
+    CHECK(phong::detail::pow_one_minus(T(7), T(0)) == T(1));
+    CHECK(error_ulp(phong::detail::pow_one_minus(T(0.5), T(3)), wide(0.125)) <= 4.0);
     // Random x, m against the wide (1 - x)^m: the relative error of exp(m log1p(-x)) is at most
     // about (|m log1p(-x)| + 1) u for the logarithm's and the exponential's roundings.
     std::mt19937_64 rng(5);
@@ -116,7 +116,7 @@ TEST_CASE_TEMPLATE("specular: pow_one_minus", T, float, double)
         const wide exact = wpow(1 - wide(x), wide(m));
         if (exact < wide(std::numeric_limits<T>::min())) continue;
         const double bound = (std::abs(double(m) * std::log1p(-double(x))) + 2) * double(tolerance<T>::eps);
-        worst = std::max(worst, error_rel(phong::pow_one_minus(x, m), exact) / bound);
+        worst = std::max(worst, error_rel(phong::detail::pow_one_minus(x, m), exact) / bound);
     }
     CHECK(worst <= 1.0);
 }
@@ -132,7 +132,7 @@ TEST_CASE_TEMPLATE("specular: random unit vectors against the wide formula", T, 
         const vec3<T> n = g.direction(), l = g.direction(), v = g.direction();
         const T m = g.coin(0.1) ? T(0) : g.uniform(0.5, 64);
         // Keep away from the gate and from l = -v (discontinuities).
-        if (std::abs(double(phong::dot(n, l))) < 1e-3 || double(phong::length(l + v)) < 1e-2) continue;
+        if (std::abs(double(phong::detail::dot(n, l))) < 1e-3 || double(phong::detail::length(l + v)) < 1e-2) continue;
         for (const factor<T>& fn : factors<T>) {
             const wide ref = reference_factor(fn.halfway, n, l, v, m);
             const double err = double(wabs(wide(fn.f(n, l, v, m)) - ref));

@@ -84,7 +84,7 @@ TEST_CASE("stable_twofold_above: the default (0) is the published twofold mode; 
 {
     static_assert(features{}.stable_twofold_above == 0);
     constexpr features F{.specular = specular_model::blinn, .mode = evaluation::stable, .stable_twofold_above = 256};
-    constexpr light<double> L = light<double>::seed000({0, 0, 0, 1}, glm::dvec3(1));
+    constexpr light<double> L = light<double>::with_strength({0, 0, 0, 1}, glm::dvec3(1));
     constexpr material<double> m{.ka = glm::dvec3(0), .kd = glm::dvec3(0), .ks = glm::dvec3(1), .shininess = 8};
     // Q = (0, 0, -2), n = (0, 0, 1), light at the eye: l = v = n, h = n, (n.h)^8 = 1.
     constexpr glm::dvec3 c = shade<F>(glm::dvec3(0, 0, -2), glm::dvec3(0, 0, 1), m, std::array<light<double>, 1>{L});

@@ -32,7 +32,7 @@ TEST_CASE_TEMPLATE("validate(light): valid lights are accepted", T, float, doubl
     phong::light<T> L{};
     CHECK(static_cast<bool>(phong::validate(L)));
     CHECK(std::string(phong::validate(L).message()) == "ok");
-    CHECK(static_cast<bool>(phong::validate(phong::light<T>::seed000(vec4<T>(1, 2, 3, 1), vec3<T>(0.5)))));
+    CHECK(static_cast<bool>(phong::validate(phong::light<T>::with_strength(vec4<T>(1, 2, 3, 1), vec3<T>(0.5)))));
     L.position = vec4<T>(-4, 5, 6, 1);
     L.ambient = vec3<T>(0.1);
     L.attenuation = {T(0), T(0), T(1), T(10)}; // c0 = 0 allowed when c2 > 0
@@ -66,14 +66,14 @@ TEST_CASE_TEMPLATE("validate(light): w must be exactly 0 or 1", T, float, double
     const T denorm = std::numeric_limits<T>::denorm_min();
     for (T w : {T(2), T(0.5), T(1) + eps, T(1) - eps / 2, denorm, -denorm, T(-1), std::numeric_limits<T>::max(), T(3)}) {
         CAPTURE(w);
-        const L light = L::seed000(vec4<T>(1, 2, 3, w), vec3<T>(1));
+        const L light = L::with_strength(vec4<T>(1, 2, 3, w), vec3<T>(1));
         const phong::validation r = phong::validate(light);
         CHECK_FALSE(static_cast<bool>(r));
         CHECK(std::string(r.message()).find("light.position.w") != std::string::npos);
     }
     for (T w : {T(0), -T(0), T(1)}) {
         CAPTURE(w);
-        CHECK(static_cast<bool>(phong::validate(L::seed000(vec4<T>(1, 2, 3, w), vec3<T>(1)))));
+        CHECK(static_cast<bool>(phong::validate(L::with_strength(vec4<T>(1, 2, 3, w), vec3<T>(1)))));
     }
 }
 static_assert(!phong::validate(phong::light<float>{.position = {1.0f, 2.0f, 3.0f, 2.0f}}));
@@ -83,7 +83,7 @@ static_assert(static_cast<bool>(phong::validate(phong::light<double>{.position =
 TEST_CASE_TEMPLATE("light::seed000: one strength L_i for diffuse and specular, no ambient", T, float, double)
 {
     const phong::falloff<T> fall{T(1), T(0.5), T(0.25), T(10)};
-    const auto L = phong::light<T>::seed000(vec4<T>(1, 2, 3, 0), vec3<T>(0.25, 0.5, 0.75), fall);
+    const auto L = phong::light<T>::with_strength(vec4<T>(1, 2, 3, 0), vec3<T>(0.25, 0.5, 0.75), fall);
     CHECK(L.position == vec4<T>(1, 2, 3, 0));
     CHECK(L.diffuse == vec3<T>(0.25, 0.5, 0.75));
     CHECK(L.specular == vec3<T>(0.25, 0.5, 0.75));
@@ -148,7 +148,7 @@ TEST_CASE_TEMPLATE("validate(light): each documented rejection", T, float, doubl
         {"light.spot.direction", [](light& L) { L.spot.direction = vec3<T>(qnan<T>, 0, 1); }},
     };
     for (const bad& b : cases) {
-        light L = light::seed000(vec4<T>(1, 2, 3, 1), vec3<T>(1));
+        light L = light::with_strength(vec4<T>(1, 2, 3, 1), vec3<T>(1));
         REQUIRE(static_cast<bool>(phong::validate(L)));
         b.spoil(L);
         CAPTURE(b.field);

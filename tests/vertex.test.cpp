@@ -139,7 +139,7 @@ template <class T> bool near_boundary(const vertex_case<T>& c, const mat3<T>& No
 
 } // namespace
 
-TEST_CASE_TEMPLATE("vertex: shade_vertex<seed003_ads> is phong.vert (property)", T, float, double)
+TEST_CASE_TEMPLATE("vertex: shade_vertex<glsl_ads> is phong.vert (property)", T, float, double)
 {
     const T eps = phong_test::tolerance<T>::eps;
     phong_test::check_property("shade_vertex = phong.vert within a few ulp", [eps] {
@@ -158,10 +158,10 @@ TEST_CASE_TEMPLATE("vertex: shade_vertex<seed003_ads> is phong.vert (property)",
         const vec3<T> budget = c.light.La * c.material.Ka + c.light.Ld * c.material.Kd * (T(6) * c.condition) +
                                c.light.Ls * c.material.Ks * (T(6) * c.condition * (T(1) + m));
         // With GLSL's NormalMatrix passed in (the renderer's uniform) ...
-        const vec3<T> given = phong::shade_vertex<phong::presets::seed003_ads>(c.position, c.normal, c.model_view,
+        const vec3<T> given = phong::shade_vertex<phong::presets::glsl_ads>(c.position, c.normal, c.model_view,
                                                                                NormalMatrix, mat, lights);
         // ... and with phong's own normal matrix.
-        const vec3<T> own = phong::shade_vertex<phong::presets::seed003_ads>(
+        const vec3<T> own = phong::shade_vertex<phong::presets::glsl_ads>(
             c.position, c.normal, c.model_view, phong::normal_matrix(c.model_view), mat, lights);
         for (int k = 0; k < 3; ++k) {
             RC_ASSERT(std::abs(given[k] - expected[k]) <= eps * (budget[k] + std::abs(expected[k])));
@@ -170,7 +170,7 @@ TEST_CASE_TEMPLATE("vertex: shade_vertex<seed003_ads> is phong.vert (property)",
     });
 }
 
-TEST_CASE_TEMPLATE("vertex: shade_vertex<seed003_diffuse> is diffuse.vert (property)", T, float, double)
+TEST_CASE_TEMPLATE("vertex: shade_vertex<diffuse_only> is diffuse.vert (property)", T, float, double)
 {
     const T eps = phong_test::tolerance<T>::eps;
     phong_test::check_property("shade_vertex = diffuse.vert within a few ulp", [eps] {
@@ -188,7 +188,7 @@ TEST_CASE_TEMPLATE("vertex: shade_vertex<seed003_diffuse> is diffuse.vert (prope
         mat.ks = vec3<T>(1);
         const std::array<phong::light<T>, 1> lights{L};
         const phong::environment<T> env{.ambient = vec3<T>(1)};
-        const vec3<T> got = phong::shade_vertex<phong::presets::seed003_diffuse>(
+        const vec3<T> got = phong::shade_vertex<phong::presets::diffuse_only>(
             c.position, c.normal, c.model_view, phong::normal_matrix(c.model_view), mat, lights, env);
         const vec3<T> budget = c.light.Ld * c.material.Kd * (T(6) * c.condition);
         for (int k = 0; k < 3; ++k) RC_ASSERT(std::abs(got[k] - expected[k]) <= eps * (budget[k] + std::abs(expected[k])));
@@ -209,12 +209,12 @@ TEST_CASE_TEMPLATE("vertex: a hand-computed vertex", T, float, double)
     const phong::material<T> mat{.ka = vec3<T>(T(0.5)), .kd = vec3<T>(1), .ks = vec3<T>(1), .emission = vec3<T>(0),
                                  .shininess = T(2), .alpha = T(1)};
     const std::array<phong::light<T>, 1> lights{L};
-    const vec3<T> got = phong::shade_vertex<phong::presets::seed003_ads>(vec3<T>(0, 0, -4), vec3<T>(0, 0, 1), I,
+    const vec3<T> got = phong::shade_vertex<phong::presets::glsl_ads>(vec3<T>(0, 0, -4), vec3<T>(0, 0, 1), I,
                                                                          phong::normal_matrix(I), mat, lights);
     for (int k = 0; k < 3; ++k) CHECK(std::abs(got[k] - T(1.69)) <= phong_test::tolerance<T>::rel(16));
     // The light behind the surface (s.n < 0): ambient only, exactly La Ka = 1/4 (no gate leak).
     L.position = vec4<T>(0, 3, -8, 1);
     const std::array<phong::light<T>, 1> behind{L};
-    CHECK(phong::shade_vertex<phong::presets::seed003_ads>(vec3<T>(0, 0, -4), vec3<T>(0, 0, 1), I, phong::normal_matrix(I),
+    CHECK(phong::shade_vertex<phong::presets::glsl_ads>(vec3<T>(0, 0, -4), vec3<T>(0, 0, 1), I, phong::normal_matrix(I),
                                                            mat, behind) == vec3<T>(T(0.25)));
 }

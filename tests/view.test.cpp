@@ -67,14 +67,14 @@ TEST_CASE_TEMPLATE("view: eye_from_projection for orthographic matrices is the d
     CHECK(close(phong::eye_from_projection(O), vec4<T>(0, 0, 1, 0), 4));
     const mat4<T> O2 = glm::ortho(T(1), T(5), T(-3), T(-1), T(-4), T(20));
     CHECK(close(phong::eye_from_projection(O2), vec4<T>(0, 0, 1, 0), 4));
-    CHECK(close(phong::view_orthographic(O2), vec3<T>(0, 0, 1), 4));
+    CHECK(close(phong::detail::view_orthographic(O2), vec3<T>(0, 0, 1), 4));
     // Oblique: ortho times a shear. Seed 000's formula normalize(-M02/M00, -M12/M11, 1) is the
     // definition here; by construction M02/M00 = a and M12/M11 = b, so v = normalize(-a, -b, 1).
     const T a = T(0.5), b = T(-0.25);
     const mat4<T> M = O2 * shear_z(a, b);
     const wvec3 expected = wnormalize(wvec3{wide(-a), wide(-b), wide(1)});
     const vec3<T> ev(T(expected.x), T(expected.y), T(expected.z));
-    CHECK(close(phong::view_orthographic(M), ev, 4));
+    CHECK(close(phong::detail::view_orthographic(M), ev, 4));
     CHECK(close(phong::eye_from_projection(M), vec4<T>(ev, T(0)), 8));
     // A rotated orthographic camera (lookAt): the direction toward the viewer is the rotated +z.
     const vec3<T> e(T(1), T(2), T(2)); // |e| = 3
@@ -122,11 +122,11 @@ TEST_CASE_TEMPLATE("view: view_vector from the eye equals seed 000's two formula
         CAPTURE(Q.z);
         // Perspective: v = normalize(O - Q), O = (0, 0, 0); checked against the wide value too.
         const wvec3 vp = wnormalize(-widen(Q));
-        CHECK(close(phong::view_perspective(Q), vec3<T>(T(vp.x), T(vp.y), T(vp.z)), 2));
-        CHECK(close(phong::view_vector(phong::eye_from_projection(P), Q), phong::view_perspective(Q), 4));
-        CHECK(close(phong::view_vector(phong::eye_from_projection(F), Q), phong::view_perspective(Q), 4));
+        CHECK(close(phong::detail::view_perspective(Q), vec3<T>(T(vp.x), T(vp.y), T(vp.z)), 2));
+        CHECK(close(phong::view_vector(phong::eye_from_projection(P), Q), phong::detail::view_perspective(Q), 4));
+        CHECK(close(phong::view_vector(phong::eye_from_projection(F), Q), phong::detail::view_perspective(Q), 4));
         // Orthographic: v = normalize(-M02/M00, -M12/M11, 1) at every Q.
-        CHECK(close(phong::view_vector(phong::eye_from_projection(M), Q), phong::view_orthographic(M), 8));
+        CHECK(close(phong::view_vector(phong::eye_from_projection(M), Q), phong::detail::view_orthographic(M), 8));
     }
     // An eye point: v = normalize(E - Q).
     CHECK(close(phong::view_vector(vec4<T>(1, 2, 3, 1), vec3<T>(1, 2, -1)), vec3<T>(0, 0, 1), 2));
@@ -135,7 +135,7 @@ TEST_CASE_TEMPLATE("view: view_vector from the eye equals seed 000's two formula
 TEST_CASE_TEMPLATE("view: documented edges", T, float, double)
 {
     // Q at the eye: v = 0, not NaN.
-    CHECK(phong::view_perspective(vec3<T>(0)) == vec3<T>(0));
+    CHECK(phong::detail::view_perspective(vec3<T>(0)) == vec3<T>(0));
     CHECK(phong::view_vector(vec4<T>(1, 2, 3, 1), vec3<T>(1, 2, 3)) == vec3<T>(0));
     // A singular projection: E = 0, every view vector 0.
     mat4<T> S(T(0));
@@ -144,5 +144,5 @@ TEST_CASE_TEMPLATE("view: documented edges", T, float, double)
     CHECK(phong::view_vector(phong::eye_from_projection(S), vec3<T>(1, 2, 3)) == vec3<T>(0));
     // Huge Q: rescaled, never NaN.
     const T big = std::numeric_limits<T>::max() / T(2);
-    CHECK(phong::view_perspective(vec3<T>(T(0), T(0), -big)) == vec3<T>(0, 0, 1));
+    CHECK(phong::detail::view_perspective(vec3<T>(T(0), T(0), -big)) == vec3<T>(0, 0, 1));
 }

@@ -120,7 +120,7 @@ inline void shade_phong_batch(std::span<const glm::vec3> P, std::span<const glm:
 
 /// Seed 003's GLSL ADS (phong.vert): La Ka + Ld Kd max(s.n, 0) + [s.n > 0] Ls Ks max(r.v, 0)^f,
 /// eye coordinates, v = normalize(-eyeCoords).
-inline constexpr phong::features raster_exact = phong::presets::seed003_ads;
+inline constexpr phong::features raster_exact = phong::presets::glsl_ads;
 inline constexpr phong::features raster_stable = phong::presets::with_mode(raster_exact, phong::evaluation::stable);
 
 /// A seed 003 light in eye coordinates (La, Ld, Ls).

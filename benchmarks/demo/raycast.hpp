@@ -105,7 +105,7 @@ inline glm::vec4 world_eye(const camera& cam)
 {
     glm::vec4 e = glm::inverse(cam.view) * phong::eye_from_projection(cam.projection);
     if (e.w == 0.0f) {
-        const glm::vec3 d = phong::normalize(glm::vec3(e));
+        const glm::vec3 d = phong::detail::normalize(glm::vec3(e));
         e = glm::vec4(d, 0.0f);
     }
     return e;

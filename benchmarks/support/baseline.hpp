@@ -4,7 +4,7 @@
 // at the origin), ported to C++ the obvious way: AoS light structs like the shader's LightInfo,
 // glm::normalize / glm::dot / glm::reflect / glm::pow, no guards. Kept honest: no phong code, no
 // tricks a typical user would not write, and the same per-light terms as phong's preset
-// presets::seed003_ads, so both compute the same colour (its error is measured like any row's).
+// presets::glsl_ads, so both compute the same colour (its error is measured like any row's).
 #pragma once
 
 #include <glm/geometric.hpp>

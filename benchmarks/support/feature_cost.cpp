@@ -8,7 +8,7 @@
 //                                                                   two-sided, emission, alpha)
 // The hand-written kernels implement the same documented model, edge cases included (a zero
 // normal or a light at Q gives no diffuse or specular, Q at the eye no specular; NaN/inf geometry gives NaN), the
-// leanest direct way, with the same scalar kernels (phong::sqrt, phong::pow_unit) and the same
+// leanest direct way, with the same scalar kernels (phong::detail::sqrt, phong::detail::pow_unit) and the same
 // formulas (dot products with d = L - Q, scaled by 1/|d| only for pairs that are on; the cheap
 // sign test first), so the counts measure what shade<F>'s generic machinery adds; this program
 // checks that each pair's outputs agree bit for bit, so the counts compare two computations of
@@ -82,7 +82,7 @@ void shade_all(const vec3* position, const vec3* normal, std::size_t n, std::spa
 
 constexpr features diffuse_directional{.scene_ambient = false, .light_ambient = false, .diffuse = true,
                                        .specular = phong::specular_model::none, .lights = phong::light_kind::directional};
-constexpr features ads = phong::presets::seed003_ads;
+constexpr features ads = phong::presets::glsl_ads;
 
 // x * 0: 0 for finite x, NaN for NaN or inf (the library's NaN policy, written directly; computed
 // only when a squared length is not finite, the one case where an input can be NaN or inf).
@@ -110,7 +110,7 @@ FC_KERNEL fc_hand_diffuse_directional(const vec3* q, const vec3* n, std::size_t 
 {
     for (std::size_t i = 0; i < count; ++i) {
         const float nn = dot3(n[i], n[i]);
-        const float in = nn >= tiny ? 1 / phong::sqrt(nn) : 0.0f;
+        const float in = nn >= tiny ? 1 / phong::detail::sqrt(nn) : 0.0f;
         const vec3 nh = n[i] * in;
         const float qq = dot3(q[i], q[i]); // only for the NaN test: the diffuse term does not need v
         float poison = 0;
@@ -121,7 +121,7 @@ FC_KERNEL fc_hand_diffuse_directional(const vec3* q, const vec3* n, std::size_t 
             const vec3 d(L[j].position.x, L[j].position.y, L[j].position.z);
             const float dd = dot3(d, d);
             const float nd = dot3(nh, d); // |d| (n.l): its sign is known before the square root
-            if (defined && nd > 0 && dd >= tiny && dd <= FLT_MAX) sum += L[j].diffuse * (nd / phong::sqrt(dd));
+            if (defined && nd > 0 && dd >= tiny && dd <= FLT_MAX) sum += L[j].diffuse * (nd / phong::detail::sqrt(dd));
         }
         out[i] = vec3(poison) + mat.kd * sum;
     }
@@ -136,14 +136,14 @@ FC_KERNEL fc_phong_ads(const vec3* q, const vec3* n, std::size_t count, const li
 /// Hand-written seed 003 phong.vert summed over positional lights, with phong's edges:
 /// I = ka sum La_i + kd sum Ld_i max(n.l, 0) + ks sum [n.l > 0] Ls_i clamp(r.v, 0, 1)^m with
 /// |d| r.v = 2 (n.d)(n.v) - d.v (r = reflect(-l, n), n.v once per point, as phong computes it),
-/// the power by phong::pow_unit (the scalar kernel a hand-written shader would call instead of pow).
+/// the power by phong::detail::pow_unit (the scalar kernel a hand-written shader would call instead of pow).
 FC_KERNEL fc_hand_ads(const vec3* q, const vec3* n, std::size_t count, const light* L, std::size_t k,
                       const phong::material<float>& mat, const phong::environment<float>&, vec3* out)
 {
     for (std::size_t i = 0; i < count; ++i) {
         const float nn = dot3(n[i], n[i]), qq = dot3(q[i], q[i]);
-        const float in = nn >= tiny ? 1 / phong::sqrt(nn) : 0.0f;
-        const float iv = qq >= tiny ? 1 / phong::sqrt(qq) : 0.0f;
+        const float in = nn >= tiny ? 1 / phong::detail::sqrt(nn) : 0.0f;
+        const float iv = qq >= tiny ? 1 / phong::detail::sqrt(qq) : 0.0f;
         const vec3 nh = n[i] * in, v = -q[i] * iv;
         float poison = 0;
         if (!(nn <= FLT_MAX && qq <= FLT_MAX)) poison = nan_poison(q[i], n[i]);
@@ -158,9 +158,9 @@ FC_KERNEL fc_hand_ads(const vec3* q, const vec3* n, std::size_t count, const lig
             // before the square root and the division are done.
             const float nd = dot3(nh, d), rvd = 2 * nd * nv - dot3(d, v); // |d| (n.l), |d| (r.v)
             if (defined && nd > 0 && dd >= tiny && dd <= FLT_MAX) {
-                const float inv = 1 / phong::sqrt(dd);
+                const float inv = 1 / phong::detail::sqrt(dd);
                 diffuse += L[j].diffuse * (nd * inv);
-                if (rvd > 0) specular += L[j].specular * phong::pow_unit(std::min(rvd * inv, 1.0f), mat.shininess);
+                if (rvd > 0) specular += L[j].specular * phong::detail::pow_unit(std::min(rvd * inv, 1.0f), mat.shininess);
                 else if (mat.shininess == 0 && iv > 0) specular += L[j].specular;
             }
         }

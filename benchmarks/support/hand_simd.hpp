@@ -1,7 +1,7 @@
 // A hand-written SIMD baseline: what an expert writes with intrinsics for exactly the model of
 // shade.bench.cpp's rows (phong's batch rows are compared with it in the report).
 //
-// Model (presets::seed003_ads, exact mode, positional lights, eye at the origin, float):
+// Model (presets::glsl_ads, exact mode, positional lights, eye at the origin, float):
 //   rgb = ka sum_i La_i + sum_i [n.l_i > 0] ( kd Ld_i (n.l_i) + ks Ls_i max(c_i, 0)^m ),
 //   n = N / |N|, v = -Q / |Q|, d_i = L_i - Q, l_i = d_i / |d_i|,
 //   Phong: c_i = r_i.v = (2 (n.d_i)(n.v) - d_i.v) / |d_i|          (r_i = reflect(-l_i, n))
@@ -317,7 +317,7 @@ void shade(const float* px, const float* py, const float* pz, const float* nx, c
 /// The model the kernel computes, as phong features (shade.bench.cpp's model(), exact mode).
 constexpr phong::features model(bool blinn)
 {
-    phong::features f = phong::presets::seed003_ads;
+    phong::features f = phong::presets::glsl_ads;
     f.specular = blinn ? phong::specular_model::blinn : phong::specular_model::phong;
     f.mode = phong::evaluation::exact;
     return f;

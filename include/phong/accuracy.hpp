@@ -103,7 +103,7 @@ constexpr features measured_features(evaluation M, specular_model S, stable_prec
     f.specular_gate = true;
     f.lights = light_kind::any;
     f.attenuation = attenuation_model::polynomial;
-    f.view = view_model::perspective;
+    f.view = view_model::eye_at_origin;
     f.mode = M;
     f.precision = P;
     return f;

@@ -1,4 +1,4 @@
-// phong: seed 001's generic primitives for ray tracers: their normals m' at a generic hit point
+// phong: the ray tracer model's generic primitives for ray tracers: their normals m' at a generic hit point
 // P', and the intersection of a ray with each of them in generic (object) coordinates.
 // SPDX-License-Identifier: MIT
 //
@@ -8,7 +8,7 @@
 // the world ray and the transformed ray, so P = S + t c. The normals here are not normalized:
 // the normal matrix changes their length anyway, so normalize once, after transforming.
 //
-// Generic primitives (seed 001):
+// Generic primitives (ray tracer model):
 //   sphere            |P'| = 1, centred at the origin;
 //   plane             z = 0;
 //   square            z = 0, |x| <= 1, |y| <= 1;
@@ -26,7 +26,7 @@ namespace phong {
 
 // ---- normals at a generic hit point -------------------------------------------------------
 
-/// Generic sphere: m' = P' - (0, 0, 0) = P' (seed 001, step 4.1).
+/// Generic sphere: m' = P' - (0, 0, 0) = P' (the ray tracer model, step 4.1).
 /// Pre: P' on the unit sphere (any P' gives the radial direction). Edge: P' = 0 gives 0.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> sphere_normal(const glm::vec<3, T, Q>& p)
@@ -80,7 +80,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_cap_normal(const glm::vec<
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> cube_normal(const glm::vec<3, T, Q>& p)
 {
-    const T ax = phong::abs(p.x), ay = phong::abs(p.y), az = phong::abs(p.z);
+    const T ax = detail::abs(p.x), ay = detail::abs(p.y), az = detail::abs(p.z);
     if (ax >= ay && ax >= az) return {p.x < T(0) ? T(-1) : T(1), T(0), T(0)};
     if (ay >= az) return {T(0), p.y < T(0) ? T(-1) : T(1), T(0)};
     return {T(0), T(0), p.z < T(0) ? T(-1) : T(1)};
@@ -118,7 +118,7 @@ PHONG_HD constexpr int quadratic_roots(T A, T B, T C, T& t0, T& t1)
 {
     const T disc = B * B - A * C;
     if (!(disc >= T(0))) return 0; // also NaN
-    const T root = phong::sqrt(disc);
+    const T root = detail::sqrt(disc);
     const T q = -(B + (B < T(0) ? -root : root));
     if (q == T(0)) { // B = 0 and disc = 0: A t^2 + C = 0 with A C = 0
         if (A != T(0) && C == T(0)) { t0 = T(0); return 1; }
@@ -172,8 +172,8 @@ PHONG_HD constexpr bool ray_box(const glm::vec<3, T, Q>& S, const glm::vec<3, T,
         T t0 = (lo[a] - S[a]) / c[a], t1 = (hi[a] - S[a]) / c[a];
         if (t0 != t0 || t1 != t1) return false; // NaN input
         if (t1 < t0) { const T tmp = t0; t0 = t1; t1 = tmp; }
-        enter = phong::max(enter, t0);
-        leave = phong::min(leave, t1);
+        enter = detail::max(enter, t0);
+        leave = detail::min(leave, t1);
     }
     return enter <= leave;
 }
@@ -186,8 +186,8 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr T direction_scale(const glm::vec<3, T, Q>& c)
 {
     constexpr T max = std::numeric_limits<T>::max();
-    if (!(phong::abs(c.x) <= max && phong::abs(c.y) <= max && phong::abs(c.z) <= max)) return T(0);
-    const T largest = phong::max_abs(c);
+    if (!(detail::abs(c.x) <= max && detail::abs(c.y) <= max && detail::abs(c.z) <= max)) return T(0);
+    const T largest = detail::max_abs(c);
     if (largest == T(0)) return T(0);
     return math_traits<T>::inverse_pow2_scale(largest);
 }
@@ -220,25 +220,25 @@ template <class T> PHONG_HD constexpr ray_hit<T> scaled_back(const ray_hit<T>& h
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
-    const T a = phong::dot(c, c);
+    const T a = detail::dot(c, c);
     if (!detail::normal_square(a)) [[unlikely]] { // c.c overflowed or underflowed, or c is 0 or NaN
         const T s = detail::direction_scale(c); // the same ray with c s, t = t' s
         if (s == T(0)) return {};               // c = 0, inf or NaN
         return detail::scaled_back(phong::ray_sphere(S, c * s, t_min / s), s, t_min);
     }
-    const T b = phong::dot(S, c);
+    const T b = detail::dot(S, c);
     const glm::vec<3, T, Q> closest = S - c * (b / a); // the foot of the perpendicular from the centre
-    const T one_minus = T(1) - phong::dot(closest, closest); // disc / (c.c)
+    const T one_minus = T(1) - detail::dot(closest, closest); // disc / (c.c)
     if (!(one_minus >= T(0))) return {};
-    const T root = phong::sqrt(a) * phong::sqrt(one_minus); // sqrt(disc), no overflow of a * ...
+    const T root = detail::sqrt(a) * detail::sqrt(one_minus); // sqrt(disc), no overflow of a * ...
     const T q = -(b + (b < T(0) ? -root : root));
     if (q == T(0)) return detail::first_after(1, T(0), T(0), t_min, primitive_part::surface); // tangent at S
-    const T SS = phong::dot(S, S);
+    const T SS = detail::dot(S, S);
     T t0;
     if (SS <= std::numeric_limits<T>::max()) {
         t0 = (SS - T(1)) / q;
     } else { // S.S overflowed: (|S|^2 - 1) / q as (|S| / q) |S| - 1 / q
-        const T L = phong::length(S);
+        const T L = detail::length(S);
         t0 = (L / q) * L - T(1) / q;
     }
     return detail::first_after(2, t0, q / a, t_min, primitive_part::surface);
@@ -264,7 +264,7 @@ PHONG_HD constexpr ray_hit<T> ray_square(const glm::vec<3, T, Q>& S, const glm::
     const ray_hit<T> h = phong::ray_plane(S, c, t_min);
     if (!h) return h;
     const T x = S.x + h.t * c.x, y = S.y + h.t * c.y;
-    if (!(phong::abs(x) <= T(1) && phong::abs(y) <= T(1))) return {};
+    if (!(detail::abs(x) <= T(1) && detail::abs(y) <= T(1))) return {};
     return h;
 }
 
@@ -314,13 +314,13 @@ template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s,
                                                    T t_min = T(0))
 {
-    if (!detail::normal_square(phong::dot(c, c))) [[unlikely]] { // as in ray_sphere
+    if (!detail::normal_square(detail::dot(c, c))) [[unlikely]] { // as in ray_sphere
         const T scale = detail::direction_scale(c); // the same ray with c scale, t = t' scale
         if (scale == T(0)) return {};               // c = 0, inf or NaN
         return detail::scaled_back(phong::ray_tapered_cylinder(S, c * scale, s, t_min / scale), scale, t_min);
     }
-    const T R = phong::max(T(1), s);
-    if (phong::abs(S.x) <= T(2) * R && phong::abs(S.y) <= T(2) * R && S.z >= -R && S.z <= T(1) + R)
+    const T R = detail::max(T(1), s);
+    if (detail::abs(S.x) <= T(2) * R && detail::abs(S.y) <= T(2) * R && S.z >= -R && S.z <= T(1) + R)
         return detail::tapered_cylinder_hits(S, c, s, t_min, T(0));
     T enter = T(0), leave = T(0);
     if (!detail::ray_box(S, c, glm::vec<3, T, Q>(-R, -R, T(0)), glm::vec<3, T, Q>(R, R, T(1)), enter, leave) || !(leave > t_min) ||

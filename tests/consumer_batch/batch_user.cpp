@@ -84,8 +84,8 @@ template <features F, class T> bool check(const char* name)
     const std::size_t count = 2 * batch_width<T> + 3; // two full steps and a tail
     const hits<T> h = make_hits<T>(count);
     std::vector<light<T>> lights(2);
-    lights[0] = light<T>::seed000({T(3), T(2), T(2), T(1)}, glm::vec<3, T>(T(1)));
-    lights[1] = light<T>::seed000({T(-3), T(1), T(3), T(1)}, glm::vec<3, T>(T(0.5), T(0.75), T(1)));
+    lights[0] = light<T>::with_strength({T(3), T(2), T(2), T(1)}, glm::vec<3, T>(T(1)));
+    lights[1] = light<T>::with_strength({T(-3), T(1), T(3), T(1)}, glm::vec<3, T>(T(0.5), T(0.75), T(1)));
     for (light<T>& L : lights) L.ambient = glm::vec<3, T>(T(0.25));
     const material<T> mat{.ka = glm::vec<3, T>(T(0.2)), .kd = glm::vec<3, T>(T(0.6)), .ks = glm::vec<3, T>(T(0.3)), .shininess = T(16)};
     environment<T> env{.ambient = glm::vec<3, T>(T(0.5))};
@@ -93,7 +93,7 @@ template <features F, class T> bool check(const char* name)
     if constexpr (F.view == view_model::eye_point) env.eye = glm::vec<4, T>(T(0.5), T(-0.5), T(1), T(1));
 
     bool ok = true;
-    for (int masked_lights = 0; masked_lights < 2; ++masked_lights) {
+    for (int masked_lights = 0; phong::detail::masked_lights < 2; ++masked_lights) {
         const std::span<const std::uint64_t> masks = masked_lights ? std::span<const std::uint64_t>(h.masks) : std::span<const std::uint64_t>();
         soa_points<T> soa{.positions = {h.px, h.py, h.pz}, .normals = {h.nx, h.ny, h.nz}, .light_masks = masks};
         aos_points<T> aos{.positions = h.p, .normals = h.n, .light_masks = masks};

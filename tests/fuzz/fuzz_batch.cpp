@@ -306,8 +306,8 @@ tolerance_result tolerance(const scene<T>& s, std::size_t i)
     const wvec Q{wide(s.px[i]), wide(s.py[i]), wide(s.pz[i])};
     wvec n{wide(s.nx[i]), wide(s.ny[i]), wide(s.nz[i])};
     wvec v{};
-    if constexpr (F.view == view_model::perspective) v = scaled(Q, -1);
-    else if constexpr (F.view == view_model::orthographic) v = widen(glm::vec<3, T>(s.env.eye));
+    if constexpr (F.view == view_model::eye_at_origin) v = scaled(Q, -1);
+    else if constexpr (F.view == view_model::fixed_direction) v = widen(glm::vec<3, T>(s.env.eye));
     else v = widen(glm::vec<3, T>(s.env.eye)) - scaled(Q, wide(s.env.eye.w));
     if (norm(n) == 0 || norm(v) == 0) return out; // no diffuse or specular at all: fuzz_shade's domain
     // A homogeneous difference P.xyz - P.w Q beyond the range of T (|P.w Q| or the difference
@@ -326,7 +326,7 @@ tolerance_result tolerance(const scene<T>& s, std::size_t i)
         overflows(widen(glm::vec<3, T>(s.env.eye)), wide(s.env.eye.w)))
         return out;
     if (exact && !(moderate<T>(Q) && moderate<T>(n) && moderate_length<T>(n) && moderate_length<T>(v) &&
-                   (F.view == view_model::perspective || moderate<T>(widen(glm::vec<3, T>(s.env.eye))))))
+                   (F.view == view_model::eye_at_origin || moderate<T>(widen(glm::vec<3, T>(s.env.eye))))))
         return out;
     n = scaled(n, 1 / norm(n));
     v = scaled(v, 1 / norm(v));
@@ -457,7 +457,7 @@ void check(scene<T>& s)
         else shade_batch<F>(pos, nor, s.mats[0], lights, out, s.env, front);
         for (std::size_t i = 0; i < n; ++i) got[i] = {r[i], g[i], b[i], a[i]};
     }
-    const bool eye_read = F.view != view_model::perspective;
+    const bool eye_read = F.view != view_model::eye_at_origin;
     for (std::size_t i = 0; i < n; ++i) {
         current_point = i;
         ++stats.points;
@@ -525,14 +525,14 @@ constexpr features feature_table[] = {
              .spot = spot_model::opengl, .mode = evaluation::stable},
     features{.light_ambient = true, .attenuation = attenuation_model::windowed, .spot = spot_model::smooth,
              .attenuate_ambient = false, .mode = evaluation::exact},
-    features{.lights = light_kind::directional, .two_sided = facing::view, .view = view_model::orthographic,
+    features{.lights = light_kind::directional, .two_sided = facing::view, .view = view_model::fixed_direction,
              .mode = evaluation::stable},
     features{.specular = specular_model::blinn, .specular_gate = false, .two_sided = facing::flag,
              .view = view_model::eye_point, .emission = true, .alpha = true, .mode = evaluation::stable},
-    presets::seed000_classic, // exact, eye_point, polynomial, two-sided view, alpha
-    presets::with_mode(presets::seed000_classic, evaluation::stable),
-    presets::seed001_raytracer, // Blinn, exact, positional, eye_point, no gate
-    features{.attenuation = attenuation_model::polynomial, .spot = spot_model::opengl, .view = view_model::orthographic,
+    presets::classic_phong, // exact, eye_point, polynomial, two-sided view, alpha
+    presets::with_mode(presets::classic_phong, evaluation::stable),
+    presets::blinn_phong_per_light_ambient, // Blinn, exact, positional, eye_point, no gate
+    features{.attenuation = attenuation_model::polynomial, .spot = spot_model::opengl, .view = view_model::fixed_direction,
              .mode = evaluation::exact},
     features{.specular = specular_model::blinn, .attenuation = attenuation_model::windowed, .spot = spot_model::smooth,
              .mode = evaluation::stable, .precision = stable_precision::twofold},

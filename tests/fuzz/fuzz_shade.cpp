@@ -320,7 +320,7 @@ void check(const scene<T>& s, bool params_valid)
     if (!params_valid) return; // only the sanitizers judge out-of-domain parameters
     ++stats.params_valid;
 
-    const bool eye_read = F.view != view_model::perspective;
+    const bool eye_read = F.view != view_model::eye_at_origin;
     const bool geometry_finite = all_fin(s.position) && all_fin(s.normal) && (F.view != view_model::eye_point || all_fin(s.env.eye));
     if (!geometry_finite) { // shade.hpp: NaN or inf in position, normal or (eye_point) eye: every channel NaN
         ++stats.nan_policy;
@@ -382,20 +382,20 @@ void check(const scene<T>& s, bool params_valid)
 using namespace phong;
 constexpr features feature_table[] = {
     features{}, // seed 000's default: phong, exact, no attenuation, perspective
-    presets::seed000_classic,
-    presets::with_mode(presets::seed000_classic, evaluation::stable),
-    presets::seed001_raytracer,
-    presets::with_mode(presets::seed001_raytracer, evaluation::stable),
-    presets::seed003_ads,
-    presets::seed003_diffuse,
+    presets::classic_phong,
+    presets::with_mode(presets::classic_phong, evaluation::stable),
+    presets::blinn_phong_per_light_ambient,
+    presets::with_mode(presets::blinn_phong_per_light_ambient, evaluation::stable),
+    presets::glsl_ads,
+    presets::diffuse_only,
     features{.light_ambient = true, .specular = specular_model::blinn, .attenuation = attenuation_model::windowed,
              .spot = spot_model::smooth, .attenuate_ambient = false, .two_sided = facing::flag,
-             .view = view_model::orthographic, .emission = true, .alpha = true, .mode = evaluation::stable},
+             .view = view_model::fixed_direction, .emission = true, .alpha = true, .mode = evaluation::stable},
     features{.specular = specular_model::phong, .lights = light_kind::positional, .attenuation = attenuation_model::polynomial,
              .spot = spot_model::opengl, .two_sided = facing::view, .emission = true, .mode = evaluation::stable,
              .precision = stable_precision::twofold}, // float's twofold route (float's default is wider)
     features{.specular = specular_model::phong, .lights = light_kind::directional, .attenuation = attenuation_model::windowed,
-             .spot = spot_model::opengl, .view = view_model::orthographic, .mode = evaluation::exact},
+             .spot = spot_model::opengl, .view = view_model::fixed_direction, .mode = evaluation::exact},
     features{.specular = specular_model::blinn, .specular_gate = false, .attenuation = attenuation_model::polynomial,
              .spot = spot_model::smooth, .two_sided = facing::flag, .view = view_model::eye_point, .mode = evaluation::exact},
     features{.light_ambient = true, .specular = specular_model::phong, .attenuation = attenuation_model::polynomial,

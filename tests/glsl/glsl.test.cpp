@@ -221,7 +221,7 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
         const bool attenuated = F.attenuation == phong::attenuation_model::polynomial && w > 0;
         if (attenuated) {
             den = ld(L.attenuation.constant) + ld(L.attenuation.linear) * len + ld(L.attenuation.quadratic) * len * len;
-            f = 1 / std::max(den, ld(phong::attenuation_denominator_min<float>));
+            f = 1 / std::max(den, ld(phong::detail::attenuation_denominator_min<float>));
         }
         // The window and the spot, beyond the exact bound's features: their own conditioning
         // (shade.hpp: "a spot adds its own conditioning: the cone cosine's few eps of rounding times
@@ -233,7 +233,7 @@ reference evaluate(const scene& s, double operation_factor, double pow_per_y_u, 
         if (F.attenuation == phong::attenuation_model::windowed && w > 0) {
             const ld r = len / ld(L.attenuation.range), r4 = r * r * r * r;
             const ld window = std::clamp(1 - r4, ld(0), ld(1));
-            f = window * window / std::max(len * len, ld(phong::attenuation_denominator_min<float>));
+            f = window * window / std::max(len * len, ld(phong::detail::attenuation_denominator_min<float>));
             if (window > 0x1p-10) f_extra += double(8 * r4 / window) * 8 * u + 8 * u;
             else if (r4 < 1 + 64 * u) f_extra = inf; // closing: no relative bound
             // else beyond the range by more than the ratio's error: f = 0 on both sides

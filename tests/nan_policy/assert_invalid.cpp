@@ -19,7 +19,7 @@ int main(int argc, char** argv)
     using namespace phong;
     const char* mode = argc > 1 ? argv[1] : "valid";
     material<float> mat{};
-    std::array<light<float>, 1> lights{light<float>::seed000({0, 0, 1, 0}, {1, 1, 1})};
+    std::array<light<float>, 1> lights{light<float>::with_strength({0, 0, 1, 0}, {1, 1, 1})};
     if (std::strcmp(mode, "invalid") == 0) mat.kd.x = -1.0f; // negative reflectivity: validate(mat) fails
     if (std::strcmp(mode, "light_w") == 0) lights[0].position = {0.0f, 0.0f, 2.0f, 2.0f};
     if (std::strcmp(mode, "batch_overlap") == 0) {

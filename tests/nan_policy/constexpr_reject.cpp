@@ -30,7 +30,7 @@ constexpr material<double> make_material()
 
 constexpr light<double> make_light()
 {
-    light<double> L = light<double>::seed000({1, 2, 3, 1}, {1, 1, 1});
+    light<double> L = light<double>::with_strength({1, 2, 3, 1}, {1, 1, 1});
 #if PHONG_REJECT_CASE == 4
     L.attenuation.constant = -1; // negative attenuation coefficient
 #elif PHONG_REJECT_CASE == 5

@@ -138,7 +138,7 @@ public:
     glm::vec<4, T> eye(phong::view_model view)
     {
         using phong::view_model;
-        if (view == view_model::orthographic) return {uniform(-0.5, 0.5), uniform(-0.5, 0.5), uniform(0.5, 2), T(0)};
+        if (view == view_model::fixed_direction) return {uniform(-0.5, 0.5), uniform(-0.5, 0.5), uniform(0.5, 2), T(0)};
         if (view == view_model::eye_point) {
             if (coin(0.2)) return {uniform(-0.5, 0.5), uniform(-0.5, 0.5), T(1), T(0)};
             return {uniform(-2, 2), uniform(-2, 2), uniform(0, 4), T(1)};
@@ -179,8 +179,8 @@ bool well_conditioned(const phong::features& F, const scene<T>& s, double margin
     const wvec3 Q = widen(s.position);
     const wvec3 eye{wide(s.env.eye.x), wide(s.env.eye.y), wide(s.env.eye.z)};
     wvec3 v;
-    if (F.view == view_model::perspective) v = wnormalize(-Q);
-    else if (F.view == view_model::orthographic) v = wnormalize(eye);
+    if (F.view == view_model::eye_at_origin) v = wnormalize(-Q);
+    else if (F.view == view_model::fixed_direction) v = wnormalize(eye);
     else v = wnormalize(eye - Q * wide(s.env.eye.w));
     if (wdot(v, v) < 0.5) return false;
     wvec3 n = wnormalize(widen(s.normal));

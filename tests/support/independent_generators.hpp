@@ -110,7 +110,7 @@ evaluation<T> evaluate(const Scene& s)
         if (w > 0) {
             const quad D = len / w;
             den = quad(L.attenuation.constant) + quad(L.attenuation.linear) * D + quad(L.attenuation.quadratic) * D * D;
-            const quad floor = quad(phong::attenuation_denominator_min<T>);
+            const quad floor = quad(phong::detail::attenuation_denominator_min<T>);
             p.f = 1 / (den < floor ? floor : den);
         }
         const q3 r = n * (2 * p.nl) - l;

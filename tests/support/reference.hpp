@@ -24,7 +24,7 @@ struct wcolor {
 };
 
 /// The model at one point, in the wide type. T is the library's scalar type (its attenuation cap
-/// attenuation_denominator_min<T> is a parameter of the model).
+/// phong::detail::attenuation_denominator_min<T> is a parameter of the model).
 template <class T>
 wcolor reference_shade(const phong::features& F, const glm::vec<3, T>& position, const glm::vec<3, T>& normal,
                        const phong::material<T>& mat, std::span<const phong::light<T>> lights,
@@ -37,8 +37,8 @@ wcolor reference_shade(const phong::features& F, const glm::vec<3, T>& position,
 
     // v: toward the viewer.
     wvec3 v;
-    if (F.view == view_model::perspective) v = wnormalize(-Q);
-    else if (F.view == view_model::orthographic) v = wnormalize(eye_xyz);
+    if (F.view == view_model::eye_at_origin) v = wnormalize(-Q);
+    else if (F.view == view_model::fixed_direction) v = wnormalize(eye_xyz);
     else v = wnormalize(eye_xyz - Q * eye_w);
 
     // n: unit, conditionally negated.
@@ -63,7 +63,7 @@ wcolor reference_shade(const phong::features& F, const glm::vec<3, T>& position,
         wide f = 1;
         if (F.attenuation != attenuation_model::none && F.lights != light_kind::directional && w > 0) {
             const wide dist = len / w;
-            const wide floor = wide(attenuation_denominator_min<T>);
+            const wide floor = wide(phong::detail::attenuation_denominator_min<T>);
             if (F.attenuation == attenuation_model::polynomial) {
                 const wide denom = wide(L.attenuation.constant) + wide(L.attenuation.linear) * dist +
                                    wide(L.attenuation.quadratic) * dist * dist;

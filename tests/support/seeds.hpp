@@ -53,7 +53,7 @@ R atten(const seed000_light<R>& L, const glm::vec<3, R>& Q)
 }
 
 /// Seed 000 at Q (pvaIn.ecPosition) with normal pvaIn.ecUnitNormal; returns (I_Q, alpha).
-/// As in features.hpp's seed000_classic: ec_nHat is negated when it faces away from vHat, and the
+/// As in features.hpp's classic_phong: ec_nHat is negated when it faces away from vHat, and the
 /// dot products are clamped at 0 (max(n.l, 0), max(r.v, 0)); no gate.
 template <class R>
 glm::vec<4, R> seed000(const glm::vec<3, R>& ecPosition, const glm::vec<3, R>& ecUnitNormal,

@@ -6,7 +6,7 @@
 // half a half-float ulp 2.4e-4 relative. The bounds below are a few 1e-7 to 1e-5, so the fast
 // mode's error stays the exact mode's conditioning (phong/accuracy.hpp, bounds<evaluation::fast, T>).
 // The same templates run on float, double and SIMD batches: the lane-wise bit operations come from
-// `fast::lanes<V>`, specialized for xsimd batches in detail/simd/fast_lanes.hpp (included by batch.hpp through detail/batch/kernel.hpp).
+// `fast::detail::lanes<V>`, specialized for xsimd batches in detail/simd/fast_lanes.hpp (included by batch.hpp through detail/batch/kernel.hpp).
 // The fast mode's route (detail/exact.hpp) keeps the exact mode's kernels on float SIMD lanes, which
 // are of the same kind and cost there (detail/simd/lanes_power.hpp, rsqrt_normal) and within these bounds.
 // tests/fast_math.test.cpp checks every bound on dense sweeps against long double; the benchmark
@@ -32,6 +32,7 @@
 
 namespace phong::fast {
 
+namespace detail {
 /// Lane-wise bit access for the fast kernels: the unsigned integer type of V's bits, the casts,
 /// and a multiply-add (contracted to an fma where the hardware has one). Scalars here; xsimd
 /// batches in detail/simd/fast_lanes.hpp.
@@ -46,6 +47,7 @@ struct lanes {
     /// a * b + c (contracted to an fma where the compiler does).
     PHONG_INLINE static constexpr V madd(V a, V b, V c) { return a * b + c; }
 };
+} // namespace detail
 
 namespace detail {
 
@@ -83,12 +85,12 @@ inline constexpr float exp2_e[6] = {0x1p+0f, 0x1.62e43p-1f, 0x1.ebf906p-3f, 0x1.
 template <class V>
 PHONG_INLINE constexpr V log2_estrin(V x)
 {
-    using S = scalar_t<V>;
+    using S = phong::detail::scalar_t<V>;
     using fmt = format<S>;
     using L = lanes<V>;
     using U = typename L::bits_t;
     const auto subnormal = x < V(fmt::min_normal);
-    const V xs = phong::select(subnormal, x * V(fmt::subnormal_scale), x);
+    const V xs = phong::detail::select(subnormal, x * V(fmt::subnormal_scale), x);
     const U u = L::bits(xs);
     // (u - bits(sqrt(1/2)) + bits(1)) >> mantissa_bits is k + bias, k the exponent of x / sqrt(1/2):
     // nonnegative for every positive normal x, so a logical shift (unsigned) does.
@@ -107,7 +109,7 @@ PHONG_INLINE constexpr V log2_estrin(V x)
     const V r2 = r * r, r4 = r2 * r2;
     const V p01 = L::madd(c(1), r, c(0)), p23 = L::madd(c(3), r, c(2)), p45 = L::madd(c(5), r, c(4)), p67 = L::madd(c(7), r, c(6));
     const V p = L::madd(L::madd(p67, r2, p45), r4, L::madd(p23, r2, p01));
-    return L::madd(r, p, k - phong::select(subnormal, V(fmt::subnormal_log2), V(S(0))));
+    return L::madd(r, p, k - phong::detail::select(subnormal, V(fmt::subnormal_log2), V(S(0))));
 }
 
 /// 2^y for y <= 0: y rounded to an integer n plus t in [-1/2, 1/2], 2^n from the exponent bits,
@@ -120,11 +122,11 @@ PHONG_INLINE constexpr V log2_estrin(V x)
 template <class V>
 PHONG_INLINE constexpr V exp2_estrin(V y)
 {
-    using S = scalar_t<V>;
+    using S = phong::detail::scalar_t<V>;
     using fmt = format<S>;
     using L = lanes<V>;
     using U = typename L::bits_t;
-    const V yc = phong::max(y, V(S(-fmt::bias)));  // n >= -bias: n = -bias gives 2^n's bits 0, i.e. 0
+    const V yc = phong::detail::max(y, V(S(-fmt::bias)));  // n >= -bias: n = -bias gives 2^n's bits 0, i.e. 0
     const auto [shifted, rounded] = phong::detail::ieee::round_by_shift(yc, V(fmt::shift)); // low bits: n = round(y)
     const V t = phong::detail::ieee::opaque(yc - rounded); // exact; not re-expanded as yc E - rounded E
     const U n_biased = L::bits(shifted) - L::bits(V(fmt::shift)) + U(U(fmt::bias));
@@ -151,27 +153,28 @@ inline constexpr double pow_unit_max_rel = 8e-6;
 /// Edge: m = 0 gives 1 for every x (pow(0, 0) = 1); x = 0 gives 0 for m > 0; x = 1 gives exactly 1;
 /// results below T's smallest normal number are flushed to 0. Outside the domain: never NaN or
 /// inf (NaN x gives 1 for m = 0, else 0; x > 1 is treated as 1 only up to P's accuracy, so clamp x).
-/// Exact twin: phong::pow_unit (math.hpp). Branch-free: scalars and SIMD lanes alike.
+/// Exact twin: phong::detail::pow_unit (math.hpp). Branch-free: scalars and SIMD lanes alike.
 /// Float in CUDA device code: 2^min(m lg2(x), 0) on the GPU's special-function units instead,
 /// relative error pow_unit_sfu_max_rel(m) (phong/fast_sfu.hpp; the same edges).
 template <class V>
 PHONG_INLINE constexpr V pow_unit(V x, V m)
 {
-    using S = scalar_t<V>;
+    using S = phong::detail::scalar_t<V>;
 #if defined(__CUDA_ARCH__) // float in CUDA device code: the SFU's lg2/ex2, bound pow_unit_sfu_max_rel(m) (fast_sfu.hpp)
     if constexpr (std::is_same_v<V, float>)
         if (!std::is_constant_evaluated()) return detail::pow_unit_sfu(x, m);
 #endif
     const V y = m * detail::log2_estrin(x);
-    const V p = detail::exp2_estrin(phong::min(y, V(S(0))));
+    const V p = detail::exp2_estrin(phong::detail::min(y, V(S(0))));
     const auto positive = x > V(S(0));
-    return phong::select(positive, phong::select(m == V(S(0)), V(S(1)), p), phong::detail::power_of_zero(m));
+    return phong::detail::select(positive, phong::detail::select(m == V(S(0)), V(S(1)), p), phong::detail::power_of_zero(m));
 }
 
-/// Largest exponent fast::pow_integer takes (its error grows like the exponent).
+namespace detail {
+/// Largest exponent fast::detail::pow_integer takes (its error grows like the exponent).
 inline constexpr unsigned pow_integer_max_exponent = 64;
 
-/// Relative error bound of fast::pow_integer in T's arithmetic (u = T's unit roundoff, 2^-24 for
+/// Relative error bound of fast::detail::pow_integer in T's arithmetic (u = T's unit roundoff, 2^-24 for
 /// float): x^n by left-to-right binary powering (the bits of n from the top: square, then
 /// multiply by x where the bit is set). With e_k the relative error of the partial power x^k
 /// (e_1 = 0), a squaring gives e_2k <= 2 e_k + u and a multiplication by the exact x gives
@@ -180,9 +183,9 @@ inline constexpr unsigned pow_integer_max_exponent = 64;
 /// mode's bounds, phong/accuracy.hpp, hold unchanged). Results below T's smallest normal number
 /// are subnormal or 0 (absolute error below 2^-126). tests/fast_math.test.cpp checks it against
 /// long double pow for every n in [0, 64].
-template <class T> inline constexpr double pow_integer_max_rel = double(pow_integer_max_exponent - 1) * std::numeric_limits<scalar_t<T>>::epsilon() / 2;
+template <class T> inline constexpr double pow_integer_max_rel = double(pow_integer_max_exponent - 1) * std::numeric_limits<phong::detail::scalar_t<T>>::epsilon() / 2;
 
-/// fast::pow_integer's schedule for one exponent n, made once where n is the same for many
+/// fast::detail::pow_integer's schedule for one exponent n, made once where n is the same for many
 /// powers (shade_batch: once per call): the squarings and the multiplications by x that follow
 /// them, from n's bits. chain: 0 for n = 0 (x^0 = 1), 1 + squarings where n is a power of two
 /// (squarings only: pow_integer runs them without a test per step), else 8.
@@ -209,7 +212,7 @@ PHONG_INLINE constexpr pow_integer_plan plan_pow_integer(unsigned n)
 template <class V>
 PHONG_INLINE constexpr V pow_integer(V x, const pow_integer_plan& plan)
 {
-    using S = scalar_t<V>;
+    using S = phong::detail::scalar_t<V>;
     V power = x;
     switch (plan.chain) {
     case 0: return V(S(1)); // pow(0, 0) = 1
@@ -238,14 +241,14 @@ PHONG_INLINE constexpr V pow_integer(V x, const pow_integer_plan& plan)
 ///   fast::pow_unit's kernels.
 /// Error: relative pow_integer_max_rel<T>. Edge: n = 0 gives 1 for every x (pow(0, 0) = 1); x = 0
 /// gives 0 for n > 0; x = 1 gives exactly 1. Pre: n <= pow_integer_max_exponent (larger n: the
-/// result is still x^n rounded, but the bound grows as (n - 1) u). Exact twin: phong::pow_unit.
+/// result is still x^n rounded, but the bound grows as (n - 1) u). Exact twin: phong::detail::pow_unit.
 template <class V>
 PHONG_INLINE constexpr V pow_integer(V x, unsigned n)
 {
     return pow_integer(x, plan_pow_integer(n));
 }
 
-/// Relative error bound of fast::reciprocal_normal for a positive normal x. Float SIMD lanes: a
+/// Relative error bound of fast::detail::reciprocal_normal for a positive normal x. Float SIMD lanes: a
 /// hardware estimate r0 with relative error e0 refined by one Newton step in correction form,
 /// r1 = r0 + r0 (1 - x r0): the step leaves e0^2 (AVX-512 rcp14: e0 < 2^-14, 2^-28; AVX rcp:
 /// e0 <= 1.5 2^-12, 2.25 2^-24), 1 - x r0 is one fma (its rounding is u e0: negligible) and the
@@ -262,8 +265,9 @@ template <class V>
 PHONG_INLINE constexpr V reciprocal_normal(V x)
 {
     if constexpr (requires { lanes<V>::reciprocal_normal(x); }) return lanes<V>::reciprocal_normal(x);
-    else return V(scalar_t<V>(1)) / x;
+    else return V(phong::detail::scalar_t<V>(1)) / x;
 }
+} // namespace detail
 
 /// Relative error bound of fast::rsqrt for a positive normal x: an estimate with relative error
 /// e0 <= 1.5 2^-12 (SSE rsqrtss/rsqrtps, the coarsest used) refined by one Newton step has
@@ -287,7 +291,7 @@ namespace detail {
 template <class V>
 PHONG_INLINE constexpr V rsqrt_newton_product(V half_x, V r)
 {
-    return r * lanes<V>::madd(-half_x, r * r, V(scalar_t<V>(1.5)));
+    return r * lanes<V>::madd(-half_x, r * r, V(phong::detail::scalar_t<V>(1.5)));
 }
 
 } // namespace detail
@@ -300,12 +304,12 @@ PHONG_INLINE constexpr V rsqrt_newton_product(V half_x, V r)
 /// detail/simd/fast_lanes.hpp. Edge: x = 0 gives inf, x = inf gives 0 (the estimate, unrefined);
 /// x < 0 or NaN: NaN; a subnormal x gives inf with rsqrtss (it reads the input as 0), the exact
 /// 1/sqrt(x) elsewhere (shade's fast mode never passes one: it drops such vectors first).
-/// Exact twin: phong::rsqrt (math.hpp).
+/// Exact twin: phong::detail::rsqrt (math.hpp).
 template <class V>
 PHONG_INLINE constexpr V rsqrt(V x)
 {
-    if constexpr (requires { lanes<V>::rsqrt(x); }) {
-        return lanes<V>::rsqrt(x); // SIMD batches
+    if constexpr (requires { detail::lanes<V>::rsqrt(x); }) {
+        return detail::lanes<V>::rsqrt(x); // SIMD batches
     } else {
 #if defined(__CUDA_ARCH__) // float in CUDA device code: rsqrtf, bound rsqrt_sfu_max_rel (fast_sfu.hpp)
         if constexpr (std::is_same_v<V, float>)
@@ -326,7 +330,7 @@ PHONG_INLINE constexpr V rsqrt(V x)
             }
         }
 #endif
-        return phong::rsqrt(x);
+        return phong::detail::rsqrt(x);
     }
 }
 

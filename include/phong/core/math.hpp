@@ -36,13 +36,13 @@
 #endif
 
 namespace phong {
+namespace detail {
 
 /// Largest distance, in ulp of T, between the constant-evaluation path and std:: for sqrt, exp,
 /// log, log1p and pow on finite arguments whose result is a normal number.
 inline constexpr int constexpr_tolerance_ulp = 2;
 
 
-namespace detail {
 
 /// The error e of the product p = fl(a * b): a * b = p + e exactly (Veltkamp's split of a and b
 /// into halves of (digits + 1) / 2 bits, Dekker's product), for |a|, |b| below max / 2^((digits +
@@ -74,7 +74,6 @@ template <class T> PHONG_INLINE constexpr T two_sum_error(T a, T b, T hi)
     return ieee::two_sum_error(a, b, hi);
 }
 
-} // namespace detail
 
 /// Customization point: how phong evaluates its scalar kernels on the number type V.
 /// The primary template serves float, double and long double (constexpr path + std:: path).
@@ -224,7 +223,6 @@ template <class V> PHONG_INLINE constexpr V sqrt(V x) { return math_traits<V>::s
 /// 1 / sqrt(x) (< 1 ulp); SIMD float lanes: a hardware estimate refined by one Newton step
 /// (< 2 ulp), see batch.hpp.
 template <class V> PHONG_INLINE constexpr V rsqrt(V x) { return math_traits<V>::rsqrt(x); }
-namespace detail {
 /// 1/sqrt(x) for x a positive normal number (the caller has checked, or selects the lanes
 /// where it is not away): SIMD float lanes skip rsqrt's guards for 0 and inf; elsewhere rsqrt.
 template <class V> PHONG_INLINE constexpr V rsqrt_normal(V x)
@@ -232,7 +230,6 @@ template <class V> PHONG_INLINE constexpr V rsqrt_normal(V x)
     if constexpr (requires { math_traits<V>::rsqrt_normal(x); }) return math_traits<V>::rsqrt_normal(x);
     else return math_traits<V>::rsqrt(x);
 }
-} // namespace detail
 /// e^x. Overflow gives inf, underflow 0.
 template <class V> PHONG_INLINE constexpr V exp(V x) { return math_traits<V>::exp(x); }
 /// ln x. log(0) = -inf, x < 0 gives NaN.
@@ -254,7 +251,6 @@ template <class V> PHONG_INLINE constexpr V pow_unit(V x, V m)
     if constexpr (requires { math_traits<V>::pow_unit(x, m); }) return math_traits<V>::pow_unit(x, m);
     else return math_traits<V>::pow(x, m);
 }
-namespace detail {
 /// pow_unit for x in [0, 1] and a finite m >= 0 only (NaN outside but for 1^m = 1), without pow_unit's libm
 /// fallback (detail/power.hpp): the shading loop's power, whose m validate() has checked.
 /// AtMostOne: x <= 1 holds by construction (cosine_power's base, clamped to 1), so the kernel
@@ -268,11 +264,10 @@ template <bool AtMostOne = false, class V> PHONG_INLINE constexpr V pow_unit_in_
         else return power::pow_unit_in_domain(x, m);
     } else
 #endif
-        return phong::pow_unit(x, m);
+        return detail::pow_unit(x, m);
 }
 /// pow_unit_in_domain<true>: the power of a base at most 1 by construction.
 template <class V> PHONG_INLINE constexpr V pow_unit_at_most_one(V x, V m) { return pow_unit_in_domain<true>(x, m); }
-} // namespace detail
 /// a * b + c rounded once (std::fma). Constant evaluation: exact when c = -fl(a b) (the
 /// error-free products phong uses), else within 1 ulp (float: formed in long double, rounded twice).
 template <class V> PHONG_INLINE constexpr V fma(V a, V b, V c) { return math_traits<V>::fma(a, b, c); }
@@ -325,6 +320,8 @@ template <class V> PHONG_INLINE constexpr V cos_degrees(V degrees)
     }
     return static_cast<V>(sum);
 }
+
+} // namespace detail
 
 } // namespace phong
 

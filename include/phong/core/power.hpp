@@ -260,7 +260,7 @@ PHONG_INLINE constexpr double pow_unit_kernel(double x, double m)
     return outside_domain<Ieee>(x, m);
 }
 
-/// x^m for x in [0, 1] and m >= 0 (the kernel of phong::pow_unit). Edges: pow_unit(0, 0) = 1,
+/// x^m for x in [0, 1] and m >= 0 (the kernel of detail::pow_unit). Edges: pow_unit(0, 0) = 1,
 /// pow_unit(+-0, m > 0) = +0, results below 2^-1022 are 0 (y = m log2 x < -1022). Outside the
 /// domain: x > 1 with m < 0 (a result <= 1) runs the same kernel, with the same accuracy and flush;
 /// everything else (x > 1 with m > 0, x < 0, NaN, inf) returns IEEE pow's value (std::pow at run

@@ -8,8 +8,8 @@
 // ~ m theta eps = sqrt(m) eps relative. Carrying the vectors twofold removes that term; what is
 // left is a few eps from the final roundings, log1p and exp (bounds in phong/accuracy.hpp).
 // Everything is branch-free (select), constexpr, and written on a scalar-like T so that the same
-// code runs on SIMD batches (it needs only +, -, *, /, phong::sqrt, phong::fma and select).
-// Requirement: phong::fma(a, b, c) must round once (math.hpp's contract), so fma(a, b, -a*b) is
+// code runs on SIMD batches (it needs only +, -, *, /, detail::sqrt, detail::fma and select).
+// Requirement: detail::fma(a, b, c) must round once (math.hpp's contract), so fma(a, b, -a*b) is
 // the exact error of the product. A math_traits whose fma is a*b + c (Debian's xsimd 8.1: its
 // generic fma, used for every arch but fma3<sse>, AVX-512 included) silently turns every error
 // term into 0 and the stable mode back into a ~sqrt(m) eps method; such a type must emulate fma
@@ -30,7 +30,7 @@ namespace phong::detail {
 template <class T> PHONG_INLINE constexpr T rounded_product(T a, T b)
 {
 #if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
-    return ieee::opaque(phong::fma(a, b, T(0)));
+    return ieee::opaque(detail::fma(a, b, T(0)));
 #else
     return ieee::opaque(a * b);
 #endif
@@ -83,20 +83,20 @@ PHONG_INLINE constexpr unit_twofold<T, Q> unit_twofold_of(const glm::vec<3, T, Q
         dh[k] = d[k] + dlo[k];
         dl[k] = twofold_sum_error(d[k], dlo[k], dh[k]);
     }
-    const T largest_d = phong::max_abs(dh);
-    const mask_t<T> in_range = math_traits<T>::both(phong::max_abs(d) <= largest<T>(), largest_d <= largest<T>());
-    const T scale = math_traits<T>::inverse_pow2_scale(phong::select(in_range, largest_d, T(1)));
+    const T largest_d = detail::max_abs(dh);
+    const mask_t<T> in_range = math_traits<T>::both(detail::max_abs(d) <= largest<T>(), largest_d <= largest<T>());
+    const T scale = math_traits<T>::inverse_pow2_scale(detail::select(in_range, largest_d, T(1)));
     vec3 a(T(0)), al(T(0));
     for (int k = 0; k < 3; ++k) {
-        a[k] = phong::select(in_range, dh[k] * scale, T(0));
-        al[k] = phong::select(in_range, dl[k] * scale, T(0)); // NaN when d overflowed
+        a[k] = detail::select(in_range, dh[k] * scale, T(0));
+        al[k] = detail::select(in_range, dl[k] * scale, T(0)); // NaN when d overflowed
     }
     // S = |a + al|^2 = sh + sl (products exact by fma, sums by TwoSum; al^2 is below eps^2).
     T sh = rounded_product(a[0], a[0]);
-    T sl = phong::fma(a[0], a[0], -sh) + T(2) * a[0] * al[0];
+    T sl = detail::fma(a[0], a[0], -sh) + T(2) * a[0] * al[0];
     for (int k = 1; k < 3; ++k) {
         const T p = rounded_product(a[k], a[k]);
-        const T pe = phong::fma(a[k], a[k], -p);
+        const T pe = detail::fma(a[k], a[k], -p);
         const T s = sh + p;
         sl = sl + (twofold_sum_error(sh, p, s) + pe + T(2) * a[k] * al[k]);
         sh = s;
@@ -105,20 +105,20 @@ PHONG_INLINE constexpr unit_twofold<T, Q> unit_twofold_of(const glm::vec<3, T, Q
     sl = sl - (s_hi - sh);
     sh = s_hi;
     const mask_t<T> nonzero = sh > T(0);
-    const T r = phong::select(nonzero, T(1) / phong::sqrt(phong::select(nonzero, sh, T(1))), T(0));
+    const T r = detail::select(nonzero, T(1) / detail::sqrt(detail::select(nonzero, sh, T(1))), T(0));
     // e = 1 - S r^2: r^2 = r2h + r2l exactly, sh r2h = th + tl exactly, 1 - th exact.
     const T r2h = rounded_product(r, r);
-    const T r2l = phong::fma(r, r, -r2h);
+    const T r2l = detail::fma(r, r, -r2h);
     const T th = rounded_product(sh, r2h);
-    const T tl = phong::fma(sh, r2h, -th);
-    const T e = phong::select(nonzero, ((T(1) - th) - tl) - sh * r2l - sl * r2h, T(0));
+    const T tl = detail::fma(sh, r2h, -th);
+    const T e = detail::select(nonzero, ((T(1) - th) - tl) - sh * r2l - sl * r2h, T(0));
     const T rl = r * e * T(0.5); // 1/|a| = r + rl + O(e^2)
     unit_twofold<T, Q> u{vec3(T(0)), vec3(T(0)), r, T(0)};
     for (int k = 0; k < 3; ++k) {
         u.hi[k] = rounded_product(a[k], r);
-        u.lo[k] = phong::fma(a[k], r, -u.hi[k]) + (a[k] * rl + al[k] * r);
+        u.lo[k] = detail::fma(a[k], r, -u.hi[k]) + (a[k] * rl + al[k] * r);
     }
-    u.length = phong::select(in_range, phong::sqrt(sh) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
+    u.length = detail::select(in_range, detail::sqrt(sh) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
     return u;
 }
 
@@ -129,10 +129,10 @@ PHONG_INLINE constexpr void dot_twofold(const glm::vec<3, T, Q>& ah, const glm::
                                     const glm::vec<3, T, Q>& bl, T& hi, T& lo)
 {
     T p = rounded_product(ah[0], bh[0]);
-    T err = phong::fma(ah[0], bh[0], -p) + (ah[0] * bl[0] + al[0] * bh[0]);
+    T err = detail::fma(ah[0], bh[0], -p) + (ah[0] * bl[0] + al[0] * bh[0]);
     for (int k = 1; k < 3; ++k) {
         const T h = rounded_product(ah[k], bh[k]);
-        const T r = phong::fma(ah[k], bh[k], -h);
+        const T r = detail::fma(ah[k], bh[k], -h);
         const T s = p + h;
         err = err + (twofold_sum_error(p, h, s) + r + (ah[k] * bl[k] + al[k] * bh[k]));
         p = s;
@@ -158,11 +158,11 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& c_lo)
 {
     T hi = rounded_product(c[0], c[0]);
-    T lo = phong::fma(c[0], c[0], -hi) + T(2) * c[0] * c_lo[0];
+    T lo = detail::fma(c[0], c[0], -hi) + T(2) * c[0] * c_lo[0];
     for (int k = 1; k < 3; ++k) {
         const T p = rounded_product(c[k], c[k]);
         const T s = hi + p;
-        lo = lo + (twofold_sum_error(hi, p, s) + phong::fma(c[k], c[k], -p) + T(2) * c[k] * c_lo[k]);
+        lo = lo + (twofold_sum_error(hi, p, s) + detail::fma(c[k], c[k], -p) + T(2) * c[k] * c_lo[k]);
         hi = s;
     }
     const T sum = hi + lo;
@@ -184,7 +184,7 @@ PHONG_INLINE constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>
     for (int k = 0; k < 3; ++k) {
         const T q = rounded_product(nl_hi, nh[k]); // (n.l) n_k; 2 q + pe exact below
         const T ph = T(2) * q;
-        const T pe = T(2) * (phong::fma(nl_hi, nh[k], -q) + (nl_hi * nlo[k] + nl_lo * nh[k]));
+        const T pe = T(2) * (detail::fma(nl_hi, nh[k], -q) + (nl_hi * nlo[k] + nl_lo * nh[k]));
         const T s1 = ph - lh[k];
         const T e1 = twofold_sum_error(ph, -lh[k], s1);
         const T s2 = s1 - vh[k];
@@ -232,7 +232,7 @@ PHONG_INLINE constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, 
     const unit_twofold<T, Q> h = unit_twofold_of(sum, sum_lo);
     const cosine_complement<T> x = one_minus_nh(nh, nlo, h.hi, h.lo);
     const mask_t<T> exists = h.inv_scaled > T(0);
-    return {phong::select(exists, x.complement, T(1)), phong::select(exists, x.cosine, T(0))};
+    return {detail::select(exists, x.complement, T(1)), detail::select(exists, x.cosine, T(0))};
 }
 
 } // namespace phong::detail

@@ -16,8 +16,8 @@
 #include <type_traits>
 
 namespace phong {
-
 namespace detail {
+
 /// In constant evaluation, for float and double finite inputs: the value dot(a, b) takes at run
 /// time when a product or a partial sum (in index order, as dot sums) rounds to +-inf in T (+-inf,
 /// or NaN for inf - inf), else 0. g++ rejects a finite operation whose result overflows as not a
@@ -55,7 +55,6 @@ PHONG_INLINE constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const
     return sum_inf > 0 ? std::numeric_limits<T>::infinity() : sum_inf < 0 ? -std::numeric_limits<T>::infinity() : T(0);
 #endif
 }
-} // namespace detail
 
 /// Dot product: dot(a, b) = sum_k a_k b_k, summed in index order (GLSL `dot`).
 /// Edge: overflows to inf when a product exceeds the range of T (in constant evaluation too);
@@ -84,10 +83,10 @@ template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
     T p = a[0] * b[0];
-    T err = phong::fma(a[0], b[0], -p);
+    T err = detail::fma(a[0], b[0], -p);
     for (glm::length_t k = 1; k < L; ++k) {
         const T h = a[k] * b[k];
-        const T r = phong::fma(a[k], b[k], -h);
+        const T r = detail::fma(a[k], b[k], -h);
         const T s = p + h;
         const T q = detail::two_sum_error(p, h, s); // p + h = s + q exactly
         p = s;
@@ -100,10 +99,10 @@ PHONG_INLINE constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T max_abs(const glm::vec<L, T, Q>& v)
 {
-    T m = phong::abs(v.x); // named components: see dot
-    if constexpr (L > 1) m = phong::max(m, phong::abs(v.y));
-    if constexpr (L > 2) m = phong::max(m, phong::abs(v.z));
-    if constexpr (L > 3) m = phong::max(m, phong::abs(v.w));
+    T m = detail::abs(v.x); // named components: see dot
+    if constexpr (L > 1) m = detail::max(m, detail::abs(v.y));
+    if constexpr (L > 2) m = detail::max(m, detail::abs(v.z));
+    if constexpr (L > 3) m = detail::max(m, detail::abs(v.w));
     return m;
 }
 
@@ -113,7 +112,7 @@ PHONG_INLINE constexpr T max_abs(const glm::vec<L, T, Q>& v)
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<L, T, Q> rescaled(const glm::vec<L, T, Q>& v)
 {
-    return v * math_traits<T>::inverse_pow2_scale(phong::max_abs(v));
+    return v * math_traits<T>::inverse_pow2_scale(detail::max_abs(v));
 }
 
 /// Euclidean length |v| = sqrt(dot(v, v)), computed on the rescaled vector so that it is
@@ -123,9 +122,9 @@ PHONG_INLINE constexpr glm::vec<L, T, Q> rescaled(const glm::vec<L, T, Q>& v)
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T length(const glm::vec<L, T, Q>& v)
 {
-    const T s = math_traits<T>::inverse_pow2_scale(phong::max_abs(v));
+    const T s = math_traits<T>::inverse_pow2_scale(detail::max_abs(v));
     const glm::vec<L, T, Q> w = v * s;
-    return phong::sqrt(phong::dot(w, w)) / s;
+    return detail::sqrt(detail::dot(w, w)) / s;
 }
 
 /// Unit vector along v: v / |v|. Scaled first (see `rescaled`), so every finite nonzero v gives
@@ -135,9 +134,9 @@ PHONG_INLINE constexpr T length(const glm::vec<L, T, Q>& v)
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
 {
-    const glm::vec<L, T, Q> w = phong::rescaled(v);
-    const T dd = phong::dot(w, w);
-    return w * phong::select(dd > T(0), phong::rsqrt(dd), T(0));
+    const glm::vec<L, T, Q> w = detail::rescaled(v);
+    const T dd = detail::dot(w, w);
+    return w * detail::select(dd > T(0), detail::rsqrt(dd), T(0));
 }
 
 /// v / |v| without rescaling: the fastest form, as GLSL writes it, guarded for zero only.
@@ -146,11 +145,10 @@ PHONG_INLINE constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<L, T, Q> normalize_unscaled(const glm::vec<L, T, Q>& v)
 {
-    const T dd = phong::dot(v, v);
-    return v * phong::select(dd > T(0), phong::rsqrt(dd), T(0));
+    const T dd = detail::dot(v, v);
+    return v * detail::select(dd > T(0), detail::rsqrt(dd), T(0));
 }
 
-namespace detail {
 
 /// The exact mode's threshold on a squared length: the smallest normal number of T. Below it
 /// |v|^2 has lost bits to underflow and v / |v| would not be a unit vector (a light 1e-22 from Q
@@ -180,11 +178,23 @@ template <class T>
 PHONG_INLINE constexpr T exact_inverse_length(T dd)
 {
     if constexpr (std::is_floating_point_v<T>) {
-        if (dd >= exact_min_square<T>()) [[likely]] return phong::rsqrt(dd);
+        if (dd >= exact_min_square<T>()) [[likely]] return detail::rsqrt(dd);
         return T(0);
     } else {
-        return phong::select(normal_square(dd), detail::rsqrt_normal(dd), T(0));
+        return detail::select(normal_square(dd), detail::rsqrt_normal(dd), T(0));
     }
+}
+
+
+
+
+/// Cross product a x b = (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x) (GLM's is
+/// constexpr-unfriendly in some configurations). Edge: a zero vector gives 0, parallel ones 0 up
+/// to rounding; products beyond T's range give inf (or NaN from inf - inf).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr glm::vec<3, T, Q> cross(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b)
+{
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
 } // namespace detail
@@ -195,7 +205,7 @@ PHONG_INLINE constexpr T exact_inverse_length(T dd)
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<L, T, Q> reflect(const glm::vec<L, T, Q>& i, const glm::vec<L, T, Q>& n)
 {
-    return i - n * (T(2) * phong::dot(n, i));
+    return i - n * (T(2) * detail::dot(n, i));
 }
 
 /// GLSL faceforward: faceforward(n, i, nref) = dot(nref, i) < 0 ? n : -n.
@@ -204,17 +214,8 @@ template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<L, T, Q> faceforward(const glm::vec<L, T, Q>& n, const glm::vec<L, T, Q>& i,
                                                  const glm::vec<L, T, Q>& nref)
 {
-    const T sign = phong::select(phong::dot(nref, i) < T(0), T(1), T(-1));
+    const T sign = detail::select(detail::dot(nref, i) < T(0), T(1), T(-1));
     return n * sign;
-}
-
-/// Cross product a x b = (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x) (GLM's is
-/// constexpr-unfriendly in some configurations). Edge: a zero vector gives 0, parallel ones 0 up
-/// to rounding; products beyond T's range give inf (or NaN from inf - inf).
-template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr glm::vec<3, T, Q> cross(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b)
-{
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
 } // namespace phong

@@ -347,14 +347,14 @@ vec3 phong_toward(vec4 P, vec3 q, out float distance)
     return phong_normalize(d);
 }
 
-/// phong::light_direction: seed 000's l-hat = normalize(L.xyz - L.w q) (w = 1 or 0).
+/// phong::light_direction: classic Phong's l-hat = normalize(L.xyz - L.w q) (w = 1 or 0).
 /// Edge: a light at q gives 0.
 vec3 phong_light_direction(vec4 L, vec3 q)
 {
     return phong_normalize(L.xyz - L.w * q);
 }
 
-/// phong::attenuation_polynomial (seed 000's f_i(Q), OpenGL):
+/// phong::attenuation_polynomial (classic Phong's f_i(Q), OpenGL):
 ///   f = 1 / max(c0 + d (c1 + c2 d), 2^-63).
 /// Pre: c0, c1, c2 >= 0, d >= 0. Edge: d = 0 with c0 = 0 gives the cap 2^63 (finite).
 float phong_attenuation_polynomial(float d, float c0, float c1, float c2)
@@ -415,7 +415,7 @@ float phong_cosine_power(float x, float scale, float m)
     return phong_pow_unit(x > 0.0 ? min(x * scale, 1.0) : 0.0, m);
 }
 
-/// phong::specular_reflection (Phong, seeds 000 and 003):
+/// phong::specular_reflection (Phong, classic Phong and 003):
 ///   r = reflect(-l, n) = 2 (n.l) n - l,  s = [n.l > 0] max(r.v, 0)^m,  r.v = 2 (n.l)(n.v) - l.v.
 /// Pre: n, l, v unit (or 0), m >= 0. Edge: 0 where n.l <= 0; m = 0 gives 1 where lit; l = 0 or
 /// v = 0 give 0 (m > 0).
@@ -435,7 +435,7 @@ float phong_inverse_halfway_length(vec3 l, vec3 v)
     return hh >= phong_halfway_min_square ? phong_exact_inverse_length(hh) : 0.0;
 }
 
-/// phong::specular_halfway (Blinn-Phong, seed 001):
+/// phong::specular_halfway (Blinn-Phong, the ray tracer model):
 ///   h = normalize(l + v),  s = [n.l > 0] max(n.h, 0)^m,  n.h = (n.l + n.v) / |l + v|.
 /// Pre: n, l, v unit (or 0), m >= 0. Edge: l = -v takes n.h = 0 (0 for m > 0, 1 for m = 0);
 /// 0 where n.l <= 0.
@@ -446,7 +446,7 @@ float phong_specular_halfway(vec3 n, vec3 l, vec3 v, float m)
     return nl > 0.0 ? s : 0.0;
 }
 
-/// phong::face_viewer (seed 000's conditional negation): dot(n, v) < 0 ? -n : n.
+/// phong::face_viewer (classic Phong's conditional negation): dot(n, v) < 0 ? -n : n.
 /// Edge: dot(n, v) = 0 or n = 0 keeps n.
 vec3 phong_face_viewer(vec3 n, vec3 v)
 {
@@ -459,14 +459,14 @@ vec3 phong_face_flag(vec3 n, bool front_facing)
     return front_facing ? n : -n;
 }
 
-/// phong::view_perspective (seed 000): v = normalize(-q), the eye at the origin.
+/// phong::view_perspective (classic Phong): v = normalize(-q), the eye at the origin.
 /// Edge: q = 0 gives 0.
 vec3 phong_view_perspective(vec3 q)
 {
     return phong_normalize(-q);
 }
 
-/// phong::view_orthographic (seed 000): v = normalize(-M02/M00, -M12/M11, 1), M = ec_lds the
+/// phong::view_orthographic (classic Phong): v = normalize(-M02/M00, -M12/M11, 1), M = ec_lds the
 /// projection matrix (M02: row 0, column 2, GLSL's M[2][0]). Pre: M00 != 0, M11 != 0.
 vec3 phong_view_orthographic(mat4 ec_lds)
 {
@@ -481,7 +481,7 @@ vec3 phong_view_vector(vec4 eye, vec3 q)
 }
 
 /// phong::transform_normal: normalize(N n) for a normal matrix N (GLSL's NormalMatrix, the
-/// inverse transpose of the model-view's upper 3x3: seed 003's tnorm). Edge: a zero result stays 0.
+/// inverse transpose of the model-view's upper 3x3: the GLSL ADS shader's tnorm). Edge: a zero result stays 0.
 vec3 phong_transform_normal(mat3 N, vec3 n)
 {
     return phong_normalize(phong_mul(N, n));
@@ -821,7 +821,7 @@ phong_color phong_shade(vec3 q, vec3 n, vec3 v, phong_material mat, phong_light 
     return phong_total_of(phong_shade_terms(q, n, v, mat, lights, count, env, front_facing));
 }
 
-/// phong::shade_vertex<F> (seed 003's phong.vert): eyeCoords = model_view * (p, 1),
+/// phong::shade_vertex<F> (the GLSL ADS shader's phong.vert): eyeCoords = model_view * (p, 1),
 /// tnorm = normalize(normal_matrix * n), then phong_shade at (eyeCoords.xyz, tnorm) with lights in
 /// eye coordinates. Pre: model_view affine; PHONG_VIEW not PHONG_VIEW_GIVEN.
 /// Edge: normal_matrix * n is normalized once, by phong_shade: where its squared length is not a

@@ -12,8 +12,8 @@
 
 namespace phong {
 
-/// Which specular term: none, reflection-based (seed 000/003: max(r.v, 0)^m with
-/// r = reflect(-l, n)) or halfway-based (seed 001, Blinn: max(n.h, 0)^m with h = normalize(l + v)).
+/// Which specular term: none, reflection-based (classic Phong/003: max(r.v, 0)^m with
+/// r = reflect(-l, n)) or halfway-based (the ray tracer model, Blinn: max(n.h, 0)^m with h = normalize(l + v)).
 enum class specular_model : unsigned char { none, phong, blinn };
 
 /// What the light positions' w may be. `any`: read at run time (w = 1 positional, w = 0
@@ -21,7 +21,7 @@ enum class specular_model : unsigned char { none, phong, blinn };
 /// so no distance and no attenuation are computed.
 enum class light_kind : unsigned char { any, positional, directional };
 
-/// Distance attenuation f_i(Q). `none`: f = 1. `polynomial`: OpenGL / seed 000,
+/// Distance attenuation f_i(Q). `none`: f = 1. `polynomial`: OpenGL / classic Phong,
 /// f = 1 / (c0 + c1 d + c2 d^2). `windowed`: inverse square with a smooth window that reaches
 /// exactly 0 at the light's range (Filament, three.js): f = clamp(1 - (d/range)^4, 0, 1)^2 / d^2.
 enum class attenuation_model : unsigned char { none, polynomial, windowed };
@@ -33,30 +33,27 @@ enum class attenuation_model : unsigned char { none, polynomial, windowed };
 enum class spot_model : unsigned char { none, opengl, smooth, linear };
 
 /// Two-sided lighting: how the normal is conditionally negated. `none`: used as given. `view`:
-/// negated when it faces away from the viewer, n.v < 0 (seed 000's "conditionally negated").
+/// negated when it faces away from the viewer, n.v < 0 (classic Phong's "conditionally negated").
 /// `flag`: negated when the caller says the point is back-facing (e.g. gl_FrontFacing).
 enum class facing : unsigned char { none, view, flag };
 
 /// Where the viewer is, and so how the view vector v (from the point toward the viewer) is found.
 ///  * `eye_at_origin` (the default): the eye at the origin of the shading coordinates,
-///    v = normalize(-Q). Rasterizers shading in eye coordinates (seeds 000, 003).
+///    v = normalize(-Q). Rasterizers shading in eye coordinates (classic Phong, 003).
 ///  * `given`: v is passed to each shade call (shade<F>(Q, n, v, ...)): a ray tracer's -ray.dir,
 ///    right for primary, reflected and refracted rays alike; a rasterizer's per-vertex or
 ///    per-pixel vector. The one to use whenever the renderer already has v.
 ///  * `fixed_direction`: one direction for every point, environment::eye.xyz (normalized once per
-///    call; used as given with unit_inputs): orthographic cameras (seed 000's
+///    call; used as given with unit_inputs): orthographic cameras (classic Phong's
 ///    normalize(-M02/M00, -M12/M11, 1); view.hpp), a screen-space rasterizer's view along +z.
 ///  * `eye_point`: the general homogeneous rule v = normalize(E.xyz - E.w Q) for environment::eye
-///    E (w = 1: an eye point such as seed 001's ray start, for primary rays only; w = 0: a
+///    E (w = 1: an eye point such as the ray tracer model's ray start, for primary rays only; w = 0: a
 ///    direction). eye_from_projection() derives E from any projection matrix.
-/// `perspective` and `orthographic` are the older names of eye_at_origin and fixed_direction.
 enum class view_model : unsigned char {
     eye_at_origin,
     fixed_direction,
     eye_point,
     given,
-    perspective = eye_at_origin,
-    orthographic = fixed_direction,
 };
 
 /// How the terms are evaluated (accuracy against speed; bounds in phong/accuracy.hpp).
@@ -88,14 +85,14 @@ enum class evaluation : unsigned char { exact, stable, fast };
 /// 2^20 in any lane take the twofold route.
 enum class stable_precision : unsigned char { wider, twofold };
 
-/// Everything shade<F> can compute. Defaults: seed 000's classic model with one ambient term,
+/// Everything shade<F> can compute. Defaults: classic Phong's classic model with one ambient term,
 /// reflection-based specular gated on n.l > 0, perspective view, exact evaluation.
 struct features {
-    bool scene_ambient = true;   ///< ka * La (seed 000), the same as seed 001's IG = GlobalAmbient * ka
-    bool light_ambient = false;  ///< per-light ambient lightamb * ka (seed 001 Iamb, seed 003 La * Ka)
+    bool scene_ambient = true;   ///< ka * La (classic Phong), the same as the ray tracer model's IG = GlobalAmbient * ka
+    bool light_ambient = false;  ///< per-light ambient lightamb * ka (the ray tracer model Iamb, the GLSL ADS shader La * Ka)
     bool diffuse = true;         ///< kd * max(n.l, 0)
     specular_model specular = specular_model::phong; ///< the specular term: none, Phong (r.v) or Blinn (n.h)
-    bool specular_gate = true;   ///< specular only where n.l > 0 (seed 003); seed 001 has no gate
+    bool specular_gate = true;   ///< specular only where n.l > 0 (GLSL ADS); the ray tracer model has no gate
     light_kind lights = light_kind::any;  ///< which lights the list holds (any: w read per light)
     attenuation_model attenuation = attenuation_model::none; ///< the distance falloff f_i
     spot_model spot = spot_model::none;   ///< the spot cone factor
@@ -217,10 +214,6 @@ inline constexpr features diffuse_only{
 
 /// Older names, after the source documents (docs/models.md): aliases of classic_phong,
 /// blinn_phong_per_light_ambient, glsl_ads and diffuse_only, kept for existing code.
-inline constexpr features seed000_classic = classic_phong;
-inline constexpr features seed001_raytracer = blinn_phong_per_light_ambient; ///< alias of blinn_phong_per_light_ambient
-inline constexpr features seed003_ads = glsl_ads;                            ///< alias of glsl_ads
-inline constexpr features seed003_diffuse = diffuse_only;                    ///< alias of diffuse_only
 
 /// The same feature set evaluated in another mode (e.g. with_mode(classic_phong, evaluation::stable)).
 PHONG_INLINE constexpr features with_mode(features f, evaluation mode)

@@ -42,10 +42,10 @@ struct spot_cone {
     PHONG_INLINE static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
     {
         spot_cone s;
-        s.direction = phong::normalize(axis);
+        s.direction = detail::normalize(axis);
         s.exponent = exponent;
         const bool in_range = (cutoff_degrees >= T(0) && cutoff_degrees <= T(90)) || cutoff_degrees == T(180);
-        s.cos_cutoff = in_range ? phong::cos_degrees(cutoff_degrees) : T(2);
+        s.cos_cutoff = in_range ? detail::cos_degrees(cutoff_degrees) : T(2);
         return s;
     }
     /// Smooth or linear spot (the same fields; features::spot picks the edge): full strength
@@ -57,18 +57,18 @@ struct spot_cone {
     PHONG_INLINE static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
     {
         spot_cone s;
-        s.direction = phong::normalize(axis);
+        s.direction = detail::normalize(axis);
         const auto in_range = [](T a) { return a >= T(0) && a <= T(180); };
-        s.cos_inner = in_range(inner_degrees) ? phong::cos_degrees(inner_degrees) : T(2);
-        s.cos_outer = in_range(outer_degrees) ? phong::cos_degrees(outer_degrees) : T(2);
+        s.cos_inner = in_range(inner_degrees) ? detail::cos_degrees(inner_degrees) : T(2);
+        s.cos_outer = in_range(outer_degrees) ? detail::cos_degrees(outer_degrees) : T(2);
         return s;
     }
 };
 
-/// One light source, in the coordinates the surface is shaded in (eye coordinates for seeds 000
-/// and 003, world coordinates for seed 001's ray tracer).
-/// Seed 000's single strength L_i is diffuse = specular = L_i (use light::with_strength); seed 001's
-/// lightamb / lightdiff / lightspec and seed 003's La / Ld / Ls map one to one.
+/// One light source, in the coordinates the surface is shaded in (eye coordinates for classic Phong
+/// and 003, world coordinates for the ray tracer model's ray tracer).
+/// classic Phong's single strength L_i is diffuse = specular = L_i (use light::with_strength); the ray tracer model's
+/// lightamb / lightdiff / lightspec and the GLSL ADS shader's La / Ld / Ls map one to one.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct light {
     /// Homogeneous position: w = 1 positional (xyz is the light's point), w = 0 directional (xyz
@@ -76,9 +76,9 @@ struct light {
     /// light_kind::positional and ::directional do not read w (a point with w != 1 would be shaded
     /// at xyz there, at xyz / w with light_kind::any). Divide xyz by w yourself for other w > 0.
     glm::vec<4, T, Q> position{T(0), T(0), T(1), T(0)};
-    glm::vec<3, T, Q> ambient{T(0)};  ///< per-light ambient strength (seed 001 lightamb, seed 003 La)
-    glm::vec<3, T, Q> diffuse{T(1)};  ///< diffuse strength (seed 001 lightdiff, seed 003 Ld, seed 000 L_i)
-    glm::vec<3, T, Q> specular{T(1)}; ///< specular strength (seed 001 lightspec, seed 003 Ls, seed 000 L_i)
+    glm::vec<3, T, Q> ambient{T(0)};  ///< per-light ambient strength (the ray tracer model lightamb, the GLSL ADS shader La)
+    glm::vec<3, T, Q> diffuse{T(1)};  ///< diffuse strength (the ray tracer model lightdiff, the GLSL ADS shader Ld, classic Phong L_i)
+    glm::vec<3, T, Q> specular{T(1)}; ///< specular strength (the ray tracer model lightspec, the GLSL ADS shader Ls, classic Phong L_i)
     falloff<T> attenuation{};         ///< read when features::attenuation is not none (positional lights only)
     spot_cone<T, Q> spot{};           ///< read when features::spot is not none
 
@@ -95,12 +95,6 @@ struct light {
         l.attenuation = attenuation;
         return l;
     }
-    /// The older name of with_strength (after source document 000).
-    PHONG_INLINE static constexpr light seed000(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
-                                            falloff<T> attenuation = {})
-    {
-        return with_strength(position, strength, attenuation);
-    }
 };
 
 /// How shade<F> reads a light of type L: the specialization point for a renderer's own light type
@@ -113,9 +107,9 @@ struct light {
 ///                                      light::position (w = 1 positional, w = 0 directional; U, Q:
 ///                                      the light's scalar type and qualifier, read from this
 ///                                      function's return type, else from diffuse's);
-///   diffuse(L)  -> glm::vec<3, U, Q>  required: Ld (seed 001 lightdiff);
-///   specular(L) -> glm::vec<3, U, Q>  required: Ls (seed 001 lightspec);
-///   ambient(L)  -> glm::vec<3, U, Q>  optional, default 0: La (seed 001 lightamb);
+///   diffuse(L)  -> glm::vec<3, U, Q>  required: Ld (the ray tracer model lightdiff);
+///   specular(L) -> glm::vec<3, U, Q>  required: Ls (the ray tracer model lightspec);
+///   ambient(L)  -> glm::vec<3, U, Q>  optional, default 0: La (the ray tracer model lightamb);
 ///   attenuation(L) -> `falloff<U>`    optional, default `falloff<U>{}` (f = 1): read with attenuation;
 ///   spot(L)     -> spot_cone<U, Q>    optional, default spot_cone<U, Q>{} (no cone): read with a spot.
 /// Each function is called where the model reads that field (inlined: the same code as for the
@@ -169,6 +163,7 @@ template <class L> struct light_fields : colour_of<light_diffuse_t<L>> {};
 template <traits_with_position L> struct light_fields<L> : homogeneous_position_of<light_position_t<L>> {};
 } // namespace detail
 
+namespace detail {
 /// A type shade_incident<F> takes as a light: light_traits<L> gives diffuse and specular (a
 /// glm::vec<3, U, Q>; cv and references ignored); position is optional (shade_incident reads the
 /// light's direction from its incident, and w only with light_kind::any).
@@ -177,15 +172,17 @@ concept incident_light_source = requires(const std::remove_cvref_t<L>& l) {
     light_traits<std::remove_cvref_t<L>>::diffuse(l);
     light_traits<std::remove_cvref_t<L>>::specular(l);
 } && requires { typename detail::light_fields<std::remove_cvref_t<L>>::scalar; };
+} // namespace detail
 
 /// A type shade<F> takes as a light: light_traits<L> gives position (a glm::vec<4, U, Q>),
 /// diffuse and specular (cv and references ignored).
 template <class L>
-concept light_source = incident_light_source<L> && requires(const std::remove_cvref_t<L>& l) {
+concept light_source = detail::incident_light_source<L> && requires(const std::remove_cvref_t<L>& l) {
     light_traits<std::remove_cvref_t<L>>::position(l);
     typename detail::homogeneous_position_of<detail::light_position_t<std::remove_cvref_t<L>>>::scalar;
 };
 
+namespace detail {
 /// The scalar type U (light_scalar_t) and qualifier (light_qualifier_v) of a light's fields, read
 /// from light_traits<L>::position's return type glm::vec<4, U, Q> (from diffuse's glm::vec<3, U, Q>
 /// for a light without a position).
@@ -193,6 +190,7 @@ template <incident_light_source L>
 using light_scalar_t = typename detail::light_fields<std::remove_cvref_t<L>>::scalar;
 template <incident_light_source L>
 inline constexpr glm::qualifier light_qualifier_v = detail::light_fields<std::remove_cvref_t<L>>::qualifier;
+} // namespace detail
 
 namespace detail {
 /// The fields of a light_source as shade<F> reads them: light_traits' function, or the default
@@ -221,10 +219,10 @@ template <class L> PHONG_INLINE constexpr decltype(auto) spot_of([[maybe_unused]
 /// where the traits leave one out; light<U, Q>'s default position for an incident_light_source
 /// without one). For what needs a light<T> itself: validate(), and shade_batch, which takes a span
 /// of light<T> (convert the list once per call, not per point).
-template <incident_light_source L>
-PHONG_INLINE constexpr light<light_scalar_t<L>, light_qualifier_v<L>> to_light(const L& l)
+template <detail::incident_light_source L>
+PHONG_INLINE constexpr light<detail::light_scalar_t<L>, detail::light_qualifier_v<L>> to_light(const L& l)
 {
-    light<light_scalar_t<L>, light_qualifier_v<L>> out;
+    light<detail::light_scalar_t<L>, detail::light_qualifier_v<L>> out;
     if constexpr (detail::traits_with_position<L>) out.position = detail::position_of(l);
     out.ambient = detail::ambient_of(l);
     out.diffuse = detail::diffuse_of(l);

@@ -6,22 +6,22 @@
 
 namespace phong {
 
-/// A surface material: the reflection coefficients of seeds 000 (ka, kd, ks, m), 001
+/// A surface material: the reflection coefficients of classic Phong (ka, kd, ks, m), 001
 /// (materialamb, materialdiff, materialspec, f) and 003 (Ka, Kd, Ks, Shininess), plus emission
-/// and the alpha appended to the colour (seed 000).
+/// and the alpha appended to the colour (classic Phong).
 template <class T, glm::qualifier Q = glm::defaultp>
 struct material {
     glm::vec<3, T, Q> ka{T(0.1)};      ///< ambient reflectivity (often ka = kd)
     glm::vec<3, T, Q> kd{T(0.7)};      ///< diffuse reflectivity
     glm::vec<3, T, Q> ks{T(0.2)};      ///< specular reflectivity
     glm::vec<3, T, Q> emission{T(0)};  ///< emitted light, added when features::emission
-    T shininess = T(32);               ///< specular exponent m (seed 001: 0..200), >= 0
+    T shininess = T(32);               ///< specular exponent m (the ray tracer model: 0..200), >= 0
     T alpha = T(1);                    ///< opacity appended as the 4th channel when features::alpha
 };
 
 /// Checks a material against the model's domain. Rejected: negative, NaN or inf coefficients
 /// (ka, kd, ks, emission); a shininess that is negative, NaN or inf; alpha outside [0, 1] or NaN.
-/// Shininess above 200 (seed 001's range) is accepted: the stable mode is accurate to 1e5 and more.
+/// Shininess above 200 (the ray tracer model's range) is accepted: the stable mode is accurate to 1e5 and more.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr validation validate(const material<T, Q>& m)
 {

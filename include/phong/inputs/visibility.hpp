@@ -10,6 +10,7 @@
 
 namespace phong {
 
+namespace detail {
 /// A light list with a visibility mask: bit i set means light i is seen. See masked().
 /// Lights is a reference to the caller's list (an lvalue), or the list itself (an rvalue).
 template <class Lights>
@@ -24,6 +25,7 @@ struct weighted_lights {
     Lights lights;              ///< the renderer's lights (any range of lights)
     std::span<const T> weights; ///< weights[i] in [0, 1] for light i (in iteration order)
 };
+} // namespace detail
 
 /// The lights whose bit is set in `visible` (bit i for the i-th light), for shade<F>: a light
 /// whose bit is clear is skipped entirely, exactly as if it were not in the list (its ambient
@@ -31,7 +33,7 @@ struct weighted_lights {
 /// list's lifetime, as in shade<F>(..., masked(lights, bits), ...)), an rvalue one (a view) is moved in.
 /// Pre: at most 64 lights (bits past the list are ignored; lights past bit 63 are not seen).
 template <class Lights>
-PHONG_INLINE constexpr masked_lights<Lights> masked(Lights&& lights, std::uint64_t visible)
+PHONG_INLINE constexpr detail::masked_lights<Lights> masked(Lights&& lights, std::uint64_t visible)
 {
     return {static_cast<Lights&&>(lights), visible};
 }
@@ -47,7 +49,7 @@ PHONG_INLINE constexpr masked_lights<Lights> masked(Lights&& lights, std::uint64
 /// [0, 1] are visibilities; one above 1 brightens the light, as a stronger light would.
 /// Held as masked() holds it.
 template <class Lights, class T>
-PHONG_INLINE constexpr weighted_lights<Lights, T> weighted(Lights&& lights, std::span<const T> weights)
+PHONG_INLINE constexpr detail::weighted_lights<Lights, T> weighted(Lights&& lights, std::span<const T> weights)
 {
     return {static_cast<Lights&&>(lights), weights};
 }

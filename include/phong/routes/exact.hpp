@@ -77,7 +77,7 @@ struct unit_vector {
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T sign = T(1))
 {
-    const T dd = phong::dot(v, v);
+    const T dd = detail::dot(v, v);
     if constexpr (std::is_floating_point_v<T>) {
         const T inv = exact_inverse_length(dd);
         return {v * (inv * sign), dd, inv > T(0)};
@@ -85,7 +85,7 @@ PHONG_INLINE constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T s
         // exact_inverse_length's range test is the mask itself (1/|v| > 0 exactly where dd is normal):
         // SIMD lanes keep it rather than compare again.
         const mask_t<T> normal = normal_square(dd);
-        const T inv = phong::select(normal, detail::rsqrt_normal(dd), T(0));
+        const T inv = detail::select(normal, detail::rsqrt_normal(dd), T(0));
         return {v * (inv * sign), dd, normal};
     }
 }
@@ -96,7 +96,7 @@ template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T sign)
 {
     if constexpr (F.specular == specular_model::none && F.two_sided != facing::view) {
-        return {glm::vec<3, T, Q>(T(0)), phong::dot(e, e), mask_t<T>(true)};
+        return {glm::vec<3, T, Q>(T(0)), detail::dot(e, e), mask_t<T>(true)};
     } else {
         return unit_of(e, sign);
     }
@@ -115,9 +115,9 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_at(const glm::vec<3, T, Q>& positi
     if constexpr (F.view == view_model::given && F.unit_inputs) {
         return {given_view, T(1), mask_t<T>(true)}; // unit by precondition
     } else if constexpr (F.view == view_model::fixed_direction) {
-        if constexpr (F.unit_inputs) return {eye, phong::dot(position, position), mask_t<T>(true)}; // unit by precondition
-        const vec3 v = phong::normalize(eye);
-        return {v, phong::dot(position, position), phong::dot(v, v) > T(0)};
+        if constexpr (F.unit_inputs) return {eye, detail::dot(position, position), mask_t<T>(true)}; // unit by precondition
+        const vec3 v = detail::normalize(eye);
+        return {v, detail::dot(position, position), detail::dot(v, v) > T(0)};
     } else if constexpr (F.view == view_model::eye_at_origin) {
         return view_unit<F>(position, T(-1)); // -Q, as Q times -1/|Q|: no negation of Q's components
     } else {
@@ -130,7 +130,7 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_at(const glm::vec<3, T, Q>& positi
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr mask_t<T> squares_in_range(const glm::vec<3, T, Q>& position, T normal_square, T view_square)
 {
-    if constexpr (F.view == view_model::given) view_square = view_square + phong::dot(position, position);
+    if constexpr (F.view == view_model::given) view_square = view_square + detail::dot(position, position);
     else (void)position;
     return math_traits<T>::both(normal_square <= largest<T>(), view_square <= largest<T>());
 }
@@ -197,13 +197,13 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
     if constexpr (F.two_sided != facing::none) unit_normal = unit_normal * facing_sign<F>(unit_normal, v.unit, front_facing);
     else (void)front_facing;
     T nv = T(0);
-    if constexpr (F.specular != specular_model::none) nv = phong::dot(unit_normal, v.unit);
+    if constexpr (F.specular != specular_model::none) nv = detail::dot(unit_normal, v.unit);
     // Built from components: copied whole, g++ moved the vectors through the stack.
     lanes_frame<T, Q> lanes{};
     if constexpr (!std::is_floating_point_v<T>) {
         lanes.minus_position = vec3(opaque_lanes(T(-0.0f) - position.x), opaque_lanes(T(-0.0f) - position.y), opaque_lanes(T(-0.0f) - position.z));
         if constexpr (F.specular == specular_model::blinn)
-            lanes.nv_seen = phong::select(v.ok, nv, T(-std::numeric_limits<scalar_t<T>>::infinity()));
+            lanes.nv_seen = detail::select(v.ok, nv, T(-std::numeric_limits<scalar_t<T>>::infinity()));
     }
     return {vec3(position.x, position.y, position.z), vec3(unit_normal.x, unit_normal.y, unit_normal.z),
             vec3(v.unit.x, v.unit.y, v.unit.z), defined, v.ok, poison, nv, lanes};
@@ -226,8 +226,8 @@ PHONG_INLINE constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 }
 
 /// The specular power of add_specular: detail::cosine_power, or in the fast mode fast::pow_unit of
-/// the same clamped cosine (SIMD lanes with one integer shininess m <= fast::pow_integer_max_exponent:
-/// fast::pow_integer, within the same bound). Float SIMD lanes keep cosine_power: the exact mode's power there already
+/// the same clamped cosine (SIMD lanes with one integer shininess m <= fast::detail::pow_integer_max_exponent:
+/// fast::detail::pow_integer, within the same bound). Float SIMD lanes keep cosine_power: the exact mode's power there already
 /// is a polynomial kernel of the same cost (detail/simd/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
 /// fast::pow_unit_max_rel where x^m >= 2^-24), so fast::pow_unit would add work, not remove it
 /// (measured in docs/batch.md).
@@ -235,14 +235,14 @@ template <evaluation M, class T>
 PHONG_INLINE constexpr T route_cosine_power(T x, T scale, T m)
 {
     if constexpr (M == evaluation::fast && (std::is_floating_point_v<T> || !std::is_same_v<scalar_t<T>, float>))
-        return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
+        return fast::pow_unit(detail::clamp(x * scale, T(0), T(1)), m);
     else return detail::cosine_power(x, scale, m);
 }
 
 /// The fast mode's shininess on SIMD lanes where every lane has the same integer n in [1,
-/// fast::pow_integer_max_exponent] (shade_batch finds it once per call): the power is
-/// fast::pow_integer with n's schedule made once (five squarings for n = 32, against two
-/// polynomials), within the fast power's bound (fast::pow_integer_max_rel <= fast::pow_unit_max_rel).
+/// fast::detail::pow_integer_max_exponent] (shade_batch finds it once per call): the power is
+/// fast::detail::pow_integer with n's schedule made once (five squarings for n = 32, against two
+/// polynomials), within the fast power's bound (fast::detail::pow_integer_max_rel <= fast::pow_unit_max_rel).
 /// n >= 1: the power of a base 0 is 0, so add_specular zeroes the base of the lanes that are off
 /// (or whose cosine is not positive) instead of selecting the power.
 /// Squarings: n = 2^Squarings known at compile time (batch.hpp's add_masked_lights picks it per
@@ -251,14 +251,14 @@ PHONG_INLINE constexpr T route_cosine_power(T x, T scale, T m)
 /// (runtime_squarings): n known at run time only.
 inline constexpr unsigned runtime_squarings = ~0u;
 template <class T, unsigned Squarings = runtime_squarings> struct integer_exponent {
-    fast::pow_integer_plan plan; ///< of the shininess n of every lane, n >= 1
-    fast::pow_integer_plan half; ///< of n / 2 where n is even (Blinn's power of (n.h)^2, add_halfway_specular_fast)
+    fast::detail::pow_integer_plan plan; ///< of the shininess n of every lane, n >= 1
+    fast::detail::pow_integer_plan half; ///< of n / 2 where n is even (Blinn's power of (n.h)^2, add_halfway_specular_fast)
     bool even;                   ///< n is even
-    static integer_exponent of(unsigned n) { return {fast::plan_pow_integer(n), fast::plan_pow_integer(n / 2), n % 2 == 0}; }
-    /// x^n (fast::pow_integer)
+    static integer_exponent of(unsigned n) { return {fast::detail::plan_pow_integer(n), fast::detail::plan_pow_integer(n / 2), n % 2 == 0}; }
+    /// x^n (fast::detail::pow_integer)
     PHONG_INLINE T power(T x) const
     {
-        if constexpr (Squarings == runtime_squarings) return fast::pow_integer(x, plan);
+        if constexpr (Squarings == runtime_squarings) return fast::detail::pow_integer(x, plan);
         else return squared<Squarings>(x);
     }
     /// n is even
@@ -270,7 +270,7 @@ template <class T, unsigned Squarings = runtime_squarings> struct integer_expone
     /// x^(n/2), n even
     PHONG_INLINE T half_power(T x) const
     {
-        if constexpr (Squarings == runtime_squarings) return fast::pow_integer(x, half);
+        if constexpr (Squarings == runtime_squarings) return fast::detail::pow_integer(x, half);
         else if constexpr (Squarings == 0) return x; // n = 1 is odd: not called
         else return squared<Squarings - 1>(x);
     }
@@ -334,7 +334,7 @@ template <class T>
 PHONG_INLINE step_specular<T> step_specular_of(const lane_shininess<T>& m, mask_t<T> sees_viewer)
 {
     const T inf(std::numeric_limits<scalar_t<T>>::infinity());
-    return {m.bounded, phong::select(sees_viewer, m.threshold, inf), phong::select(sees_viewer, lanes_halfway_min<T>(), inf)};
+    return {m.bounded, detail::select(sees_viewer, m.threshold, inf), detail::select(sees_viewer, lanes_halfway_min<T>(), inf)};
 }
 
 /// The least |h|^2 with a halfway vector of a step's lanes: step_specular's per lane, else u^2.
@@ -348,7 +348,7 @@ template <evaluation M, class T>
 PHONG_INLINE constexpr T route_cosine_power(T x, T scale, const lane_shininess<T>& m)
 {
     if constexpr (M == evaluation::fast && !std::is_same_v<scalar_t<T>, float>)
-        return fast::pow_unit(phong::clamp(x * scale, T(0), T(1)), m.m);
+        return fast::pow_unit(detail::clamp(x * scale, T(0), T(1)), m.m);
     else return math_traits<T>::pow_unit(math_traits<T>::min(x * scale, T(1)), m.m, m.zero);
 }
 
@@ -383,7 +383,7 @@ PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, 
         // c <= 1 up to its rounding error, which c^n amplifies by n with or without a clamp
         // (accuracy.hpp's fast bound), and c^n stays finite (|c| <= 3 |d| for unit vectors); c is
         // finite where the lane is on (a point with NaN inputs is not `defined`).
-        sum += in_type<T>(specular_of(L)) * (f * m.power(math_traits<T>::max(phong::select(on, x * scale, T(0)), T(0))));
+        sum += in_type<T>(specular_of(L)) * (f * m.power(math_traits<T>::max(detail::select(on, x * scale, T(0)), T(0))));
     } else if constexpr (std::is_same_v<Exponent, step_specular<T>>) {
         // The lanes whose power is not 0: on, and c > 0 (any c where m = 0). The same powers as the
         // branch below (pow_unit's select, folded into this mask), and the same skip of a step.
@@ -391,13 +391,13 @@ PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, 
         const mask_t<T> powered = math_traits<T>::both(on, c > m.threshold);
         if (!math_traits<T>::any(powered)) return; // every power 0: the sum would gain +0
         const T power = math_traits<T>::pow_unit_positive(math_traits<T>::min(c, T(1)), m.m);
-        sum += in_type<T>(specular_of(L)) * (f * phong::select(powered, power, T(0)));
+        sum += in_type<T>(specular_of(L)) * (f * detail::select(powered, power, T(0)));
     } else {
         // Where no lane that is on has c > 0 (nor m = 0: pow(0, 0) = 1), every selected power is 0
         // and the sum would only gain +0: the power is skipped for the whole step, as scalars skip
         // it per point (the same bits).
         if (!math_traits<T>::any(math_traits<T>::both(on, x > T(0))) && !any_zero_exponent<T>(m, on)) return;
-        sum += in_type<T>(specular_of(L)) * (f * phong::select(on, route_cosine_power<M>(x, scale, m), T(0)));
+        sum += in_type<T>(specular_of(L)) * (f * detail::select(on, route_cosine_power<M>(x, scale, m), T(0)));
     }
 }
 
@@ -424,8 +424,8 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> unrounded_halfway_sum(const glm::vec<3,
 template <evaluation M, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T min_square)
 {
-    const T hh = phong::dot(h, h);
-    return phong::select(hh >= min_square, lit_inverse_length<M>(hh), T(0));
+    const T hh = detail::dot(h, h);
+    return detail::select(hh >= min_square, lit_inverse_length<M>(hh), T(0));
 }
 
 /// Blinn's 1/|l + v| (specular.hpp's inverse_halfway_length), or in the fast mode: fast::rsqrt, and 0
@@ -465,7 +465,7 @@ PHONG_INLINE constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d
 /// (integer_exponent), l = d / |d| with inv = 1/|d| and nl = n.l given (0 where the pair is off;
 /// on: the lit lanes, the point's sees_viewer is read here):
 ///   h = d inv + v (one fma per component), hh = |h|^2, n.h = (n.l + n.v) / |h|,
-///   n even: (n.h)^n = ((n.l + n.v)^2 / hh)^(n/2), 1/hh by fast::reciprocal_normal: no square
+///   n even: (n.h)^n = ((n.l + n.v)^2 / hh)^(n/2), 1/hh by fast::detail::reciprocal_normal: no square
 ///           root, one squaring fewer; the base's error, as a cosine's, is that of n.l + n.v plus
 ///           u + reciprocal_max_rel / 2 (AVX-512: 1.5 u), below the 1/|h| route's u + rsqrt's 1.6 u;
 ///   n odd:  n.h = (n.l + n.v) rsqrt_normal(hh), as route_inverse_halfway_length.
@@ -486,12 +486,12 @@ PHONG_INLINE constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Li
     if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
     const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, s.view.x), math_traits<T>::fma(d.y, inv, s.view.y),
                               math_traits<T>::fma(d.z, inv, s.view.z));
-    const T hh = phong::dot(h, h);
+    const T hh = detail::dot(h, h);
     constexpr double er = fast::rsqrt_max_rel<S>;
     const mask_t<T> defined = math_traits<T>::both(positive, hh >= T(S(16 * er * er)));
     T power;
-    if (m.is_even()) power = m.half_power(phong::select(defined, (numerator * numerator) * fast::reciprocal_normal(hh), T(0)));
-    else power = m.power(phong::select(defined, numerator * detail::rsqrt_normal(hh), T(0)));
+    if (m.is_even()) power = m.half_power(detail::select(defined, (numerator * numerator) * fast::detail::reciprocal_normal(hh), T(0)));
+    else power = m.power(detail::select(defined, numerator * detail::rsqrt_normal(hh), T(0)));
     sum_of<term_kind::specular>(sums) += in_type<T>(specular_of(L)) * (f * power);
 }
 
@@ -511,18 +511,18 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
     if constexpr (F.lights == light_kind::positional && !std::is_floating_point_v<T>)
         d = vec3(T(p.x), T(p.y), T(p.z)) + s.lanes.minus_position; // L.xyz - Q, the same bits (see lanes_frame)
     else d = detail::homogeneous_difference<F.lights>(vec3(T(p.x), T(p.y), T(p.z)), w, s.position);
-    const T dd = phong::dot(d, d);
-    const T nd = phong::dot(s.normal, d);
+    const T dd = detail::dot(d, d);
+    const T nd = detail::dot(s.normal, d);
 
     vec3 l(T(0)); // the unit light vector; read by the spot (every pair) and by Blinn
     T inv = T(0); // 1/|d|
     if constexpr (F.spot != spot_model::none) {
         inv = exact_inverse_length(dd);
         l = d * inv;
-        for (int k = 0; k < 3; ++k) l[k] = phong::select(inv > T(0), l[k], T(0)); // an overflowed d: inf * 0
+        for (int k = 0; k < 3; ++k) l[k] = detail::select(inv > T(0), l[k], T(0)); // an overflowed d: inf * 0
     }
     T distance = T(0); // only attenuation reads it
-    if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = phong::sqrt(dd);
+    if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = detail::sqrt(dd);
     const T f = light_factor<F>(L, distance, w, l, visibility);
     add_ambient<F>(sums, L, f);
 
@@ -535,7 +535,7 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
     }
     T nl;
     if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
-        nl = nd / phong::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
+        nl = nd / detail::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
     } else {
         if constexpr (F.spot == spot_model::none) inv = lit_inverse_length<F.mode>(dd); // lanes where dd is not normal are not lit: selected away
         nl = nd * inv;
@@ -561,7 +561,7 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
         add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none &&
                          is_integer_exponent<Exponent, T>) {
-        add_halfway_specular_fast(sums, L, f, phong::select(on, nl, T(0)), inv, d, s, m, on);
+        add_halfway_specular_fast(sums, L, f, detail::select(on, nl, T(0)), inv, d, s, m, on);
     } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none && F.mode == evaluation::exact &&
                          !std::is_same_v<mask_t<T>, bool>) {
         add_specular<F.mode>(sums, L, f, nl + s.nv, lanes_inverse_halfway_length(d, inv, s.view, halfway_min_of<T>(m)), m, specular_on);

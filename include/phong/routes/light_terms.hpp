@@ -71,9 +71,9 @@ PHONG_INLINE constexpr T poison_of(const glm::vec<3, T, Q>& position, const glm:
                                [[maybe_unused]] const glm::vec<3, T, Q>& given_view, [[maybe_unused]] const environment<T, Q>& env)
 {
     const glm::vec<3, T, Q> zero(T(0));
-    T poison = phong::dot(position, zero) + phong::dot(normal, zero);
-    if constexpr (F.view == view_model::eye_point) poison += phong::dot(glm::vec<4, T, Q>(env.eye), glm::vec<4, T, Q>(T(0)));
-    if constexpr (F.view == view_model::given) poison += phong::dot(given_view, zero);
+    T poison = detail::dot(position, zero) + detail::dot(normal, zero);
+    if constexpr (F.view == view_model::eye_point) poison += detail::dot(glm::vec<4, T, Q>(env.eye), glm::vec<4, T, Q>(T(0)));
+    if constexpr (F.view == view_model::given) poison += detail::dot(given_view, zero);
     return poison;
 }
 
@@ -85,7 +85,7 @@ template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v, mask_t<T> front_facing)
 {
     if constexpr (F.two_sided == facing::view) return viewer_facing_sign(n, v);
-    else return phong::select(front_facing, T(1), T(-1));
+    else return detail::select(front_facing, T(1), T(-1));
 }
 
 /// f_i(Q) = attenuation(distance) * spot(l) * visibility: the light's weight at the point.
@@ -114,7 +114,7 @@ PHONG_INLINE constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_u
             fa = phong::attenuation_polynomial<T, Floor>(distance, T(a.constant), T(a.linear), T(a.quadratic));
         else
             fa = phong::attenuation_windowed<T, Floor>(distance, T(a.range));
-        if constexpr (F.lights == light_kind::any) f = phong::select(w > T(0), fa, T(1));
+        if constexpr (F.lights == light_kind::any) f = detail::select(w > T(0), fa, T(1));
         else f = fa;
     }
     if constexpr (F.spot != spot_model::none) {
@@ -125,14 +125,14 @@ PHONG_INLINE constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_u
         glm::vec<3, T, Q> s(cone.direction);
         // A zero axis is no cone (spot_cone's convention: spot fields left at zero, as shader
         // uniforms are, light the point). The cone below then reads s = 0 (finite, selected away).
-        const mask_t<T> has_cone = phong::dot(s, s) > T(0);
-        if constexpr (std::is_same_v<U, T>) s = phong::normalize_unscaled(s); // |s| within 1e-3 of 1: in range
-        else s = phong::normalize(s);
+        const mask_t<T> has_cone = detail::dot(s, s) > T(0);
+        if constexpr (std::is_same_v<U, T>) s = detail::normalize_unscaled(s); // |s| within 1e-3 of 1: in range
+        else s = detail::normalize(s);
         T spot;
         if constexpr (F.spot == spot_model::opengl) spot = phong::spot_opengl(l, s, T(cone.exponent), T(cone.cos_cutoff));
         else if constexpr (F.spot == spot_model::smooth) spot = phong::spot_smooth(l, s, T(cone.cos_inner), T(cone.cos_outer));
         else spot = phong::spot_linear(l, s, T(cone.cos_inner), T(cone.cos_outer));
-        f = f * phong::select(has_cone, spot, T(1));
+        f = f * detail::select(has_cone, spot, T(1));
     }
     if constexpr (!std::is_same_v<W, unweighted>) f = f * T(visibility);
     return f;
@@ -157,10 +157,10 @@ template <features F> inline constexpr bool gated = F.specular_gate || F.specula
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light>
 PHONG_INLINE constexpr void add_diffuse(Sums<T, Q>& sums, const Light& L, T f, T nl, [[maybe_unused]] mask_t<T> on)
 {
-    const T lambert = gated<F> ? nl : phong::max(nl, T(0));
+    const T lambert = gated<F> ? nl : detail::max(nl, T(0));
     glm::vec<3, T, Q>& sum = sum_of<term_kind::diffuse>(sums);
     if constexpr (std::is_floating_point_v<T>) sum += in_type<T>(diffuse_of(L)) * (f * lambert);
-    else sum += in_type<T>(diffuse_of(L)) * (f * phong::select(on, lambert, T(0)));
+    else sum += in_type<T>(diffuse_of(L)) * (f * detail::select(on, lambert, T(0)));
 }
 
 } // namespace phong::detail

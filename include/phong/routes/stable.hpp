@@ -57,7 +57,7 @@ PHONG_INLINE constexpr twofold_vector<T, Q> difference_twofold(const glm::vec<3,
         glm::vec<3, T, Q> p(T(0));
         for (int k = 0; k < 3; ++k) p[k] = rounded_product(point[k], w); // not fused into xyz - p
         d.hi = xyz - p;
-        for (int k = 0; k < 3; ++k) d.lo[k] = difference_error(xyz[k], p[k], d.hi[k]) - phong::fma(w, point[k], -p[k]);
+        for (int k = 0; k < 3; ++k) d.lo[k] = difference_error(xyz[k], p[k], d.hi[k]) - detail::fma(w, point[k], -p[k]);
     } else {
         (void)w;
         (void)point;
@@ -99,21 +99,21 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
         // two: unit_twofold_of gives the same bits; and |E.w Q| > max leaves the viewer a direction.
         using S = scalar_t<T>;
         constexpr bool is_float = std::is_same_v<S, float>;
-        const T b = math_traits<T>::inverse_pow2_scale(phong::max(phong::max_abs(eye), phong::max_abs(position)));
+        const T b = math_traits<T>::inverse_pow2_scale(detail::max(detail::max_abs(eye), detail::max_abs(position)));
         const vec3 position_b = position * b;
-        const glm::vec<4, T, Q> eye_ab_w_a = phong::rescaled(glm::vec<4, T, Q>(eye * b, T(env.eye.w))); // 2^a (E.xyz 2^b, E.w)
+        const glm::vec<4, T, Q> eye_ab_w_a = detail::rescaled(glm::vec<4, T, Q>(eye * b, T(env.eye.w))); // 2^a (E.xyz 2^b, E.w)
         const vec3 eye_ab(eye_ab_w_a.x, eye_ab_w_a.y, eye_ab_w_a.z);
         const T w_a = eye_ab_w_a.w;
         e = difference_twofold<light_kind::any>(eye_ab, w_a, position_b);
-        const mask_t<T> cancelled = phong::max_abs(e.hi) < T(is_float ? S(0x1p-100) : S(0x1p-900));
+        const mask_t<T> cancelled = detail::max_abs(e.hi) < T(is_float ? S(0x1p-100) : S(0x1p-900));
         if (math_traits<T>::any(cancelled)) {
             // Q from the input: 2^b < 1 may have dropped its subnormal bits, 2^b times the large
             // scale cannot (2^b > 1 only where E.xyz and Q are below 1: then Q 2^b is exact).
-            const T up = phong::select(cancelled, T(is_float ? S(0x1p120) : S(0x1p1000)), T(1));
+            const T up = detail::select(cancelled, T(is_float ? S(0x1p120) : S(0x1p1000)), T(1));
             const mask_t<T> down = b <= T(1);
             const T bu = b * up;
             vec3 position_up(T(0));
-            for (int k = 0; k < 3; ++k) position_up[k] = phong::select(down, position[k] * bu, position_b[k] * up);
+            for (int k = 0; k < 3; ++k) position_up[k] = detail::select(down, position[k] * bu, position_b[k] * up);
             e = difference_twofold<light_kind::any>(eye_ab * up, w_a, position_up);
         }
     }
@@ -123,11 +123,11 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
     const unit_twofold<T, Q> un = unit_twofold_of(normal, vec3(T(0)));
     s.normal = un.hi;
     s.normal_lo = un.lo;
-    s.normal_scaled = phong::rescaled(normal);
+    s.normal_scaled = detail::rescaled(normal);
     s.inv_normal_length = un.inv_scaled;
     s.poison = poison_of<F>(position, normal, given_view, env);
-    s.defined = phong::dot(s.normal, s.normal) > T(0);
-    s.sees_viewer = phong::dot(s.view, s.view) > T(0);
+    s.defined = detail::dot(s.normal, s.normal) > T(0);
+    s.sees_viewer = detail::dot(s.view, s.view) > T(0);
     if constexpr (F.two_sided != facing::none) {
         const T sign = facing_sign<F>(s.normal, s.view, front_facing);
         s.normal = s.normal * sign;
@@ -164,19 +164,19 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr light_unit<T, Q> light_rounded_once(const surface_frame<T, Q>& s, const twofold_vector<T, Q>& d)
 {
     using vec3 = glm::vec<3, T, Q>;
-    const T largest_d = phong::max_abs(d.hi);
+    const T largest_d = detail::max_abs(d.hi);
     const mask_t<T> in_range = largest_d <= largest<T>(); // an overflowed d has no direction
-    const T scale = math_traits<T>::inverse_pow2_scale(phong::select(in_range, largest_d, T(1)));
+    const T scale = math_traits<T>::inverse_pow2_scale(detail::select(in_range, largest_d, T(1)));
     vec3 hs(T(0)), ls(T(0));
     for (int k = 0; k < 3; ++k) {
-        hs[k] = phong::select(in_range, d.hi[k] * scale, T(0));
-        ls[k] = phong::select(in_range, d.lo[k] * scale, T(0)); // lo is NaN when d overflowed
+        hs[k] = detail::select(in_range, d.hi[k] * scale, T(0));
+        ls[k] = detail::select(in_range, d.lo[k] * scale, T(0)); // lo is NaN when d overflowed
     }
-    const T hh = phong::dot(hs, hs);
-    const T inv = phong::select(hh > T(0), phong::rsqrt(phong::select(hh > T(0), hh, T(1))), T(0));
+    const T hh = detail::dot(hs, hs);
+    const T inv = detail::select(hh > T(0), detail::rsqrt(detail::select(hh > T(0), hh, T(1))), T(0));
     T nh, nlo;
     dot_twofold(s.normal_scaled, vec3(T(0)), hs, ls, nh, nlo);
-    const T length = phong::select(in_range, phong::sqrt(hh) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
+    const T length = detail::select(in_range, detail::sqrt(hh) / scale, T(std::numeric_limits<scalar_t<T>>::infinity()));
     return {hs * inv, vec3(T(0)), (nh + nlo) * (s.inv_normal_length * inv), T(0), inv, length};
 }
 
@@ -190,10 +190,10 @@ template <class T>
 PHONG_INLINE constexpr T power_of_cosine(const cosine_complement<T>& p, T m)
 {
     const mask_t<T> near_peak = p.complement <= T(0.5);
-    if (math_traits<T>::all(near_peak)) return phong::pow_one_minus(p.complement, m);
-    const T far = phong::pow_unit(phong::clamp(p.cosine, T(0), T(1)), m);
+    if (math_traits<T>::all(near_peak)) return detail::pow_one_minus(p.complement, m);
+    const T far = detail::pow_unit(detail::clamp(p.cosine, T(0), T(1)), m);
     if (!math_traits<T>::any(near_peak)) return far;
-    return phong::select(near_peak, phong::pow_one_minus(p.complement, m), far);
+    return detail::select(near_peak, detail::pow_one_minus(p.complement, m), far);
 }
 
 /// The specular factor (1 - x)^m, x = 1 - r.v or 1 - n.h from chords (specular.hpp's
@@ -204,10 +204,10 @@ PHONG_INLINE constexpr T specular_factor(const surface_frame<T, Q>& s, const lig
 {
     if constexpr (F.specular == specular_model::phong) {
         if (twofold) return power_of_cosine(one_minus_rv(s.normal, s.normal_lo, u.nl, u.nl_lo, u.l, u.l_lo, s.view, s.view_lo), m);
-        return phong::pow_one_minus(detail::one_minus_reflection_cosine(s.normal, u.nl, u.l, s.view), m);
+        return detail::pow_one_minus(detail::one_minus_reflection_cosine(s.normal, u.nl, u.l, s.view), m);
     } else {
         if (twofold) return power_of_cosine(one_minus_halfway(s.normal, s.normal_lo, u.l, u.l_lo, s.view, s.view_lo), m);
-        return phong::pow_one_minus(detail::one_minus_halfway_cosine(s.normal, u.l, s.view), m);
+        return detail::pow_one_minus(detail::one_minus_halfway_cosine(s.normal, u.l, s.view), m);
     }
 }
 
@@ -231,7 +231,7 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
     if constexpr (F.specular == specular_model::blinn && F.stable_twofold_above > 0) {
         // l + v nearly cancels (|l + v| < 2^-10): h from once-rounded l and v is noise there.
         const vec3 lv = u.l + s.view;
-        if (!twofold && math_traits<T>::any(phong::dot(lv, lv) < T(1.0 / 1048576))) {
+        if (!twofold && math_traits<T>::any(detail::dot(lv, lv) < T(1.0 / 1048576))) {
             twofold = true;
             u = light_twofold(s, d);
         }
@@ -246,7 +246,7 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
     if constexpr (F.specular != specular_model::none) {
         T spec = specular_factor<F>(s, u, twofold, m);
         if constexpr (!std::is_floating_point_v<T>) // lanes computed but off, or without a view vector
-            spec = phong::select(math_traits<T>::both(on, s.sees_viewer), spec, T(0));
+            spec = detail::select(math_traits<T>::both(on, s.sees_viewer), spec, T(0));
         sum_of<term_kind::specular>(sums) += in_type<T>(specular_of(L)) * (f * spec);
     }
 }

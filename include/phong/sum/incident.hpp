@@ -58,7 +58,7 @@ PHONG_INLINE constexpr void check_incident([[maybe_unused]] const incident<T, Q>
 {
     if constexpr (std::is_floating_point_v<T>) {
         if (!value_checks_on()) return;
-        const T ll = phong::dot(in.direction, in.direction);
+        const T ll = detail::dot(in.direction, in.direction);
         require(ll >= T(0.998) && ll <= T(1.002), "phong::incident: direction must be unit length");
         require(in.distance >= T(0) && in.distance <= std::numeric_limits<T>::max(), "phong::incident: distance must be finite and >= 0");
     }
@@ -86,14 +86,14 @@ PHONG_INLINE constexpr exact::surface_frame<T, Q> incident_frame(const glm::vec<
     T poison = T(0);
     if (!(n.square <= largest<T>() && v.square <= largest<T>())) [[unlikely]] {
         const vec3 zero(T(0));
-        poison = phong::dot(normal, zero) + phong::dot(view_input, zero);
+        poison = detail::dot(normal, zero) + detail::dot(view_input, zero);
     }
     const bool defined = n.ok && poison == T(0);
     vec3 unit_normal = n.unit;
     if constexpr (F.two_sided != facing::none) unit_normal = unit_normal * facing_sign<F>(unit_normal, v.unit, front_facing);
     else (void)front_facing;
     T nv = T(0);
-    if constexpr (F.specular != specular_model::none) nv = phong::dot(unit_normal, v.unit);
+    if constexpr (F.specular != specular_model::none) nv = detail::dot(unit_normal, v.unit);
     return {vec3(T(0)), unit_normal, v.unit, defined, v.ok, poison, nv, {}};
 }
 
@@ -114,7 +114,7 @@ PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exa
     const T w = light_w<F, T>(L);
     const T f = light_factor<F>(L, T(in.distance), w, l, unweighted{});
     add_ambient<F>(sums, L, f);
-    const T nl = phong::dot(s.normal, l);
+    const T nl = detail::dot(s.normal, l);
     if (!(s.defined && (!gated<F> || nl > T(0)))) return;
     if constexpr (F.specular != specular_model::none) {
         if (s.sees_viewer) {

@@ -1,4 +1,4 @@
-// phong: the full multi-light sum, shade<features>(...), and the per-vertex pipeline of seed 003.
+// phong: the full multi-light sum, shade<features>(...), and the per-vertex pipeline of the GLSL ADS shader.
 // SPDX-License-Identifier: MIT
 //
 // This header only orchestrates: prepare the point, add every light, finish (detail/route.hpp
@@ -70,7 +70,7 @@ PHONG_INLINE constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>&
 {
     if constexpr (std::is_floating_point_v<T>) {
         if (!value_checks_on()) return;
-        const T vv = phong::dot(v, v);
+        const T vv = detail::dot(v, v);
         require(vv >= T(0.998) && vv <= T(1.002), message);
     }
 }
@@ -148,7 +148,7 @@ PHONG_INLINE constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::
 
 } // namespace detail
 
-/// The full local lighting model at one point (seeds 000, 001 and 003 are presets of it):
+/// The full local lighting model at one point (classic Phong, 001 and 003 are presets of it):
 ///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0)
 ///                + ks sum_i f_i Ls_i s_i,
 ///   s_i = max(r_i.v, 0)^m (r_i = reflect(-l_i, n)) or max(n.h_i, 0)^m (h_i = normalize(l_i + v)),
@@ -257,7 +257,7 @@ PHONG_INLINE constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(
     return detail::poisoned(detail::shade_at<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing));
 }
 
-/// Seed 003's per-vertex pipeline (phong.vert, diffuse.vert): object-space position and normal,
+/// the GLSL ADS shader's per-vertex pipeline (phong.vert, diffuse.vert): object-space position and normal,
 ///   eyeCoords = ModelView * (p, 1),  tnorm = normalize(NormalMatrix * n),
 /// then shade<F>(eyeCoords.xyz, tnorm, ...) with lights in eye coordinates.
 /// Pre: model_view affine (last row 0, 0, 0, 1), as in the seed, which drops eyeCoords.w.

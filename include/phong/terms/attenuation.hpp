@@ -9,6 +9,7 @@
 
 namespace phong {
 
+namespace detail {
 /// Smallest denominator an attenuation divides by: sqrt(smallest normal T), about 1.1e-19 in
 /// float and 1.5e-154 in double. It caps f at 1 / attenuation_denominator_min<T> (9.2e18 in float)
 /// when c0 = 0 and d -> 0, so a light at the surface point gives a large finite value, never inf.
@@ -18,8 +19,9 @@ template <>
 inline constexpr double attenuation_denominator_min<double> = 1.4916681462400413e-154; // 2^-511
 template <>
 inline constexpr long double attenuation_denominator_min<long double> = 1.4916681462400413e-154L;
+} // namespace detail
 
-/// Polynomial attenuation (seed 000's f_i(Q), OpenGL):
+/// Polynomial attenuation (classic Phong's f_i(Q), OpenGL):
 ///   f = 1 / max(c0 + c1 d + c2 d^2, attenuation_denominator_min<Floor>)
 /// evaluated as c0 + d (c1 + c2 d), so c2 = 0 with a huge d gives no 0 * inf.
 /// Pre: c0, c1, c2 >= 0 and finite, d >= 0. Edge: d = 0 with c0 = 0 gives the cap
@@ -27,12 +29,12 @@ inline constexpr long double attenuation_denominator_min<long double> = 1.491668
 /// when c2 > 0 and at most 1 / (c1 max) (2.9e-39 in float) when only c1 > 0; NaN d gives NaN.
 /// Floor: the type whose attenuation_denominator_min applies (T's scalar; float lights evaluated
 /// in double pass float, so the result is float's formula evaluated in double).
-template <class T, class Floor = scalar_t<T>>
+template <class T, class Floor = detail::scalar_t<T>>
 PHONG_INLINE constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 {
-    d = phong::min(d, largest<T>()); // inf -> max: keeps c2 * d finite
+    d = detail::min(d, detail::largest<T>()); // inf -> max: keeps c2 * d finite
     const T denominator = c0 + d * (c1 + c2 * d);
-    return T(1) / phong::max(denominator, T(attenuation_denominator_min<Floor>));
+    return T(1) / detail::max(denominator, T(detail::attenuation_denominator_min<Floor>));
 }
 
 /// Windowed inverse square (Filament, three.js "physically based" falloff):
@@ -41,13 +43,13 @@ PHONG_INLINE constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 /// Pre: range > 0 (inf allowed: pure inverse square), d >= 0. Edge: d = inf gives 0.
 /// Floor: as for attenuation_polynomial. The floor bounds d^2 before the window multiplies, so
 /// capping the quotient afterwards would differ (by up to 1/window^2) where d^2 < the floor.
-template <class T, class Floor = scalar_t<T>>
+template <class T, class Floor = detail::scalar_t<T>>
 PHONG_INLINE constexpr T attenuation_windowed(T d, T range)
 {
-    d = phong::min(d, largest<T>());
-    const T ratio = phong::min(d / range, T(65536)); // ratio^4 stays finite; window is 0 anyway
-    const T window = phong::clamp(T(1) - pow<4>(ratio), T(0), T(1));
-    return window * window / phong::max(d * d, T(attenuation_denominator_min<Floor>));
+    d = detail::min(d, detail::largest<T>());
+    const T ratio = detail::min(d / range, T(65536)); // ratio^4 stays finite; window is 0 anyway
+    const T window = detail::clamp(T(1) - detail::pow<4>(ratio), T(0), T(1));
+    return window * window / detail::max(d * d, T(detail::attenuation_denominator_min<Floor>));
 }
 
 /// OpenGL spot factor for the unit light direction l (from Q toward the light) and unit axis s:
@@ -59,11 +61,11 @@ PHONG_INLINE constexpr T attenuation_windowed(T d, T range)
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
 {
-    const mask_t<T> no_cone = cos_cutoff <= T(-1);
-    if (math_traits<T>::all(no_cone)) return T(1); // 180 degrees: skip the power (every lane of a batch)
-    const T c = -phong::dot(l, s);
-    const T inside = phong::select(c >= cos_cutoff, phong::pow_unit(phong::clamp(c, T(0), T(1)), exponent), T(0));
-    return phong::select(no_cone, T(1), inside);
+    const detail::mask_t<T> no_cone = cos_cutoff <= T(-1);
+    if (detail::math_traits<T>::all(no_cone)) return T(1); // 180 degrees: skip the power (every lane of a batch)
+    const T c = -detail::dot(l, s);
+    const T inside = detail::select(c >= cos_cutoff, detail::pow_unit(detail::clamp(c, T(0), T(1)), exponent), T(0));
+    return detail::select(no_cone, T(1), inside);
 }
 
 /// Smooth spot factor: t = clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1),
@@ -73,11 +75,11 @@ PHONG_INLINE constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T cos_inner, T cos_outer)
 {
-    const T c = -phong::dot(l, s);
+    const T c = -detail::dot(l, s);
     const T width = cos_inner - cos_outer;
-    const T hard = phong::select(c >= cos_outer, T(1), T(0));
-    const T t = phong::clamp((c - cos_outer) / phong::select(width > T(0), width, T(1)), T(0), T(1));
-    return phong::select(width > T(0), t * t * (T(3) - T(2) * t), hard);
+    const T hard = detail::select(c >= cos_outer, T(1), T(0));
+    const T t = detail::clamp((c - cos_outer) / detail::select(width > T(0), width, T(1)), T(0), T(1));
+    return detail::select(width > T(0), t * t * (T(3) - T(2) * t), hard);
 }
 
 /// Linear spot factor, the edge most tutorials and engines write (LearnOpenGL's flashlight,
@@ -92,11 +94,11 @@ PHONG_INLINE constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T spot_linear(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T cos_inner, T cos_outer)
 {
-    const T c = -phong::dot(l, s);
+    const T c = -detail::dot(l, s);
     const T width = cos_inner - cos_outer;
-    const T hard = phong::select(c >= cos_outer, T(1), T(0));
-    const T t = phong::clamp((c - cos_outer) / phong::select(width > T(0), width, T(1)), T(0), T(1));
-    return phong::select(width > T(0), t, hard);
+    const T hard = detail::select(c >= cos_outer, T(1), T(0));
+    const T t = detail::clamp((c - cos_outer) / detail::select(width > T(0), width, T(1)), T(0), T(1));
+    return detail::select(width > T(0), t, hard);
 }
 
 } // namespace phong

@@ -42,18 +42,20 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> unnormalized_view([[maybe_unused]] cons
 }
 } // namespace detail
 
+namespace detail {
 /// A unit direction and the distance along it.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct direction_and_distance {
     glm::vec<3, T, Q> direction; ///< unit vector, or 0 when undefined
     T distance;                  ///< distance to the point; +inf for a point at infinity (w = 0)
 };
+} // namespace detail
 
 /// The unit vector from Q toward the homogeneous point P:
 ///   direction = normalize(P.xyz - P.w Q)      (TeX: \hat l = (P_{xyz} - P_w Q) / |P_{xyz} - P_w Q|)
 ///   distance  = |P.xyz - P.w Q| / P.w for P.w > 0, +inf for P.w = 0.
-/// w = 1 is seed 000's positional light normalize(L.xyz - Q), w = 0 its directional light
-/// normalize(L.xyz); the same rule gives seed 001's e = normalize(eye - P) and the orthographic
+/// w = 1 is classic Phong's positional light normalize(L.xyz - Q), w = 0 its directional light
+/// normalize(L.xyz); the same rule gives the ray tracer model's e = normalize(eye - P) and the orthographic
 /// view vector. One rule, no branch on w for the direction.
 /// Pre: P.w >= 0 (a negative w flips the direction), finite. Edge: P at Q (w > 0) gives
 /// direction 0 and distance 0; P.xyz = 0 with w = 0 gives direction 0 and distance +inf (still a
@@ -62,25 +64,27 @@ struct direction_and_distance {
 /// the direction stays a unit vector, the distance is inf only when the true one exceeds the
 /// largest T. NaN or inf in P or Q: NaN components.
 template <class T, glm::qualifier Q>
-PHONG_INLINE constexpr direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& P, const glm::vec<3, T, Q>& point)
+PHONG_INLINE constexpr detail::direction_and_distance<T, Q> toward(const glm::vec<4, T, Q>& P, const glm::vec<3, T, Q>& point)
 {
     const glm::vec<3, T, Q> xyz(P.x, P.y, P.z);
     const glm::vec<3, T, Q> full = detail::homogeneous_difference(xyz, P.w, point);
     // Halving is exact (for normal numbers), so the halves' difference has the same direction and
     // half the length; it is taken only where the full one overflowed (elsewhere scale = 1: the same bits).
-    const T scale = phong::select(phong::max_abs(full) > largest<T>(), T(0.5), T(1));
+    const T scale = detail::select(detail::max_abs(full) > detail::largest<T>(), T(0.5), T(1));
     const glm::vec<3, T, Q> d = detail::homogeneous_difference(xyz * scale, P.w * scale, point);
     const T inf = std::numeric_limits<T>::infinity();
-    const T w = phong::select(P.w > T(0), P.w, T(1));
-    return {phong::normalize(d), phong::select(P.w > T(0), phong::length(d) / (scale * w), inf)};
+    const T w = detail::select(P.w > T(0), P.w, T(1));
+    return {detail::normalize(d), detail::select(P.w > T(0), detail::length(d) / (scale * w), inf)};
 }
 
-/// Seed 000's light direction \hat l_i from a homogeneous light position L (w = 1 or 0), eye coords.
+namespace detail {
+/// classic Phong's light direction \hat l_i from a homogeneous light position L (w = 1 or 0), eye coords.
 /// The same as toward(L, Q).direction; see there for domain and edges.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<3, T, Q> light_direction(const glm::vec<4, T, Q>& L, const glm::vec<3, T, Q>& point)
 {
     return phong::toward(L, point).direction;
 }
+} // namespace detail
 
 } // namespace phong

@@ -17,11 +17,11 @@ namespace detail {
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T viewer_facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v)
 {
-    return phong::select(phong::dot(n, v) < T(0), T(-1), T(1));
+    return detail::select(detail::dot(n, v) < T(0), T(-1), T(1));
 }
 } // namespace detail
 
-/// Seed 000's conditional negation (two-sided lighting decided by the view):
+/// classic Phong's conditional negation (two-sided lighting decided by the view):
 ///   n' = dot(n, v) < 0 ? -n : n
 /// so the normal faces the viewer. Edge: dot(n, v) = 0 or n = 0 keeps n; NaN keeps n.
 template <class T, glm::qualifier Q>
@@ -30,6 +30,7 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> face_viewer(const glm::vec<3, T, Q>& n,
     return n * detail::viewer_facing_sign(n, v);
 }
 
+namespace detail {
 /// Two-sided lighting decided by the caller (e.g. gl_FrontFacing): n' = front_facing ? n : -n.
 /// Edge: any n (zero, NaN) is passed through, negated or not.
 template <class T, glm::qualifier Q>
@@ -37,7 +38,9 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> face_flag(const glm::vec<3, T, Q>& n, b
 {
     return front_facing ? n : -n;
 }
+} // namespace detail
 
+namespace detail {
 /// The cofactor matrix of the linear map M (the adjugate transposed): cof(M) = det(M) M^{-T},
 /// columns (b x c, c x a, a x b) for M's columns a, b, c.
 /// Carries normals: n' = cof(M) n is normal to the transformed surface M x for every M, even a
@@ -51,13 +54,13 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix_cofactor(const glm::mat<3, 3, T, Q>& M)
 {
     const glm::vec<3, T, Q> a = M[0], b = M[1], c = M[2];
-    return glm::mat<3, 3, T, Q>(phong::cross(b, c), phong::cross(c, a), phong::cross(a, b));
+    return glm::mat<3, 3, T, Q>(detail::cross(b, c), detail::cross(c, a), detail::cross(a, b));
 }
 
 /// The classic normal matrix (GLSL's NormalMatrix): (M^{-1})^T = cof(M) / det(M).
 /// Right for every invertible M, mirrors included (outward normals stay outward): for a surface
 /// point x with outward normal n, (M^{-T} n) . (M y) = n . y for every vector y, so tangents stay
-/// orthogonal and the outward side stays positive. Seed 001's "m = M m'" is right only with this
+/// orthogonal and the outward side stays positive. the ray tracer model's "m = M m'" is right only with this
 /// matrix for its M; the object's transform itself (M m') tilts normals under non-uniform scale.
 /// Pre: as normal_matrix_cofactor. Edge: det(M) = 0 (or a det that underflows to 0) has no
 /// inverse; the cofactor is returned instead (the right direction up to sign, finite). When
@@ -67,13 +70,14 @@ PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix_cofactor(const glm::ma
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix_inverse_transpose(const glm::mat<3, 3, T, Q>& M)
 {
-    const glm::mat<3, 3, T, Q> cof = phong::normal_matrix_cofactor(M);
-    const T det = phong::dot(M[0], cof[0]); // a . (b x c)
+    const glm::mat<3, 3, T, Q> cof = detail::normal_matrix_cofactor(M);
+    const T det = detail::dot(M[0], cof[0]); // a . (b x c)
     if (det == T(0)) return cof;
     T inv = T(1) / det; // GLM's matrix operators are not constexpr: scale column-wise
     if (inv - inv != T(0)) inv = det < T(0) ? T(-1) : T(1); // 1/det overflowed: inf * 0 would give NaN
     return glm::mat<3, 3, T, Q>(cof[0] * inv, cof[1] * inv, cof[2] * inv);
 }
+} // namespace detail
 
 /// GLSL's NormalMatrix for a model-view matrix: the inverse transpose of its upper 3x3
 /// (translation ignored). Pre and edges: those of normal_matrix_inverse_transpose (a singular
@@ -83,11 +87,11 @@ PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T
 {
     const glm::mat<3, 3, T, Q> upper{glm::vec<3, T, Q>(model_view[0]), glm::vec<3, T, Q>(model_view[1]),
                                      glm::vec<3, T, Q>(model_view[2])};
-    return phong::normal_matrix_inverse_transpose(upper);
+    return detail::normal_matrix_inverse_transpose(upper);
 }
 
-/// n' = normalize(N n): a normal carried by a normal matrix N (seed 001's m = M m' with M the
-/// transpose of the inverse transform, seed 003's tnorm = normalize(NormalMatrix * VertexNormal)).
+/// n' = normalize(N n): a normal carried by a normal matrix N (the ray tracer model's m = M m' with M the
+/// transpose of the inverse transform, the GLSL ADS shader's tnorm = normalize(NormalMatrix * VertexNormal)).
 /// N should come from normal_matrix / normal_matrix_inverse_transpose (or the cofactor, see
 /// there), not be the model matrix itself. Edge: a zero result stays 0 (never NaN for finite
 /// input); where N n overflows, N and n are first scaled by powers of two (exact: the same
@@ -97,14 +101,14 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> transform_normal(const glm::mat<3, 3, T
 {
     glm::vec<3, T, Q> r = N[0] * n.x + N[1] * n.y + N[2] * n.z;
     if constexpr (std::is_floating_point_v<T>) {
-        if (!(phong::max_abs(r) <= largest<T>())) [[unlikely]] { // overflow (or NaN input, which stays NaN)
-            const T s = math_traits<T>::inverse_pow2_scale(
-                phong::max(phong::max(phong::max_abs(N[0]), phong::max_abs(N[1])), phong::max_abs(N[2])));
-            const glm::vec<3, T, Q> m = phong::rescaled(n);
+        if (!(detail::max_abs(r) <= detail::largest<T>())) [[unlikely]] { // overflow (or NaN input, which stays NaN)
+            const T s = detail::math_traits<T>::inverse_pow2_scale(
+                detail::max(detail::max(detail::max_abs(N[0]), detail::max_abs(N[1])), detail::max_abs(N[2])));
+            const glm::vec<3, T, Q> m = detail::rescaled(n);
             r = (N[0] * s) * m.x + (N[1] * s) * m.y + (N[2] * s) * m.z;
         }
     }
-    return phong::normalize(r);
+    return detail::normalize(r);
 }
 
 } // namespace phong

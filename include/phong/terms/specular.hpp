@@ -8,6 +8,7 @@
 
 namespace phong {
 
+namespace detail {
 /// (1 - x)^m for x in [0, 1], m >= 0, without the rounding amplification of pow(1 - x, m):
 ///   exp(m * log1p(-x)), with m = 0 giving exactly 1 (pow(0, 0) = 1; m * log1p(-1) is never
 ///   formed as 0 * -inf, and no finite product overflows, so it is a constant expression too).
@@ -18,11 +19,12 @@ namespace phong {
 template <class T>
 PHONG_INLINE constexpr T pow_one_minus(T x, T m)
 {
-    if constexpr (requires { math_traits<T>::pow_one_minus(x, m); }) return math_traits<T>::pow_one_minus(x, m); // SIMD kernels
-    const T lg = phong::log1p(-phong::min(x, T(1))); // -inf at x = 1
-    const mask_t<T> positive = m > T(0);
-    return phong::exp(phong::select(positive, phong::select(positive, m, T(1)) * lg, T(0)));
+    if constexpr (requires { detail::math_traits<T>::pow_one_minus(x, m); }) return detail::math_traits<T>::pow_one_minus(x, m); // SIMD kernels
+    const T lg = detail::log1p(-detail::min(x, T(1))); // -inf at x = 1
+    const detail::mask_t<T> positive = m > T(0);
+    return detail::exp(detail::select(positive, detail::select(positive, m, T(1)) * lg, T(0)));
 }
+} // namespace detail
 
 namespace detail {
 
@@ -38,8 +40,8 @@ PHONG_INLINE constexpr T reflection_cosine_scaled(T nd, T nv, const glm::vec<3, 
 {
     // SIMD lanes: nd (2 nv), the same bits as (2 nd) nv, with 2 nv once per point (shade_batch's
     // light loop); scalars keep (2 nd) nv (one instruction fewer per pair in shade's loop)
-    if constexpr (std::is_floating_point_v<T>) return T(2) * nd * nv - phong::dot(d, v);
-    else return nd * (T(2) * nv) - phong::dot(d, v);
+    if constexpr (std::is_floating_point_v<T>) return T(2) * nd * nv - detail::dot(d, v);
+    else return nd * (T(2) * nv) - detail::dot(d, v);
 }
 
 /// Blinn's 1/|l + v|, the scale of n.h = (n.l + n.v) / |l + v| (h = normalize(l + v)).
@@ -48,7 +50,7 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
 {
     const glm::vec<3, T, Q> sum = l + v;
-    return detail::exact_inverse_length(phong::dot(sum, sum));
+    return detail::exact_inverse_length(detail::dot(sum, sum));
 }
 
 /// The specular power of the cosine c = x * scale: min(max(c, 0), 1)^m, pow(0, 0) = 1.
@@ -58,10 +60,10 @@ template <class T>
 PHONG_INLINE constexpr T cosine_power(T x, T scale, T m)
 {
     if constexpr (std::is_floating_point_v<T>) {
-        if (x > T(0)) return detail::pow_unit_at_most_one(phong::min(x * scale, T(1)), m);
+        if (x > T(0)) return detail::pow_unit_at_most_one(detail::min(x * scale, T(1)), m);
         return detail::power_of_zero(m);
     } else {
-        return phong::pow_unit(phong::clamp(x * scale, T(0), T(1)), m);
+        return detail::pow_unit(detail::clamp(x * scale, T(0), T(1)), m);
     }
 }
 
@@ -73,7 +75,7 @@ PHONG_INLINE constexpr T one_minus_reflection_cosine(const glm::vec<3, T, Q>& n,
                                                  const glm::vec<3, T, Q>& v)
 {
     const glm::vec<3, T, Q> chord = n * (T(2) * nl) - l - v;
-    return phong::dot(chord, chord) * T(0.5);
+    return detail::dot(chord, chord) * T(0.5);
 }
 
 /// 1 - n.h = |n - h|^2 / 2 for h = normalize(l + v) rounded once.
@@ -83,17 +85,17 @@ PHONG_INLINE constexpr T one_minus_halfway_cosine(const glm::vec<3, T, Q>& n, co
                                               const glm::vec<3, T, Q>& v)
 {
     const glm::vec<3, T, Q> sum = l + v;
-    const T hh = phong::dot(sum, sum);
-    const glm::vec<3, T, Q> chord = n - sum * phong::select(hh > T(0), phong::rsqrt(hh), T(0));
-    return phong::select(hh > T(0), phong::dot(chord, chord) * T(0.5), T(1));
+    const T hh = detail::dot(sum, sum);
+    const glm::vec<3, T, Q> chord = n - sum * detail::select(hh > T(0), detail::rsqrt(hh), T(0));
+    return detail::select(hh > T(0), detail::dot(chord, chord) * T(0.5), T(1));
 }
 
 } // namespace detail
 
-/// Phong's reflection-based specular factor (seed 000, seed 003):
+/// Phong's reflection-based specular factor (classic Phong, the GLSL ADS shader):
 ///   r = reflect(-l, n) = 2 (n.l) n - l,   s = [n.l > 0] max(r.v, 0)^m   (base clamped to [0, 1])
 /// (TeX: s = [\hat n\cdot\hat l > 0]\,\max(\hat r\cdot\hat v, 0)^m), with r.v = 2 (n.l)(n.v) - l.v.
-/// Pre: n, l, v unit length (or 0); m >= 0 finite. Edge: 0 when n.l <= 0 (the gate of seed 003);
+/// Pre: n, l, v unit length (or 0); m >= 0 finite. Edge: 0 when n.l <= 0 (the gate of the GLSL ADS shader);
 /// m = 0 gives 1 where lit (pow(0, 0) = 1); l = 0 or v = 0 give 0 (m > 0).
 /// Accuracy: the exact mode's (phong/accuracy.hpp): the power amplifies the rounding of r.v by m
 /// (see specular_reflection_stable). The same steps as shade<F>'s exact mode.
@@ -101,12 +103,12 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T specular_reflection(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                          const glm::vec<3, T, Q>& v, T m)
 {
-    const T nl = phong::dot(n, l);
-    const T s = detail::cosine_power(detail::reflection_cosine_scaled(nl, phong::dot(n, v), l, v), T(1), m);
-    return phong::select(nl > T(0), s, T(0));
+    const T nl = detail::dot(n, l);
+    const T s = detail::cosine_power(detail::reflection_cosine_scaled(nl, detail::dot(n, v), l, v), T(1), m);
+    return detail::select(nl > T(0), s, T(0));
 }
 
-/// Blinn-Phong's halfway-based specular factor (seed 001):
+/// Blinn-Phong's halfway-based specular factor (ray tracer model):
 ///   h = normalize(l + v),   s = [n.l > 0] max(n.h, 0)^m   (base clamped to [0, 1])
 /// with n.h = (n.l + n.v) / |l + v|. Pre: n, l, v unit length (or 0); m >= 0 finite. Edge: l = -v
 /// (no halfway vector) takes n.h = 0: s = 0 for m > 0 and 1 for m = 0 (never NaN); 0 when n.l <= 0.
@@ -115,11 +117,12 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T specular_halfway(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                       const glm::vec<3, T, Q>& v, T m)
 {
-    const T nl = phong::dot(n, l);
-    const T s = detail::cosine_power(nl + phong::dot(n, v), detail::inverse_halfway_length(l, v), m);
-    return phong::select(nl > T(0), s, T(0));
+    const T nl = detail::dot(n, l);
+    const T s = detail::cosine_power(nl + detail::dot(n, v), detail::inverse_halfway_length(l, v), m);
+    return detail::select(nl > T(0), s, T(0));
 }
 
+namespace detail {
 /// The reflection-based factor, evaluated stably for high m near the highlight:
 ///   s = [n.l > 0] (1 - x)^m,  x = min(|r - v|^2 / 2, 1) = 1 - r.v for unit r, v.
 /// Same domain and edges as specular_reflection; the rounding of r.v is no longer amplified by m.
@@ -128,9 +131,9 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T specular_reflection_stable(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                                 const glm::vec<3, T, Q>& v, T m)
 {
-    const T nl = phong::dot(n, l);
-    const T x = phong::select(phong::dot(v, v) > T(0), detail::one_minus_reflection_cosine(n, nl, l, v), T(1));
-    return phong::select(nl > T(0), phong::pow_one_minus(x, m), T(0));
+    const T nl = detail::dot(n, l);
+    const T x = detail::select(detail::dot(v, v) > T(0), detail::one_minus_reflection_cosine(n, nl, l, v), T(1));
+    return detail::select(nl > T(0), detail::pow_one_minus(x, m), T(0));
 }
 
 /// The halfway-based factor, evaluated stably: s = [n.l > 0] (1 - x)^m, x = min(|n - h|^2 / 2, 1).
@@ -139,8 +142,9 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T specular_halfway_stable(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                              const glm::vec<3, T, Q>& v, T m)
 {
-    const T nl = phong::dot(n, l);
-    return phong::select(nl > T(0), phong::pow_one_minus(detail::one_minus_halfway_cosine(n, l, v), m), T(0));
+    const T nl = detail::dot(n, l);
+    return detail::select(nl > T(0), detail::pow_one_minus(detail::one_minus_halfway_cosine(n, l, v), m), T(0));
 }
+} // namespace detail
 
 } // namespace phong

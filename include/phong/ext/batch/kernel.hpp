@@ -191,7 +191,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
         // the fast power by binary powering, its schedule made here once rather than per pair
         // (n >= 1; m = 0, pow(0, 0) = 1 on every lane that is on, takes lane_shininess below).
         const T m0 = mat.shininess.get(0);
-        if (m0 >= T(1) && m0 <= T(fast::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
+        if (m0 >= T(1) && m0 <= T(fast::detail::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
             math_traits<V>::all(mat.shininess == V(m0)))
             return run(exact::integer_exponent<V>::of(unsigned(m0)));
     }

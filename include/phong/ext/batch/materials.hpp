@@ -232,8 +232,8 @@ template <class V> exact::lane_shininess<V> shininess_lanes(const V& m)
 {
     using S = typename math_traits<V>::scalar;
     const mask_t<V> zero = m == V(S(0));
-    return {m, zero, math_traits<V>::any(zero), phong::select(zero, V(-std::numeric_limits<S>::infinity()), V(S(0))),
-            phong::min(m, V(S(0x1p100)))};
+    return {m, zero, math_traits<V>::any(zero), detail::select(zero, V(-std::numeric_limits<S>::infinity()), V(S(0))),
+            detail::min(m, V(S(0x1p100)))};
 }
 
 } // namespace phong::detail

@@ -26,7 +26,7 @@ template <class V, glm::qualifier Q>
 folded_sums<V, Q> select_sums(const mask_t<V>& lanes, const folded_sums<V, Q>& sums, const folded_sums<V, Q>& before)
 {
     folded_sums<V, Q> r;
-    for (int c = 0; c < 3; ++c) r.total[c] = phong::select(lanes, sums.total[c], before.total[c]);
+    for (int c = 0; c < 3; ++c) r.total[c] = detail::select(lanes, sums.total[c], before.total[c]);
     return r;
 }
 template <class V, glm::qualifier Q>
@@ -34,9 +34,9 @@ light_sums<V, Q> select_sums(const mask_t<V>& lanes, const light_sums<V, Q>& sum
 {
     light_sums<V, Q> r;
     for (int c = 0; c < 3; ++c) {
-        r.ambient[c] = phong::select(lanes, sums.ambient[c], before.ambient[c]);
-        r.diffuse[c] = phong::select(lanes, sums.diffuse[c], before.diffuse[c]);
-        r.specular[c] = phong::select(lanes, sums.specular[c], before.specular[c]);
+        r.ambient[c] = detail::select(lanes, sums.ambient[c], before.ambient[c]);
+        r.diffuse[c] = detail::select(lanes, sums.diffuse[c], before.diffuse[c]);
+        r.specular[c] = detail::select(lanes, sums.specular[c], before.specular[c]);
     }
     return r;
 }

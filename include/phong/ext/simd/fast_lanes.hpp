@@ -1,4 +1,4 @@
-// phong: fast::lanes for xsimd batches (the lane-wise bit access of phong/fast_math.hpp's kernels)
+// phong: fast::detail::lanes for xsimd batches (the lane-wise bit access of phong/fast_math.hpp's kernels)
 // and the batches' fast::rsqrt.
 // SPDX-License-Identifier: MIT
 #pragma once
@@ -16,6 +16,7 @@
 
 namespace phong::fast {
 
+namespace detail {
 template <class T, class A>
 struct lanes<xsimd::batch<T, A>> {
     using V = xsimd::batch<T, A>;
@@ -29,7 +30,7 @@ struct lanes<xsimd::batch<T, A>> {
     static V madd(const V& a, const V& b, const V& c)
     {
 #  if defined(__FMA__) || defined(__AVX512F__)
-        return math_traits<V>::fma(a, b, c);
+        return phong::detail::math_traits<V>::fma(a, b, c);
 #  else
         return a * b + c;
 #  endif
@@ -48,9 +49,9 @@ struct lanes<xsimd::batch<T, A>> {
             return xsimd::select(phong::detail::ieee::positive_finite(r0), r2, r0);
         }
 #  endif
-        return math_traits<V>::rsqrt(x);
+        return phong::detail::math_traits<V>::rsqrt(x);
     }
-    /// 1/x for a positive normal x, relative error fast::reciprocal_max_rel<T>: float lanes with
+    /// 1/x for a positive normal x, relative error fast::detail::reciprocal_max_rel<T>: float lanes with
     /// AVX-512 (rcp14) or AVX with FMA (rcp), the estimate + one Newton step in correction form
     /// (two fused multiply-adds; unfused, x r0 rounded would add u); else 1/x.
     static V reciprocal_normal(const V& x)
@@ -71,9 +72,10 @@ private:
     {
         // r0 + r0 (1 - x r0); -0 - x is -x exactly (xsimd's unary minus is 0 - x, which the
         // compiler may not fold into a negated fma)
-        return math_traits<V>::fma(r0, math_traits<V>::fma(V(T(-0.0)) - x, r0, V(T(1))), r0);
+        return phong::detail::math_traits<V>::fma(r0, phong::detail::math_traits<V>::fma(V(T(-0.0)) - x, r0, V(T(1))), r0);
     }
 };
+} // namespace detail
 
 } // namespace phong::fast
 

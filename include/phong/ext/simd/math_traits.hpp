@@ -25,7 +25,7 @@
 #  define PHONG_DETAIL_LANEWISE_LOG 0
 #endif
 
-namespace phong {
+namespace phong::detail {
 
 /// math_traits for xsimd batches: every kernel of math.hpp, lane-wise. exp, log and log1p are
 /// xsimd's (vectorized, within a few ulp); float rsqrt is the hardware estimate refined by one
@@ -237,7 +237,7 @@ private:
     }
 };
 
-} // namespace phong
+} // namespace phong::detail
 
 #include "diagnostics_pop.hpp"
 #endif // PHONG_HAS_XSIMD

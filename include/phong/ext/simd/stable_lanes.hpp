@@ -131,9 +131,9 @@ template <class D> inline D rsqrt_normal(const D& x)
 #  if defined(__AVX512F__)
     if constexpr (sizeof(D) == 64) {
         const D y = D(_mm512_rsqrt14_pd(x));
-        const D r = phong::fma(-(x * y), y, D(1.0));
-        const D p = phong::fma(phong::fma(r, D(5.0 / 16), D(3.0 / 8)), r, D(0.5));
-        return phong::fma(y * r, p, y);
+        const D r = detail::fma(-(x * y), y, D(1.0));
+        const D p = detail::fma(detail::fma(r, D(5.0 / 16), D(3.0 / 8)), r, D(0.5));
+        return detail::fma(y * r, p, y);
     }
 #  endif
     return D(1.0) / xsimd::sqrt(x);
@@ -211,7 +211,7 @@ inline surface_frame<V, Q> prepare(const glm::vec<3, V, Q>& position, const glm:
         eye_w[0] = w.lower, eye_w[1] = w.upper;
     }
     if constexpr (F.two_sided == facing::flag) {
-        const lane_parts<V> f = widen(phong::select(front_facing, V(1.0f), V(0.0f)));
+        const lane_parts<V> f = widen(detail::select(front_facing, V(1.0f), V(0.0f)));
         front[0] = f.lower, front[1] = f.upper;
     } else {
         (void)front_facing;
@@ -220,17 +220,17 @@ inline surface_frame<V, Q> prepare(const glm::vec<3, V, Q>& position, const glm:
         part_frame<D, Q>& f = s.part[h];
         f.position = pos[h];
         const vec3 e = detail::unnormalized_view<F.view>(pos[h], given[h], eye[h], eye_w[h]); // eye_point: w Q exact in double
-        const D ee = phong::dot(e, e), nn = phong::dot(nrm[h], nrm[h]);
+        const D ee = detail::dot(e, e), nn = detail::dot(nrm[h], nrm[h]);
         const D inv_e = inverse_length(ee), inv_n = inverse_length(nn);
         f.view = e * inv_e;
         f.normal = nrm[h] * inv_n;
         // NaN or inf input: poison (float) is NaN, and the terms are off.
-        const D finite = phong::dot(pos[h], vec3(D(0.0))) + phong::dot(nrm[h], vec3(D(0.0))) + ee * D(0.0);
+        const D finite = detail::dot(pos[h], vec3(D(0.0))) + detail::dot(nrm[h], vec3(D(0.0))) + ee * D(0.0);
         f.defined = (inv_n > D(0.0)) && (finite == D(0.0));
         f.sees_viewer = inv_e > D(0.0);
         if constexpr (F.two_sided == facing::view) f.normal = f.normal * viewer_facing_sign(f.normal, f.view);
         if constexpr (F.two_sided == facing::flag) f.normal = f.normal * xsimd::select(front[h] > D(0.0), D(1.0), D(-1.0));
-        f.nv = phong::dot(f.normal, f.view);
+        f.nv = detail::dot(f.normal, f.view);
         if constexpr (F.specular == specular_model::phong) f.reflected_view = f.normal * (D(2.0) * f.nv) - f.view;
     }
     return s;
@@ -256,8 +256,8 @@ inline part_terms<D> part_light(const part_frame<D, Q>& s, const light<double, Q
     using vec3 = glm::vec<3, D, Q>;
     const D w = light_w<F, D>(L);
     const vec3 d = detail::homogeneous_difference<F.lights>(vec3(D(L.position.x), D(L.position.y), D(L.position.z)), w, s.position);
-    const D dd = phong::dot(d, d);
-    const D nd = phong::dot(s.normal, d);
+    const D dd = detail::dot(d, d);
+    const D nd = detail::dot(s.normal, d);
     // 1/|d|, 0 where the light is at Q (no direction). Gated with f = 1, nothing reads it off the
     // lit lanes (their n.d > 0 implies dd > 0) but through the masks below: there it is taken as is
     // (NaN for dd = 0, discarded), one compare and one select fewer.
@@ -280,10 +280,10 @@ inline part_terms<D> part_light(const part_frame<D, Q>& s, const light<double, Q
     if constexpr (F.diffuse) t.diffuse = xsimd::select(on, f * (gated<F> ? nl : xsimd::max(nl, D(0.0))), D(0.0));
     if constexpr (F.specular != specular_model::none) {
         if constexpr (F.specular == specular_model::phong) {
-            t.c = phong::dot(d, s.reflected_view) * inv; // r.v = l.(2 (n.v) n - v)
+            t.c = detail::dot(d, s.reflected_view) * inv; // r.v = l.(2 (n.v) n - v)
         } else {
             const vec3 sum = l + s.view;
-            const D inv_h = inverse_length_of_float_difference(phong::dot(sum, sum)); // 0: l = -v, n.h taken as 0
+            const D inv_h = inverse_length_of_float_difference(detail::dot(sum, sum)); // 0: l = -v, n.h taken as 0
             t.c = (nl + s.nv) * inv_h;
         }
         t.x = D(1.0) - t.c; // pow_cosine takes x < 0 (rounding) as 0, c <= 0 as 0 (and NaN as 0)
