@@ -14,7 +14,7 @@ compilers=("$@")
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
 # the entry points that may stay out of line: the precondition machinery of detail/config.hpp
-allowed='^phong::(set_precondition_handler|get_precondition_handler|detail::default_precondition_handler|detail::precondition_failed)\('
+allowed='^phong::(set_precondition_handler|get_precondition_handler|detail::default_precondition_handler|detail::precondition_failed|detail::load_handler|detail::exchange_handler)\('
 status=0
 for cxx in "${compilers[@]}"; do
   for opt in "-O2" "-O3 -march=native"; do
