@@ -72,7 +72,7 @@ template <class T, features F> void check_inputs(std::uint64_t seed)
     scene_gen<T> gen(seed);
     int checked = 0;
     for (std::size_t count : {std::size_t(0), std::size_t(1), W - 1, W, W + 1, 3 * W + 5, std::size_t(61)}) {
-        for (int masked_lights = 0; phong::detail::masked_lights < 2; ++masked_lights) {
+        for (int masked_lights = 0; masked_lights < 2; ++masked_lights) {
             for (int per_point_material = 0; per_point_material < 2; ++per_point_material) {
                 const batch_case<T> c(gen, F, count, 1 + gen.integer(0, 4));
                 CAPTURE(count);
