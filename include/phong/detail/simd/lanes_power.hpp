@@ -227,8 +227,10 @@ template <class V> PHONG_LANES_INLINE V pow_cosine(const V& x, const V& c, const
     const V t_split = split_exponent(xsimd::max(c, V(std::numeric_limits<float>::min())), e);
     const auto near_one = c >= V(0.70710677f); // then e = 0 and t_split = c - 1
     const V log2_base = log2_of_split(xsimd::select(near_one, -x, t_split), xsimd::select(near_one, V(0.0f), e));
-    const V power = exp2_horner(m * log2_base);
-    return xsimd::select(c > V(0.0f) || m == V(0.0f), power, V(0.0f)); // 0^m as pow_unit's select
+    const V y = m * log2_base;
+    // 0^m as pow_unit's select, and the power floor (exp2_horner's), in the one mask of exp2_kept
+    const auto kept = (c > V(0.0f) || m == V(0.0f)) && y >= V(float(ieee::power_floor_log2<float>));
+    return exp2_kept<V, true>(y, kept);
 }
 
 /// (1 - x)^m lane-wise for x in [0, 1], m >= 0 finite: the stable mode's power of 1 - r.v or
