@@ -111,6 +111,63 @@ def interleaved_section(path):
     return out
 
 
+FTZ_LINE = re.compile(r"^(?P<spec>phong|blinn)\s+K=(?P<K>\d+)\s+ftz/daz\s+hand (?P<hand>[0-9.]+) ns/pair\s+batch (?P<mode>\w+) "
+                      r"(?P<batch>[0-9.]+) ns/pair\s+median ratio (?P<median>[0-9.]+)\s+default/ftz: batch (?P<batch_slow>[0-9.]+)"
+                      r"\s+hand (?P<hand_slow>[0-9.]+)")
+FTZ_LIMIT = 1.05  # issue 35: shade_batch in the default environment within 5 % of its FTZ/DAZ time
+
+
+def ftz_section(path):
+    """phong_batch_ratio's second line per case: the same kernels with flush-to-zero and
+    denormals-are-zero set in MXCSR, interleaved with the default environment's runs."""
+    defaults = {(r["mode"], r["spec"], r["K"]): r for r in (m.groupdict() for m in map(RATIO_LINE.match, open(path)) if m)}
+    rows = [m.groupdict() for m in map(FTZ_LINE.match, open(path)) if m]
+    if not rows:
+        return []
+    out = ["## The default floating-point environment against flush-to-zero\n",
+           "The same runs as the section above: each repetition times both kernels in the default floating-point "
+           "environment and with flush-to-zero and denormals-are-zero set in MXCSR (what `-ffast-math`'s start-up code "
+           "does), in alternating order. On Intel cores every subnormal operand or result costs a microcode assist in "
+           "the default environment; both kernels flush the powers below 2^-100 to 0, so that neither makes one "
+           "(tests/subnormal_free.test.cpp asserts it for phong with MXCSR's flags). default / FTZ is the median over "
+           "repetitions of each kernel's time in the default environment over its time under FTZ/DAZ (limit "
+           f"{FTZ_LIMIT:.2f} for `shade_batch`).\n",
+           "| mode | model | K | median ratio, default | median ratio, FTZ/DAZ | batch default / FTZ | within | hand default / FTZ |",
+           "|---|---|---:|---:|---:|---:|---|---:|"]
+    for r in rows:
+        d = defaults.get((r["mode"], r["spec"], r["K"]))
+        within = "yes" if float(r["batch_slow"]) <= FTZ_LIMIT else "**no**"
+        out.append(f"| {r['mode']} | {r['spec']} | {r['K']} | {d['median'] if d else '–'} | {r['median']} | "
+                   f"{r['batch_slow']} | {within} | {r['hand_slow']} |")
+    out.append("")
+    return out
+
+
+def cpu_model():
+    """The CPU's model name with its family and model numbers (/proc/cpuinfo: a virtual machine may
+    name only the vendor's line, e.g. "AMD EPYC"; family 25 model 17 is Zen 4), else lscpu's, for
+    the report's header."""
+    try:
+        fields = {}
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                key, _, value = line.partition(":")
+                fields.setdefault(key.strip(), value.strip())
+        if fields.get("model name"):
+            family = f" (family {fields['cpu family']}, model {fields.get('model', '?')})" if "cpu family" in fields else ""
+            return fields["model name"] + family
+    except OSError:
+        pass
+    try:
+        out = subprocess.run(["lscpu"], capture_output=True, text=True, check=False).stdout
+        for line in out.splitlines():
+            if line.startswith("Model name:"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return "unknown CPU"
+
+
 def main():
     results, out_dir = sys.argv[1], sys.argv[2]
     fc_path = sys.argv[3] if len(sys.argv) > 3 else None
@@ -135,6 +192,7 @@ def main():
 
     load_avg = ctx.get("load_avg", [])
     w("# phong benchmark report\n")
+    w(f"CPU: {cpu_model()}.\n")
     w(f"{ctx.get('date', '')}, {ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, "
       f"phong code built Release -O3 -march=native (g++; the Debian Google Benchmark library itself "
       f"reports build type {ctx.get('library_build_type', '?')}, which does not affect the timed loops), "
@@ -188,6 +246,7 @@ def main():
     w("")
     if ratio_path and os.path.exists(ratio_path):
         md.extend(interleaved_section(ratio_path))
+        md.extend(ftz_section(ratio_path))
     if errors:
         w("## Rows that reported an error (no time, no counters)\n")
         for name, msg in sorted(errors.items()):

@@ -104,6 +104,25 @@ class InterleavedSection(unittest.TestCase):
                                 "| exact | blinn | 4 | 1.473 | 1.365 | 0.93 | 1.0 | yes |",
                                 "| stable | blinn | 4 | 1.473 | 2.917 | 1.98 | – | – |"])  # no stable target at K = 4
 
+    def test_ftz_rows_beside_the_default_ones(self):
+        text = ("CPU: Some CPU\n"
+                "phong K=1   hand 1.000 ns/pair  batch exact 0.800 ns/pair  ratio of best 0.80  median ratio 0.81\n"
+                "phong K=1   ftz/daz  hand 0.990 ns/pair  batch exact 0.790 ns/pair  median ratio 0.80  "
+                "default/ftz: batch 1.012  hand 1.004\n"
+                "blinn K=16  ftz/daz  hand 0.990 ns/pair  batch stable 1.790 ns/pair  median ratio 1.80  "
+                "default/ftz: batch 1.082  hand 1.000\n")
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "batch_ratio.txt")
+            with open(path, "w") as f:
+                f.write(text)
+            interleaved = report.interleaved_section(path)
+            md = report.ftz_section(path)
+        # The FTZ lines are not read as default-environment rows.
+        self.assertEqual(len([line for line in interleaved if line.startswith("| ") and not line.startswith("| mode")]), 1)
+        rows = [line for line in md if line.startswith("| ") and not line.startswith("| mode")]
+        self.assertEqual(rows, ["| exact | phong | 1 | 0.81 | 0.80 | 1.012 | yes | 1.004 |",
+                                "| stable | blinn | 16 | – | 1.80 | 1.082 | **no** | 1.000 |"])  # 1.082 > 1.05
+
     def test_no_rows_no_section(self):
         with tempfile.TemporaryDirectory() as tmp:
             path = os.path.join(tmp, "batch_ratio.txt")

@@ -3,7 +3,8 @@
 // __float128 with g++, long double with clang++), on inputs its derivation did not pick: seeded
 // log-uniform bases over the whole normal range, bases within a few ulp of 1, subnormal bases,
 // exponents from 0 to 1e30. Checks the documented bound (detail::lanes::pow_unit_lanes_error) where
-// the exact result is a normal float, 2^-126 absolute below, and the edges by identity.
+// the exact result is at least the power floor 2^-100 (detail::ieee::power_floor_log2<float>; 0.1 %
+// above it, for the rounding of y), 2^-100 absolute below (flushed to 0), and the edges by identity.
 // Compiled twice: in phong_tests (baseline ISA: the exponent-field path) and in
 // phong_batch_native_tests (AVX-512 here: the scalef path).
 #include "support/wide.hpp"
@@ -23,6 +24,8 @@ namespace {
 
 using V = phong::simd_batch<float>;
 constexpr std::size_t W = phong::batch_width<float>;
+/// The power floor: results below it are 0 (detail::ieee::power_floor_log2).
+const double power_floor = std::ldexp(1.0, phong::detail::ieee::power_floor_log2<float>);
 
 /// kernel(x, m) on lanes all holding x and m, one lane read back.
 template <class Kernel> float on_lanes(Kernel kernel, float x, float m)
@@ -50,7 +53,7 @@ double check(float x, float m)
     REQUIRE(std::isfinite(got));
     const phong_test::wide exact = phong_test::wpow(phong_test::wide(x), phong_test::wide(m));
     const double ref = static_cast<double>(exact);
-    if (ref >= double(std::numeric_limits<float>::min())) {
+    if (ref >= power_floor * 1.001) {
         const double y = double(m) * std::log2(double(x)); // exact y to double precision
         const double bound = phong::detail::lanes::pow_unit_lanes_error(y);
         const double rel = std::abs(double(got) - ref) / ref;
@@ -59,7 +62,8 @@ double check(float x, float m)
         return rel / bound;
     }
     const double abs_err = std::abs(double(got) - ref);
-    CHECK(abs_err <= double(std::numeric_limits<float>::min()));
+    CHECK(abs_err <= power_floor * 1.001);
+    if (ref < power_floor * 0.999) CHECK(got == 0.0f); // flushed: no subnormal result, nor one from a product
     return 0;
 }
 
@@ -118,7 +122,7 @@ double check_one_minus(float x, float m)
     REQUIRE(std::isfinite(got));
     const phong_test::wide base = phong_test::wide(1) - phong_test::wide(x);
     const double ref = static_cast<double>(phong_test::wpow(base, phong_test::wide(m)));
-    if (ref >= double(std::numeric_limits<float>::min())) {
+    if (ref >= power_floor * 1.001) {
         const double y = double(m) * std::log2(static_cast<double>(base));
         const double bound = phong::detail::lanes::pow_one_minus_lanes_error(y);
         const double rel = std::abs(double(got) - ref) / ref;
@@ -126,7 +130,8 @@ double check_one_minus(float x, float m)
         CHECK(rel <= bound);
         return rel / bound;
     }
-    CHECK(std::abs(double(got) - ref) <= double(std::numeric_limits<float>::min()));
+    CHECK(std::abs(double(got) - ref) <= power_floor * 1.001);
+    if (ref < power_floor * 0.999) CHECK(got == 0.0f);
     return 0;
 }
 
@@ -184,17 +189,19 @@ TEST_CASE("shade_batch's float power: edges")
     }
     CHECK(lanes_pow(0.5f, 1.0f) == 0.5f); // powers of two: y integral, r = 0, 2^k exact
     CHECK(lanes_pow(0.25f, 2.0f) == 0.0625f);
-    CHECK(lanes_pow(0.5f, 149.0f) <= std::numeric_limits<float>::min()); // below 2^-126: within 2^-126 of 0
+    CHECK(lanes_pow(0.5f, 149.0f) == 0.0f); // below the power floor 2^-100: 0
+    CHECK(lanes_pow(0.5f, 101.0f) == 0.0f);
+    CHECK(lanes_pow(0.5f, 100.0f) == 0x1p-100f); // at it: kept, exactly
     // Subnormal bases are taken as 2^-126: the result lies between the exact power and 2^(-126 m)
     // (2^-63 for m = 1/2, where the exact sqrt(2^-149) is 2^-74.5).
     const float half = lanes_pow(tiny, 0.5f);
     CHECK(half >= float(std::sqrt(double(tiny))));
     CHECK(half <= 0x1p-63f * (1 + 1e-6f));
-    CHECK(lanes_pow(tiny, 2.0f) <= std::numeric_limits<float>::min());
+    CHECK(lanes_pow(tiny, 2.0f) == 0.0f); // 2^-252: below the floor
     // Huge exponents on bases just below 1 underflow to (almost) 0, never NaN or inf.
     const float r = lanes_pow(std::nextafter(1.0f, 0.0f), 1e30f);
     CHECK(std::isfinite(r));
-    CHECK(r <= std::numeric_limits<float>::min());
+    CHECK(r == 0.0f);
 }
 
 // pow_unit_positive (shade_batch's exact float lanes with exact::step_specular): pow_unit without

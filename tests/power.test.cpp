@@ -460,15 +460,20 @@ TEST_CASE_TEMPLATE("pow_unit: NaN and out-of-domain inputs give std::pow's value
 TEST_CASE_TEMPLATE("pow_unit_in_domain: pow_unit's bits for x in 0..1 and m >= 0, NaN outside, no libm fallback", T, float, double)
 {
     // The shading loop's entry point: the same arithmetic as pow_unit inside the domain (so the
-    // accuracy tests above cover it), and NaN instead of std::pow's value outside it.
+    // accuracy tests above cover it), but for results below the power floor (2^-100 float, 2^-996
+    // double), which are 0, and NaN instead of std::pow's value outside it.
     using bits_t = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    const T floor = std::ldexp(T(1), phong::detail::ieee::power_floor_log2<T>);
     std::mt19937_64 g(20261122);
-    long compared = 0;
+    long compared = 0, flushed = 0;
     for (int cls = 0; cls < 3; ++cls)
         for (long i = 0; i < 20000; ++i) {
             const T x = pick_x<T>(g, cls, i), m = pick_m<T>(g, i);
             const T a = phong::detail::pow_unit_in_domain(launder(x), launder(m)), b = phong::detail::pow_unit(launder(x), launder(m));
-            if (std::bit_cast<bits_t>(a) != std::bit_cast<bits_t>(b)) {
+            // Flushed: 0 where pow_unit's result is below the floor (within its rounding of y).
+            if (a == T(0) && b != T(0) && b < floor * T(1.001)) {
+                ++flushed;
+            } else if (std::bit_cast<bits_t>(a) != std::bit_cast<bits_t>(b)) {
                 CAPTURE(class_names[cls]);
                 CAPTURE(hex(x));
                 CAPTURE(hex(m));
@@ -477,6 +482,10 @@ TEST_CASE_TEMPLATE("pow_unit_in_domain: pow_unit's bits for x in 0..1 and m >= 0
             ++compared;
         }
     CHECK(compared == 60000);
+    CHECK(flushed > 0); // the floor is met by the sweep
+    // Below the floor by hand: 0.5^101 = 2^-101 in float, 0.5^997 in double; at it, kept.
+    CHECK(phong::detail::pow_unit_in_domain(launder(T(0.5)), launder(T(-phong::detail::ieee::power_floor_log2<T> + 1))) == T(0));
+    CHECK(phong::detail::pow_unit_in_domain(launder(T(0.5)), launder(T(-phong::detail::ieee::power_floor_log2<T>))) == floor);
     // Edges by hand: 0^0 = 1, 0^m = 0, 1^m = 1, x^0 = 1, and the flush below 2^-1022 (0.5^1100).
     CHECK(phong::detail::pow_unit_in_domain(launder(T(0)), launder(T(0))) == T(1));
     CHECK(phong::detail::pow_unit_in_domain(launder(T(0)), launder(T(3))) == T(0));
@@ -506,14 +515,17 @@ TEST_CASE_TEMPLATE("pow_unit_at_most_one: pow_unit's bits for x in 0..1 and m >=
     // only if the kernel's log2 is never positive there: were it positive, pow_unit (which
     // tests y) and this entry point would differ. Compared on random bases, on every float of
     // the last 2^16 below 1 (the interval whose table point c is 1, where log2 x is r / ln 2
-    // with r = x - 1 <= 0) and at 1 itself, for exponents from 0 to 1e5.
+    // with r = x - 1 <= 0) and at 1 itself, for exponents from 0 to 1e5. Below the power floor
+    // (2^-100 float, 2^-996 double) this entry point gives 0, as pow_unit_in_domain.
     using bits_t = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    const T floor = std::ldexp(T(1), phong::detail::ieee::power_floor_log2<T>);
     std::mt19937_64 g(20261127);
     long differ = 0, compared = 0;
     const auto compare = [&](T x, T m) {
         const T a = phong::detail::pow_unit_at_most_one(launder(x), launder(m)), b = phong::detail::pow_unit(launder(x), launder(m));
         ++compared;
         if (std::bit_cast<bits_t>(a) == std::bit_cast<bits_t>(b)) return;
+        if (a == T(0) && b < floor * T(1.001)) return; // flushed
         if (++differ <= 5) {
             CAPTURE(hex(x));
             CAPTURE(hex(m));

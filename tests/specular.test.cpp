@@ -107,18 +107,27 @@ TEST_CASE_TEMPLATE("specular: pow_one_minus", T, float, double)
     CHECK(phong::detail::pow_one_minus(T(7), T(0)) == T(1));
     CHECK(error_ulp(phong::detail::pow_one_minus(T(0.5), T(3)), wide(0.125)) <= 4.0);
     // Random x, m against the wide (1 - x)^m: the relative error of exp(m log1p(-x)) is at most
-    // about (|m log1p(-x)| + 1) u for the logarithm's and the exponential's roundings.
+    // about (|m log1p(-x)| + 1) u for the logarithm's and the exponential's roundings. Below the
+    // power floor (2^-100 float, 2^-996 double; 0.1 % either side for the rounding) the result is 0.
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(0, 1);
+    const wide floor = wide(std::ldexp(1.0, phong::detail::ieee::power_floor_log2<T>));
     double worst = 0;
+    long flushed = 0;
     for (int i = 0; i < 2000; ++i) {
         const T x = T(std::pow(u(rng), 3)), m = T(u(rng) * 1000);
         const wide exact = wpow(1 - wide(x), wide(m));
-        if (exact < wide(std::numeric_limits<T>::min())) continue;
+        if (exact < floor * wide(0.999)) {
+            CHECK(phong::detail::pow_one_minus(x, m) == T(0));
+            ++flushed;
+        }
+        if (exact < floor * wide(1.001)) continue;
         const double bound = (std::abs(double(m) * std::log1p(-double(x))) + 2) * double(tolerance<T>::eps);
         worst = std::max(worst, error_rel(phong::detail::pow_one_minus(x, m), exact) / bound);
     }
     CHECK(worst <= 1.0);
+    CHECK(flushed > 0); // the floor is met
+    CHECK(phong::detail::pow_one_minus(T(0.5), T(-phong::detail::ieee::power_floor_log2<T> + 1)) == T(0)); // 2^-101 (2^-997)
 }
 
 TEST_CASE_TEMPLATE("specular: random unit vectors against the wide formula", T, float, double)

@@ -30,13 +30,17 @@
 //      |t P| <= 1/2 <= |log2 x|, so the relative bound holds there too).
 //    y = m L rounded: |y_computed - m log2 x| <= 5 u |y|.
 //    exp2: k = round(y), r = y - k in [-1/2, 1/2] (exact), 2^r = 1 + r Q(r), Q of degree 5 (fit
-//      error 5e-9 = 0.1 u relative), Horner about 2 u; 2^k applied exactly (AVX-512 scalef; AVX2
-//      exponent-field arithmetic, y clamped to >= -127 so that results below 2^-126 flush to 0).
+//      error 5e-9 = 0.1 u relative), Horner about 2 u; 2^k applied exactly (AVX-512 scalef, masked;
+//      AVX2 exponent-field arithmetic on y clamped to >= -101, and a mask), and results below
+//      2^-100 (y < -100, e^-69.3) flushed to 0, as an expert does: no subnormal number is made or
+//      read (each costs a microcode assist on Intel cores without FTZ/DAZ), and no product of the
+//      power by a colour coefficient of at least 2^-26 is subnormal either. phong's shading flushes
+//      at the same floor (detail::ieee::power_floor_log2), so the two compute the same values.
 //    Total, to first order: |rel err of x^m| <= ln 2 * 5 u |y| + 2.5 u <= (3.5 |y| + 2.5) u,
 //    y = m log2 x: 2.5 u at the highlight peak, 38 u at x^m = 2^-10, 86 u at 2^-24 (where the term
 //    is below float resolution of the other terms anyway). hand_simd_check.cpp measures it.
 //    Edges: x = 0 gives 0 for m > 0 and 1 for m = 0 (pow(0, 0) = 1); 0 < x < 2^-126 is taken as
-//    2^-126 (absolute error <= 2^(-126 m)).
+//    2^-126 (absolute error <= 2^(-126 m)); x^m < 2^-100 gives 0 (absolute error < 2^-100).
 //  * Not handled (the benchmark's inputs have none): a light at Q, Q at the eye, a zero normal, or
 //    any squared length that is not a normal float (NaN or inf there). Blinn's l = -v gives a
 //    finite c (|l + v|^2 is raised to 2^-126 first).
@@ -112,7 +116,7 @@ struct isa {
     using M = __mmask16;
     static constexpr std::size_t W = 16;
     static constexpr const char* name = "avx512";
-    static constexpr float y_min = -150; // scalef(p, -150) is 0: no exponent-field arithmetic to guard
+    static constexpr bool clamp_y = false; // the masked scalef leaves the lanes below the floor alone
     static PHONG_HAND_INLINE V load(const float* p) { return _mm512_loadu_ps(p); }
     static PHONG_HAND_INLINE void store(float* p, V v) { _mm512_storeu_ps(p, v); }
     static PHONG_HAND_INLINE V set1(float x) { return _mm512_set1_ps(x); }
@@ -131,8 +135,11 @@ struct isa {
     static PHONG_HAND_INLINE M all_if(bool b) { return b ? M(0xffff) : M(0); }
     static PHONG_HAND_INLINE V zero_unless(M m, V v) { return _mm512_maskz_mov_ps(m, v); }
     static PHONG_HAND_INLINE V round(V y) { return _mm512_roundscale_ps(y, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC); }
-    /// p 2^k for integral k.
-    static PHONG_HAND_INLINE V ldexp(V p, V k) { return _mm512_scalef_ps(p, k); }
+    /// p 2^k for integral k where y >= y_floor, else 0 (masked: no result, no exception).
+    static PHONG_HAND_INLINE V ldexp_above(V p, V k, V y, V y_floor)
+    {
+        return _mm512_maskz_scalef_ps(_mm512_cmp_ps_mask(y, y_floor, _CMP_GE_OQ), p, k);
+    }
     /// x = 2^e f, f in [sqrt(1/2), sqrt(2)): returns f - 1 and e (as float). x normal, positive.
     static PHONG_HAND_INLINE V split(V x, V& e)
     {
@@ -149,7 +156,7 @@ struct isa {
     using M = __m256;
     static constexpr std::size_t W = 8;
     static constexpr const char* name = "avx2";
-    static constexpr float y_min = -127; // k >= -127: the exponent field k + 127 stays >= 0 (0 gives 0)
+    static constexpr bool clamp_y = true; // y >= -101: 2^k a normal float
     static PHONG_HAND_INLINE V load(const float* p) { return _mm256_loadu_ps(p); }
     static PHONG_HAND_INLINE void store(float* p, V v) { _mm256_storeu_ps(p, v); }
     static PHONG_HAND_INLINE V set1(float x) { return _mm256_set1_ps(x); }
@@ -168,11 +175,11 @@ struct isa {
     static PHONG_HAND_INLINE M all_if(bool b) { return _mm256_castsi256_ps(_mm256_set1_epi32(b ? -1 : 0)); }
     static PHONG_HAND_INLINE V zero_unless(M m, V v) { return _mm256_and_ps(m, v); }
     static PHONG_HAND_INLINE V round(V y) { return _mm256_round_ps(y, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC); }
-    /// p 2^k for integral k in [-127, 0]: 2^k built in the exponent field (k = -127 gives 0).
-    static PHONG_HAND_INLINE V ldexp(V p, V k)
+    /// p 2^k for integral k in [-101, 0] (2^k built in the exponent field) where y >= y_floor, else 0.
+    static PHONG_HAND_INLINE V ldexp_above(V p, V k, V y, V y_floor)
     {
         const __m256i field = _mm256_add_epi32(_mm256_cvtps_epi32(k), _mm256_set1_epi32(127));
-        return mul(p, _mm256_castsi256_ps(_mm256_slli_epi32(field, 23)));
+        return _mm256_and_ps(_mm256_cmp_ps(y, y_floor, _CMP_GE_OQ), mul(p, _mm256_castsi256_ps(_mm256_slli_epi32(field, 23))));
     }
     static PHONG_HAND_INLINE V split(V x, V& e)
     {
@@ -207,15 +214,18 @@ PHONG_HAND_INLINE V log2(V x)
     return isa::fma(t, p, e);
 }
 
-/// 2^y for y <= 0 (y clamped below at isa::y_min).
-PHONG_HAND_INLINE V exp2(V y)
+/// The least 2^y kept: below 2^-100 the power is flushed to 0 (see the header comment).
+inline constexpr float y_floor = -100;
+
+/// 2^y for finite y <= 0; 0 for y < y_floor.
+PHONG_HAND_INLINE V exp2(V y_in)
 {
-    y = isa::max(y, isa::set1(isa::y_min));
+    const V y = isa::clamp_y ? isa::max(y_in, isa::set1(y_floor - 1)) : y_in;
     const V k = isa::round(y);
     const V r = isa::sub(y, k);
     V q = isa::set1(exp2_coef[0]);
     for (int j = 1; j < 6; ++j) q = isa::fma(q, r, isa::set1(exp2_coef[j]));
-    return isa::ldexp(isa::fma(r, q, isa::set1(1)), k);
+    return isa::ldexp_above(isa::fma(r, q, isa::set1(1)), k, y_in, isa::set1(y_floor));
 }
 
 /// x^m for x in (0, 1] (x below 2^-126 taken as 2^-126); the caller zeroes x = 0 for m > 0.

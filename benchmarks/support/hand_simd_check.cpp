@@ -4,7 +4,8 @@
 //     indexed by mantissa and parity) and a sparse sweep of [2^-100, 2^100]; bound 1.6 u (AVX-512)
 //     or 4.9 u (AVX2), u = 2^-24, against 1/sqrt in double.
 //  2. x^m: every 127th float in [2^-126, 1] (8.4 million) for m = 0.5, 1, 32, 300, 1e4, against pow in double;
-//     bound (3.5 |y| + 2.5) u, y = m log2 x, where x^m >= 2^-126 (below: flushed, |error| < 2^-126).
+//     bound (3.5 |y| + 2.5) u, y = m log2 x, where x^m >= 2^-100 (below: flushed, |error| < 2^-100;
+//     a margin of 0.1 % either side of the floor for the rounding of y).
 //     Plus the edges x = 1 (exactly 1) and, through the model, pow(0, 0) = 1.
 //  3. The model: typical inputs, N = 65536 - 3 (a tail too), K = 1, 4, 16, 64, Phong and Blinn,
 //     against shade<F> within check_tolerance(m); and the check's power: the other specular model
@@ -78,7 +79,7 @@ void check_pow()
         double worst_abs_flushed = 0;
         for (std::size_t i = 0; i < xs.size(); ++i) {
             const double exact = std::pow(double(xs[i]), double(m));
-            if (exact < 0x1p-126) {
+            if (exact < 0x1p-100 * 1.001) {
                 worst_abs_flushed = std::max(worst_abs_flushed, std::abs(double(ys[i]) - exact));
                 continue;
             }
@@ -89,8 +90,8 @@ void check_pow()
         char what[96];
         std::snprintf(what, sizeof what, "x^m, m = %g: max error / ((3.5|y| + 2.5) u)", double(m));
         verdict(worst <= 1, what, worst, 1);
-        std::snprintf(what, sizeof what, "x^m, m = %g: max |error| where x^m < 2^-126", double(m));
-        verdict(worst_abs_flushed < 0x1p-126, what, worst_abs_flushed, 0x1p-126);
+        std::snprintf(what, sizeof what, "x^m, m = %g: max |error| where x^m < 2^-100", double(m));
+        verdict(worst_abs_flushed < 0x1p-100 * 1.001, what, worst_abs_flushed, 0x1p-100 * 1.001);
     }
     const float one = lanes({1.0f}, [](hand_simd::V x) { return hand_simd::pow_unit(x, isa::set1(32.0f)); })[0];
     verdict(one == 1.0f, "x^m at x = 1, m = 32 (exactly 1)", one, 1);

@@ -114,7 +114,9 @@ PHONG_INLINE constexpr V log2_estrin(V x)
 
 /// 2^y for y <= 0: y rounded to an integer n plus t in [-1/2, 1/2], 2^n from the exponent bits,
 /// 2^t = E(t) of degree 5 by Estrin's scheme (float's accuracy, 2.1e-7, whatever V).
-/// y below the smallest normal exponent (or -inf) gives 0 (flushed); y > 0 is outside the domain.
+/// y below the power floor (ieee::power_floor_log2: -100 float, -996 double), -inf or NaN gives 0
+/// (flushed: no subnormal result, nor one from its product by a light's coefficients; y is clamped
+/// at the floor - 1 first, so no step makes one either); y > 0 is outside the domain.
 /// The fast mode's exp2 at every width (scalars and lanes: one template). Its two siblings are
 /// for tighter bounds: power::exp2_tabulated (detail/power.hpp: the exact scalar power, tables in
 /// double) and lanes::exp2_horner (detail/simd/lanes_power.hpp: the exact mode's float lanes,
@@ -126,15 +128,16 @@ PHONG_INLINE constexpr V exp2_estrin(V y)
     using fmt = format<S>;
     using L = lanes<V>;
     using U = typename L::bits_t;
-    const V yc = phong::detail::max(y, V(S(-fmt::bias)));  // n >= -bias: n = -bias gives 2^n's bits 0, i.e. 0
+    constexpr S floor = S(phong::detail::ieee::power_floor_log2<S>);
+    const V yc = phong::detail::max(y, V(floor - S(1))); // 2^n normal (a NaN y is selected away below)
     const auto [shifted, rounded] = phong::detail::ieee::round_by_shift(yc, V(fmt::shift)); // low bits: n = round(y)
     const V t = phong::detail::ieee::opaque(yc - rounded); // exact; not re-expanded as yc E - rounded E
     const U n_biased = L::bits(shifted) - L::bits(V(fmt::shift)) + U(U(fmt::bias));
-    const V scale = L::from_bits(n_biased << fmt::mantissa_bits); // 2^n, or 0 for n = -bias
+    const V scale = L::from_bits(n_biased << fmt::mantissa_bits); // 2^n
     const auto c = [](int i) { return V(S(exp2_e[i])); };
     const V t2 = t * t;
     const V e = L::madd(L::madd(L::madd(c(5), t, c(4)), t2, L::madd(c(3), t, c(2))), t2, L::madd(c(1), t, c(0))); // Estrin
-    return scale * e;
+    return phong::detail::select(y >= V(floor), scale * e, V(S(0)));
 }
 
 } // namespace detail
@@ -151,11 +154,11 @@ inline constexpr double pow_unit_max_rel = 8e-6;
 ///   x^m = 2^(m log2 x), log2 by a degree-7 polynomial on the mantissa, 2^y by a degree-5 one.
 /// Error: relative pow_unit_max_rel where x^m >= 2^-24; absolute 2^-24 pow_unit_max_rel below.
 /// Edge: m = 0 gives 1 for every x (pow(0, 0) = 1); x = 0 gives 0 for m > 0; x = 1 gives exactly 1;
-/// results below T's smallest normal number are flushed to 0. Outside the domain: never NaN or
+/// results below the power floor 2^-100 (float; double 2^-996: detail::ieee::power_floor_log2) are 0. Outside the domain: never NaN or
 /// inf (NaN x gives 1 for m = 0, else 0; x > 1 is treated as 1 only up to P's accuracy, so clamp x).
 /// Exact twin: phong::detail::pow_unit (math.hpp). Branch-free: scalars and SIMD lanes alike.
 /// Float in CUDA device code: 2^min(m lg2(x), 0) on the GPU's special-function units instead,
-/// relative error pow_unit_sfu_max_rel(m) (phong/fast_sfu.hpp; the same edges).
+/// relative error pow_unit_sfu_max_rel(m) (phong/core/fast_sfu.hpp; the same edges).
 template <class V>
 PHONG_INLINE constexpr V pow_unit(V x, V m)
 {

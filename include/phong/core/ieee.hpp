@@ -21,6 +21,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 #if !defined(PHONG_FP_BARRIER)
@@ -154,5 +155,17 @@ auto positive_finite(const B<T, A>& x)
     const IB b = bitwise_cast<IB>(x); // xsimd::bitwise_cast by argument-dependent lookup
     return bool_cast(b > IB(I(0)) && b < IB(static_cast<I>(inf_bits<T>))); // signed: negative x < 0
 }
+
+
+/// The shading's power floor, as a power of two: a specular or spot power x^m whose value is below
+/// 2^power_floor_log2<S> is returned as exactly 0 (S the arithmetic's scalar: float 2^-100, double
+/// 2^-996, i.e. S's smallest normal number times 2^26). Why: such a power, or its product by the
+/// coefficients that scale it (ks Ls times the attenuation and spot factors, at least 2^-26 = 1.5e-8
+/// in any ordinary scene), would be a subnormal number, and x86 cores in the default floating-point
+/// environment (no flush-to-zero, no denormals-are-zero: Intel's) take a microcode assist, about a
+/// hundred cycles, for every subnormal result or operand. Absolute error of the flush: below 2^-100
+/// (float) or 2^-996 (double) times ks Ls f, under half an ulp of every channel of at least 2^-76
+/// (float) ks Ls f (docs/accuracy.md, "Subnormal numbers").
+template <class S> inline constexpr int power_floor_log2 = std::numeric_limits<S>::min_exponent - 1 + 26;
 
 } // namespace phong::detail::ieee

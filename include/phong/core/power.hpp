@@ -232,28 +232,34 @@ PHONG_INLINE constexpr F outside_domain(F x, F m)
 /// float's kernel: the same tables with the short polynomials, enough for a float result.
 /// AtMostOne: x <= 1 is given (a clamped cosine), so y = m log2 x <= 0 is not tested (log2_normal
 /// is <= 0 for every x <= 1: exactly 0 at 1, whose interval has c = 1 and r = x - 1 <= 0).
+/// Ieee (detail::pow_unit): results below 2^-1022 in double are 0, float's subnormal results kept;
+/// else (the shading's entry points) results below the power floor 2^-100 are 0
+/// (ieee::power_floor_log2: no subnormal result, none from its product by ks Ls f).
 template <bool Ieee, bool AtMostOne = false>
 PHONG_INLINE constexpr float pow_unit_kernel(float xf, float mf)
 {
+    constexpr double least = Ieee ? -1022.0 : double(ieee::power_floor_log2<float>);
     const double x = xf, m = mf;
     if (x > 0.0) [[likely]] { // every positive float is a normal double
         const double y = m * log2_normal<true>(x);
-        if (y >= -1022.0 && (AtMostOne || y <= 0.0)) [[likely]] return static_cast<float>(exp2_tabulated<true>(y));
-        if (y < -1022.0) return 0.0f;
+        if (y >= least && (AtMostOne || y <= 0.0)) [[likely]] return static_cast<float>(exp2_tabulated<true>(y));
+        if (y < least) return 0.0f;
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0f : 0.0f; // 0^m: power_of_zero, written out
     }
     return outside_domain<Ieee>(xf, mf);
 }
 
-/// double's kernel; a subnormal x is scaled into the normal range. AtMostOne: as float's.
+/// double's kernel; a subnormal x is scaled into the normal range. AtMostOne, Ieee: as float's
+/// (the power floor: 2^-996).
 template <bool Ieee, bool AtMostOne = false>
 PHONG_INLINE constexpr double pow_unit_kernel(double x, double m)
 {
+    constexpr double least = Ieee ? -1022.0 : double(ieee::power_floor_log2<double>);
     if (x > 0.0) [[likely]] {
         const double y = x >= 0x1p-1022 ? m * log2_normal(x) : m * (log2_normal(x * 0x1p64) - 64.0);
-        if (y >= -1022.0 && (AtMostOne || y <= 0.0)) [[likely]] return exp2_tabulated(y);
-        if (y < -1022.0) return 0.0;
+        if (y >= least && (AtMostOne || y <= 0.0)) [[likely]] return exp2_tabulated(y);
+        if (y < least) return 0.0;
     } else if (x == 0.0 && m >= 0.0) {
         return m == 0.0 ? 1.0 : 0.0; // 0^m: power_of_zero, written out
     }
@@ -268,8 +274,9 @@ PHONG_INLINE constexpr double pow_unit_kernel(double x, double m)
 PHONG_INLINE constexpr float pow_unit(float x, float m) { return pow_unit_kernel<true>(x, m); }
 PHONG_INLINE constexpr double pow_unit(double x, double m) { return pow_unit_kernel<true>(x, m); }
 
-/// x^m for x in [0, 1] and a finite m >= 0 (a validated shininess): pow_unit's value there, with
-/// no fallback to libm's pow outside that domain. NaN x, NaN m, x < 0, x > 1 with m > 0, or m < 0
+/// x^m for x in [0, 1] and a finite m >= 0 (a validated shininess): pow_unit's value there, but
+/// for results below the power floor (2^-100 float, 2^-996 double: ieee::power_floor_log2), which
+/// are 0, and with no fallback to libm's pow outside that domain. NaN x, NaN m, x < 0, x > 1 with m > 0, or m < 0
 /// with x < 1: NaN (x = 1 gives 1 for every finite m, the exact value). m = +inf: 0 for x < 1,
 /// NaN for x = 1. Why a second entry point: the mere
 /// presence of a call (all vector registers caller-saved) made g++ keep a light loop's sums in
@@ -278,7 +285,8 @@ PHONG_INLINE constexpr float pow_unit_in_domain(float x, float m) { return pow_u
 PHONG_INLINE constexpr double pow_unit_in_domain(double x, double m) { return pow_unit_kernel<false>(x, m); }
 
 /// pow_unit_in_domain for a base that is at most 1 by construction (the specular cosine clamped
-/// to 1: cosine_power): the same value for x in [0, 1], with one test fewer (y <= 0 holds there).
+/// to 1: cosine_power): the same value for x in [0, 1] (the power floor too), with one test fewer
+/// (y <= 0 holds there).
 /// x > 1 is not tested: a meaningless value (finite or not), with every table read in bounds.
 PHONG_INLINE constexpr float pow_unit_at_most_one(float x, float m) { return pow_unit_kernel<false, true>(x, m); }
 PHONG_INLINE constexpr double pow_unit_at_most_one(double x, double m) { return pow_unit_kernel<false, true>(x, m); }

@@ -4,7 +4,7 @@
 // light the light vector, f (detail/light_terms.hpp), whether the pair is lit, the diffuse
 // cosine and the specular factor (specular.hpp's steps). Guarded so that finite input never
 // gives NaN or inf; accuracy bounds in phong/accuracy.hpp. The fast mode runs this route too,
-// with fast::pow_unit and fast::rsqrt (phong/fast_math.hpp) where the power and 1/|d| are taken.
+// with fast::pow_unit and fast::rsqrt (phong/core/fast_math.hpp) where the power and 1/|d| are taken.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -14,6 +14,7 @@
 #include "light_terms.hpp"
 #include "../core/twofold.hpp"
 
+#include <cmath>
 #include <limits>
 #include <type_traits>
 
@@ -245,6 +246,9 @@ PHONG_INLINE constexpr T route_cosine_power(T x, T scale, T m)
 /// polynomials), within the fast power's bound (fast::detail::pow_integer_max_rel <= fast::pow_unit_max_rel).
 /// n >= 1: the power of a base 0 is 0, so add_specular zeroes the base of the lanes that are off
 /// (or whose cosine is not positive) instead of selecting the power.
+/// Bases whose power is below the power floor (2^-100 float, 2^-996 double: ieee::power_floor_log2)
+/// are taken as 0 (least, least_half): no squaring makes a subnormal number, nor does the product
+/// by the light's coefficients, as with every other power of the shading.
 /// Squarings: n = 2^Squarings known at compile time (batch.hpp's add_masked_lights picks it per
 /// step from plan.chain, fast Phong without light masks): x^n is that many squarings in a row,
 /// with no jump per pair into pow_integer's chain; the same products, so the same bits. Default
@@ -254,10 +258,16 @@ template <class T, unsigned Squarings = runtime_squarings> struct integer_expone
     fast::detail::pow_integer_plan plan; ///< of the shininess n of every lane, n >= 1
     fast::detail::pow_integer_plan half; ///< of n / 2 where n is even (Blinn's power of (n.h)^2, add_halfway_specular_fast)
     bool even;                   ///< n is even
-    static integer_exponent of(unsigned n) { return {fast::detail::plan_pow_integer(n), fast::detail::plan_pow_integer(n / 2), n % 2 == 0}; }
-    /// x^n (fast::detail::pow_integer)
+    T least;                     ///< the least base whose n-th power is at least the power floor
+    T least_half;                ///< the same for n / 2 (0 for n = 1)
+    static integer_exponent of(unsigned n)
+    {
+        return {fast::detail::plan_pow_integer(n), fast::detail::plan_pow_integer(n / 2), n % 2 == 0, T(least_base(n)), T(least_base(n / 2))};
+    }
+    /// x^n (fast::detail::pow_integer); 0 for x below least
     PHONG_INLINE T power(T x) const
     {
+        x = detail::select(x >= least, x, T(0));
         if constexpr (Squarings == runtime_squarings) return fast::detail::pow_integer(x, plan);
         else return squared<Squarings>(x);
     }
@@ -267,17 +277,27 @@ template <class T, unsigned Squarings = runtime_squarings> struct integer_expone
         if constexpr (Squarings == runtime_squarings) return even;
         else return Squarings > 0;
     }
-    /// x^(n/2), n even
+    /// x^(n/2), n even; 0 for x below least_half
     PHONG_INLINE T half_power(T x) const
     {
+        x = detail::select(x >= least_half, x, T(0));
         if constexpr (Squarings == runtime_squarings) return fast::detail::pow_integer(x, half);
         else if constexpr (Squarings == 0) return x; // n = 1 is odd: not called
         else return squared<Squarings - 1>(x);
     }
     /// The same shininess with n = 2^K known at compile time (K = plan.squarings, n a power of two).
-    template <unsigned K> PHONG_INLINE integer_exponent<T, K> with_squarings() const { return {plan, half, even}; }
+    template <unsigned K> PHONG_INLINE integer_exponent<T, K> with_squarings() const { return {plan, half, even, least, least_half}; }
 
 private:
+    /// 2^(floor / n) rounded up to the scalar type (n = 0: 0, no base is cut).
+    static scalar_t<T> least_base(unsigned n)
+    {
+        using S = scalar_t<T>;
+        if (n == 0) return S(0);
+        const double b = std::exp2(double(ieee::power_floor_log2<S>) / double(n));
+        const S r = S(b);
+        return double(r) < b ? std::nextafter(r, S(1)) : r;
+    }
     template <unsigned K> PHONG_INLINE static T squared(T x)
     {
         if constexpr (K == 0) return x;
@@ -294,7 +314,7 @@ template <class T> struct lane_shininess {
     T m;
     mask_t<T> zero; ///< m == 0
     bool any_zero;  ///< any(zero)
-    T threshold;    ///< the least cosine whose power is not 0, exclusive: 0, or -inf where m == 0 (pow(c, 0) = 1 for every c)
+    T threshold;    ///< the cosine above which the power is taken: float lanes least_base(m) (the power floor), other lanes 0; -inf where m == 0 (pow(c, 0) = 1 for every c)
     T bounded;      ///< min(m, 2^100): the same powers of every x in [0, 1] (x^m = 0 for x < 1 from m ~ 2^31 on), and m log2 x finite
 };
 
@@ -387,11 +407,12 @@ PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, 
     } else if constexpr (std::is_same_v<Exponent, step_specular<T>>) {
         // The lanes whose power is not 0: on, and c > 0 (any c where m = 0). The same powers as the
         // branch below (pow_unit's select, folded into this mask), and the same skip of a step.
+        // The threshold is the least cosine whose power is at least the power floor (lane_shininess):
+        // the lanes below get 0 from the masked power itself, which makes no subnormal number.
         const T c = x * scale;
         const mask_t<T> powered = math_traits<T>::both(on, c > m.threshold);
         if (!math_traits<T>::any(powered)) return; // every power 0: the sum would gain +0
-        const T power = math_traits<T>::pow_unit_positive(math_traits<T>::min(c, T(1)), m.m);
-        sum += in_type<T>(specular_of(L)) * (f * detail::select(powered, power, T(0)));
+        sum += in_type<T>(specular_of(L)) * (f * math_traits<T>::pow_unit_kept(math_traits<T>::min(c, T(1)), m.m, powered));
     } else {
         // Where no lane that is on has c > 0 (nor m = 0: pow(0, 0) = 1), every selected power is 0
         // and the sum would only gain +0: the power is skipped for the whole step, as scalars skip

@@ -191,7 +191,7 @@ PHONG_INLINE constexpr T power_of_cosine(const cosine_complement<T>& p, T m)
 {
     const mask_t<T> near_peak = p.complement <= T(0.5);
     if (math_traits<T>::all(near_peak)) return detail::pow_one_minus(p.complement, m);
-    const T far = detail::pow_unit(detail::clamp(p.cosine, T(0), T(1)), m);
+    const T far = detail::pow_unit_in_domain(detail::clamp(p.cosine, T(0), T(1)), m); // the power floor (ieee::power_floor_log2)
     if (!math_traits<T>::any(near_peak)) return far;
     return detail::select(near_peak, detail::pow_one_minus(p.complement, m), far);
 }

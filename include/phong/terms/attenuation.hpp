@@ -57,14 +57,16 @@ PHONG_INLINE constexpr T attenuation_windowed(T d, T range)
 /// Pre: l, s unit; e >= 0. Edge: l = 0 (light at Q) gives c = 0: inside only for a 90 degree
 /// cutoff, then 0^e (1 for e = 0). e = 0 gives a hard-edged cone of strength 1. spot <= 1: the
 /// base is clamped at 1, since rounding (or an axis accepted by validate within 1e-3 of unit
-/// length) can give c slightly above 1, and (1 + eps)^e overflows for large e.
+/// length) can give c slightly above 1, and (1 + eps)^e overflows for large e. A factor below the
+/// power floor (2^-100 float, 2^-996 double: detail::ieee::power_floor_log2) is 0, as the
+/// specular power: no subnormal number is made.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
 {
     const detail::mask_t<T> no_cone = cos_cutoff <= T(-1);
     if (detail::math_traits<T>::all(no_cone)) return T(1); // 180 degrees: skip the power (every lane of a batch)
     const T c = -detail::dot(l, s);
-    const T inside = detail::select(c >= cos_cutoff, detail::pow_unit(detail::clamp(c, T(0), T(1)), exponent), T(0));
+    const T inside = detail::select(c >= cos_cutoff, detail::pow_unit_in_domain(detail::clamp(c, T(0), T(1)), exponent), T(0));
     return detail::select(no_cone, T(1), inside);
 }
 

@@ -15,14 +15,20 @@ namespace detail {
 /// For unit vectors a, b: 1 - a.b = |a - b|^2 / 2, so with x = |a - b|^2 / 2 the relative error
 /// of the result is about (|m log1p(-x)| + 2) eps plus m times the absolute error of x (x from
 /// twofold unit vectors, as shade's stable mode does, makes that last term about m x eps).
-/// Edge: x >= 1 gives 0 for m > 0 and 1 for m = 0 (pow(0, 0) = 1); x = 0 gives 1.
+/// Edge: x >= 1 gives 0 for m > 0 and 1 for m = 0 (pow(0, 0) = 1); x = 0 gives 1. Results below
+/// the power floor (2^-100 float, 2^-996 double: detail::ieee::power_floor_log2) are 0: no
+/// subnormal number is made, nor by the product with a light's coefficients.
 template <class T>
 PHONG_INLINE constexpr T pow_one_minus(T x, T m)
 {
-    if constexpr (requires { detail::math_traits<T>::pow_one_minus(x, m); }) return detail::math_traits<T>::pow_one_minus(x, m); // SIMD kernels
+    if constexpr (requires { math_traits<T>::pow_one_minus(x, m); }) return math_traits<T>::pow_one_minus(x, m); // SIMD kernels
+    using S = scalar_t<T>;
+    constexpr S least = S(detail::ieee::power_floor_log2<S>) * S(0.6931471805599453); // ln of the power floor
     const T lg = detail::log1p(-detail::min(x, T(1))); // -inf at x = 1
-    const detail::mask_t<T> positive = m > T(0);
-    return detail::exp(detail::select(positive, detail::select(positive, m, T(1)) * lg, T(0)));
+    const mask_t<T> positive = m > T(0);
+    const T y = detail::select(positive, detail::select(positive, m, T(1)) * lg, T(0));
+    const mask_t<T> below = y < T(least); // false for NaN, which exp keeps
+    return detail::select(below, T(0), detail::exp(detail::select(below, T(least), y)));
 }
 } // namespace detail
 

@@ -232,7 +232,11 @@ template <class V> exact::lane_shininess<V> shininess_lanes(const V& m)
 {
     using S = typename math_traits<V>::scalar;
     const mask_t<V> zero = m == V(S(0));
-    return {m, zero, math_traits<V>::any(zero), detail::select(zero, V(-std::numeric_limits<S>::infinity()), V(S(0))),
+    // Float lanes: the cosines above least_base(m) have a power of at least the power floor
+    // (detail::ieee::power_floor_log2), the others get 0 (exact::add_specular's step_specular route).
+    V least(S(0));
+    if constexpr (std::is_same_v<S, float>) least = math_traits<V>::least_base(detail::select(zero, V(S(1)), m));
+    return {m, zero, math_traits<V>::any(zero), detail::select(zero, V(-std::numeric_limits<S>::infinity()), least),
             detail::min(m, V(S(0x1p100)))};
 }
 

@@ -18,9 +18,11 @@
 // rounded once more: |y~ - m log2 x| <= 5 u |y| (first order). 2^r costs 2.5 u (Horner, fit, the
 // final fma), and d(2^y) / 2^y = ln 2 dy. So, for results at least 2^-126 (normal floats):
 //   |x^m~ / x^m - 1| <= pow_unit_lanes_error(y) = (3.5 |y| + 2.5) u,   y = m log2 x,
-// 2.5 u at a highlight's peak, 38 u where x^m = 2^-10. Below 2^-126 the result is within 2^-126
-// absolute (flushed to 0 under AVX2 and SSE, subnormal under AVX-512's scalef). tests/lanes_power.test.cpp
-// checks the bound against long double pow on sweeps the derivation did not choose.
+// 2.5 u at a highlight's peak, 38 u where x^m = 2^-10. Results below the power floor 2^-100
+// (ieee::power_floor_log2<float>) are 0: absolute error below 2^-100, and no subnormal number is
+// made or read (each would cost a microcode assist on x86 cores in the default floating-point
+// environment). tests/lanes_power.test.cpp checks the bound against long double pow on sweeps the
+// derivation did not choose.
 // Edges: x = 0 gives 0 for m > 0 and 1 for m = 0 (pow(0, 0) = 1); 0 < x < 2^-126 (a cosine lost to
 // underflow) is taken as 2^-126, so the result lies between x^m and 2^(-126 m);
 // x = 1 gives exactly 1; m up to the largest float gives a finite result (y is clamped below).
@@ -30,6 +32,8 @@
 
 #include "backend.hpp"
 
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
@@ -46,7 +50,7 @@ inline constexpr float log2_coefficients[9] = {0.1231096846719146f,  -0.20586188
 inline constexpr float exp2_coefficients[6] = {0.0001545316294512069f, 0.0013390863364671234f, 0.009618082557277852f,
                                                0.05550357114219078f,   0.24022650760568126f,   0.6931471880262288f};
 
-/// The documented relative error bound of pow_unit below, for y = m log2 x (results >= 2^-126).
+/// The documented relative error bound of pow_unit below, for y = m log2 x (results >= 2^-100; below: 0).
 constexpr double pow_unit_lanes_error(double y)
 {
     return (3.5 * (y < 0 ? -y : y) + 2.5) * 0x1p-24;
@@ -76,15 +80,17 @@ template <class V> PHONG_LANES_INLINE V log2_of_split(const V& t, const V& e)
     return fused(t, p, e);
 }
 
-/// 2^y for y <= 0: k = round(y), r = y - k, 2^r = 1 + r R(r) by Horner's scheme, times 2^k exactly
-/// (y clamped below where 2^y is 0 in float anyway; a NaN y is clamped like -inf). Finite: y known
-/// finite (not NaN), so AVX-512's scalef, which takes any k (2^r 2^k is 0 for k < -150 as for the
-/// clamped k = -150), needs no clamp; exponent-field arithmetic keeps it.
+/// 2^y on the lanes of `kept`, 0 on the others: k = round(y), r = y - k, 2^r = 1 + r R(r) by
+/// Horner's scheme, times 2^k exactly. The kept lanes must have y >= -100.01 or so (the power floor,
+/// ieee::power_floor_log2<float>, less the rounding of y), so that their result is a normal number.
+/// Clamp: y is first clamped at -101, so that no lane makes a subnormal number in the exponent-field
+/// arithmetic (and a NaN y is clamped too); without it (y known finite) AVX-512's masked scalef
+/// computes nothing in the other lanes (no result, no exception), and other ISAs clamp anyway.
 /// Why a third exp2 beside power::exp2_tabulated (detail/power.hpp) and fast::detail::exp2_estrin
 /// (fast_math.hpp): the tables would be a gather per lane, and the fast mode's degree-5 polynomial
 /// is too coarse for the exact mode's bound (pow_unit_lanes_error); different coefficients, so
 /// merging either would change the bits of one mode.
-template <class V, bool Finite = false> PHONG_LANES_INLINE V exp2_horner(const V& y_in)
+template <class V, bool Clamp> PHONG_LANES_INLINE V exp2_kept(const V& y_in, const typename V::batch_bool_type& kept)
 {
     using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
 #if defined(__AVX512F__)
@@ -92,10 +98,9 @@ template <class V, bool Finite = false> PHONG_LANES_INLINE V exp2_horner(const V
 #else
     constexpr bool scalef = false;
 #endif
-    // scalef takes any k; else the exponent field k + 127 stays >= 0 (field 0: the value 0).
-    constexpr float y_min = scalef ? -150.0f : -127.0f;
+    constexpr float floor = float(ieee::power_floor_log2<float>);
     V y = y_in;
-    if constexpr (!(Finite && scalef)) y = xsimd::max(y_in, V(y_min));
+    if constexpr (Clamp || !scalef) y = xsimd::max(y_in, V(floor - 1.0f)); // NaN: -101
 #if PHONG_FP_BARRIER
     // Where the compiler may reassociate: y rounded by the shift (ieee.hpp), |y| <= 150 < 2^22.
     // xsimd's nearbyint without a rounding instruction (SSE2) is the same trick with a barrier
@@ -109,10 +114,18 @@ template <class V, bool Finite = false> PHONG_LANES_INLINE V exp2_horner(const V
     for (int j = 1; j < 6; ++j) q = fused(q, r, V(exp2_coefficients[j]));
     const V mantissa = fused(r, q, V(1.0f));
 #if defined(__AVX512F__)
-    if constexpr (scalef) return V(_mm512_scalef_ps(mantissa, k));
+    if constexpr (scalef) return V(_mm512_maskz_scalef_ps(kept.data, mantissa, k));
 #endif
     const IV field = (xsimd::to_int(k) + IV(127)) << 23;
-    return mantissa * xsimd::bitwise_cast<V>(field);
+    return xsimd::select(kept, mantissa * xsimd::bitwise_cast<V>(field), V(0.0f));
+}
+
+/// 2^y for y <= 0; 0 for y below the power floor -100 (ieee::power_floor_log2<float>: no subnormal
+/// result, and none from its product by the light's coefficients) and for a NaN y (exp2_kept,
+/// the lanes with y >= -100 kept). Finite: y known finite (not NaN): no clamp under AVX-512.
+template <class V, bool Finite = false> PHONG_LANES_INLINE V exp2_horner(const V& y)
+{
+    return exp2_kept<V, !Finite>(y, y >= V(float(ieee::power_floor_log2<float>))); // false for NaN
 }
 
 /// 2^(m log2 x) for x in [0, 1] (0 and subnormals taken as 2^-126), m >= 0 finite; Finite: m <= 2^100
@@ -142,11 +155,57 @@ template <class V> PHONG_LANES_INLINE V pow_unit(const V& x, const V& m, const t
 /// y under AVX-512. The same bits as pow_unit where it is not selected away; the same bound.
 template <class V> PHONG_LANES_INLINE V pow_unit_positive(const V& x, const V& m) { return power_of_log2<V, true>(x, m); }
 
+/// pow_unit_positive on the lanes of `kept` only, 0 on the others, for a caller that knows which
+/// powers are at least the power floor: kept lanes must have x > least_base(m) (or m = 0); there
+/// the same bits as pow_unit_positive (but for powers in [2^-101, 2^-100), kept here, 0 there); no
+/// lane makes or reads a subnormal number. shade_batch's
+/// exact float lanes: `kept` is the mask of the lit lanes with c > least_base(m), so the select of
+/// the power and the floor's test are both in the mask (AVX-512: the masked scalef, no compare).
+template <class V> PHONG_LANES_INLINE V pow_unit_kept(const V& x, const V& m, const typename V::batch_bool_type& kept)
+{
+    V e;
+    const V t = split_exponent(xsimd::max(x, V(std::numeric_limits<float>::min())), e);
+    return exp2_kept<V, false>(m * log2_of_split(t, e), kept);
+}
+
+/// least_base's lanes with m > 2^20, where float's 2^(-100 / m) is too coarse (near 1, one ulp
+/// of the base moves m log2 x by m 2^-24 / ln 2): 2^(-100 / m) in double, rounded down to float.
+/// Out of line: a shininess above 2^20 is rare.
+template <class V> V least_base_wide(const V& m, const V& least)
+{
+    alignas(64) float ms[V::size], out[V::size];
+    m.store_aligned(ms);
+    least.store_aligned(out);
+    for (std::size_t i = 0; i < V::size; ++i) {
+        if (!(ms[i] > 0x1p20f)) continue;
+        const double t = std::exp2(double(ieee::power_floor_log2<float>) / double(ms[i]));
+        float f = static_cast<float>(t);
+        if (double(f) >= t) f = std::nextafter(f, 0.0f);
+        out[i] = f;
+    }
+    return V::load_aligned(out);
+}
+
+/// A base below which x^m is under the power floor 2^-100, for m > 0 (finite): every x >= 2^(-100 / m)
+/// has x > least_base(m), and every x > least_base(m) has x^m >= 2^-101, a normal number (the
+/// lanes of pow_unit_kept). Up to m = 2^20: 2^(-100 / m) by exp2_horner, lowered by its error bound
+/// ((2.5 + 69.3 / m) u relative: exp2_horner's 2.5 u and the quotient's rounding times ln 2 |y|)
+/// and the product's rounding, i.e. by (4 + 101 / m) u; that moves m log2 x by at most
+/// (10.8 m + 245) u <= 0.7. Above 2^20: least_base_wide. 0 for m < 1: every positive base (its
+/// power is then at least 2^-126, bases below 2^-126 being taken as 2^-126).
+template <class V> PHONG_LANES_INLINE V least_base(const V& m)
+{
+    const V y = V(float(ieee::power_floor_log2<float>)) / m;
+    const V least = exp2_horner(y) * (V(1.0f) - (V(4.0f) + V(101.0f) / xsimd::max(m, V(1.0f))) * V(0x1p-24f));
+    if (xsimd::any(m > V(0x1p20f))) [[unlikely]] return least_base_wide(m, least);
+    return least;
+}
+
 /// x^m lane-wise for x in [0, 1], m >= 0 finite.
 template <class V> PHONG_LANES_INLINE V pow_unit(const V& x, const V& m) { return pow_unit(x, m, m == V(0.0f)); }
 
 /// The documented relative error bound of pow_one_minus below, for y = m log2(1 - x) (results
-/// >= 2^-126): pow_unit's, plus the rounding of 1 - x (relative u, at most 2.9 u relative to
+/// >= 2^-100; below: 0): pow_unit's, plus the rounding of 1 - x (relative u, at most 2.9 u relative to
 /// log2(1 - x) where 1 - x < sqrt(1/2), i.e. |log2(1 - x)| >= 1/2) on the large-x side.
 constexpr double pow_one_minus_lanes_error(double y)
 {
@@ -168,8 +227,10 @@ template <class V> PHONG_LANES_INLINE V pow_cosine(const V& x, const V& c, const
     const V t_split = split_exponent(xsimd::max(c, V(std::numeric_limits<float>::min())), e);
     const auto near_one = c >= V(0.70710677f); // then e = 0 and t_split = c - 1
     const V log2_base = log2_of_split(xsimd::select(near_one, -x, t_split), xsimd::select(near_one, V(0.0f), e));
-    const V power = exp2_horner(m * log2_base);
-    return xsimd::select(c > V(0.0f) || m == V(0.0f), power, V(0.0f)); // 0^m as pow_unit's select
+    const V y = m * log2_base;
+    // 0^m as pow_unit's select, and the power floor (exp2_horner's), in the one mask of exp2_kept
+    const auto kept = (c > V(0.0f) || m == V(0.0f)) && y >= V(float(ieee::power_floor_log2<float>));
+    return exp2_kept<V, true>(y, kept);
 }
 
 /// (1 - x)^m lane-wise for x in [0, 1], m >= 0 finite: the stable mode's power of 1 - r.v or

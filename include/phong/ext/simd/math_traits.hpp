@@ -119,6 +119,15 @@ struct math_traits<xsimd::batch<T, A>> {
         return xsimd::select(x == x, xsimd::exp(clamped), x);
 #endif
     }
+    /// exp(y) for the powers (pow, pow_one_minus): 0 where y is below the log of the power floor
+    /// (detail::ieee::power_floor_log2: 2^-100 float, 2^-996 double), exp of the floor's log there,
+    /// so that no subnormal number is made, nor by the product with a light's coefficients. NaN: NaN.
+    PHONG_LANES_INLINE static V power_exp(const V& y)
+    {
+        const V least(T(detail::ieee::power_floor_log2<T>) * T(0.6931471805599453));
+        const auto below = y < least;
+        return xsimd::select(below, V(T(0)), exp(xsimd::select(below, least, y)));
+    }
     /// log and log1p: xsimd's (no integer conversion of the argument: defined for every input).
     PHONG_LANES_INLINE static V log(const V& x)
     {
@@ -135,11 +144,11 @@ struct math_traits<xsimd::batch<T, A>> {
         return xsimd::log1p(x);
     }
     /// x^y for x in [0, 1], y >= 0 (the lighting model's domain): exp(y log x) with xsimd's
-    /// kernels (exp clamped as above: y log x is -inf or below -1e300 for large y), pow(0, 0) = 1,
+    /// kernels (power_exp: 0 below the power floor), pow(0, 0) = 1,
     /// pow(0, y > 0) = 0 (xsimd's own pow returns 0 for pow(0, 0)).
     PHONG_LANES_INLINE static V pow(const V& x, const V& y)
     {
-        const V p = exp(y * log(xsimd::select(x > V(T(0)), x, V(T(1)))));
+        const V p = power_exp(y * log(xsimd::select(x > V(T(0)), x, V(T(1)))));
         return xsimd::select(x > V(T(0)), p, detail::power_of_zero(y));
     }
     /// x^m for x in [0, 1], m >= 0 (the specular and spot powers of the exact mode). Float lanes:
@@ -161,9 +170,16 @@ struct math_traits<xsimd::batch<T, A>> {
     /// unspecified (finite), for the caller to select away (detail/simd/lanes_power.hpp's pow_unit_positive).
     template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
     PHONG_LANES_INLINE static V pow_unit_positive(const V& x, const V& m) { return detail::lanes::pow_unit_positive(x, m); }
+    /// Float lanes: pow_unit_positive on the lanes of `kept` (x > least_base(m)), 0 on the others
+    /// (detail/simd/lanes_power.hpp's pow_unit_kept).
+    template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
+    PHONG_LANES_INLINE static V pow_unit_kept(const V& x, const V& m, const mask& kept) { return detail::lanes::pow_unit_kept(x, m, kept); }
+    /// Float lanes: a base below which x^m is under the power floor 2^-100 (m > 0; above it, x^m >=
+    /// 2^-101: detail/simd/lanes_power.hpp's least_base); 0 for m < 1.
+    template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
+    PHONG_LANES_INLINE static V least_base(const V& m) { return detail::lanes::least_base(m); }
     /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
-    /// xsimd's kernels (exp clamped as above: m log1p(-x) reaches -1e30 and below for the
-    /// shininess validate accepts); x >= 1 gives 0, and 1 for m = 0.
+    /// xsimd's kernels (power_exp: 0 below the power floor); x >= 1 gives 0, and 1 for m = 0.
     /// Float lanes: detail/simd/lanes_power.hpp's polynomial kernel (log2(1 - x) from t = -x itself near
     /// x = 0), relative error <= (6.5 |m log2(1 - x)| + 2.5) u (pow_one_minus_lanes_error).
     PHONG_LANES_INLINE static V pow_one_minus(const V& x, const V& m)
@@ -172,7 +188,7 @@ struct math_traits<xsimd::batch<T, A>> {
         const V xc = xsimd::min(x, V(T(1)));
         const auto inside = xc < V(T(1));
         const V lg = log1p(-xsimd::select(inside, xc, V(T(0))));
-        const V r = exp(m * lg);
+        const V r = power_exp(m * lg);
         return xsimd::select(inside, r, detail::power_of_zero(m));
     }
     /// a * b + c rounded once (detail::simd::fma: the fused instruction, or Dekker's exact product).
