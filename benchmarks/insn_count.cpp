@@ -4,8 +4,10 @@
 // (scalar: a loop of shade<F>; batch: shade_batch<F>; hand: the hand-written kernel of
 // support/hand_simd.hpp), F the hand kernel's model (hand_simd::model: glsl_ads) in the mode named;
 // with "check", prints the largest relative difference to phong's scalar shade<F> (after the
-// calls: outside the count's interest). Two runs with R = 1 and R = 2 give the count of one call,
-// their difference, and / (N K) the count per pair: start-up and the scene's set-up cancel.
+// calls: outside the count's interest) and fails if the hand kernel's exceeds its tolerance
+// (hand_simd::check_tolerance; .ci/steps/37-aarch64.sh checks the NEON kernel so). Two runs
+// with R = 1 and R = 2 give the count of one call, their difference, and / (N K) the count per
+// pair: start-up and the scene's set-up cancel.
 //
 // Usage: phong_insn_count <scalar|batch|hand> <exact|fast|stable> <phong|blinn> N K R [check]
 // docs/batch.md ("aarch64") has the commands and the figures.
@@ -65,8 +67,9 @@ int run(const std::string& route, std::size_t N, std::size_t K, std::size_t R, b
         if (const int error = shade_once()) return error;
     if (check) {
         const double d = hand_simd::max_difference_to_scalar<Blinn>(pts.position, pts.normal, lights, mat, s.r, s.g, s.b);
-        std::printf("%s: largest relative difference to shade<F>: %.3g (hand kernel's tolerance %.3g)\n", route.c_str(), d,
-                    hand_simd::check_tolerance(mat.shininess));
+        const double tolerance = hand_simd::check_tolerance(mat.shininess);
+        std::printf("%s: largest relative difference to shade<F>: %.3g (hand kernel's tolerance %.3g)\n", route.c_str(), d, tolerance);
+        if (route == "hand" && !(d <= tolerance)) return 1; // the hand kernel computes another model
     }
     return 0;
 }

@@ -37,3 +37,9 @@ for cxx in g++ clang++; do
     qemu-aarch64 -L "$sysroot" "$dir/tests" --no-intro | tail -n 2
   done
 done
+# The hand-written NEON kernel of the aarch64 instruction counts (docs/batch.md, "aarch64") computes
+# shade<F>'s model: benchmarks/insn_count.cpp fails if it leaves its tolerance (clang++ -O2, ~10 s).
+clang++ --target=aarch64-linux-gnu -std=gnu++20 -O2 -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Ibenchmarks \
+        -isystem "$out/include" benchmarks/insn_count.cpp -o "$out/phong_insn_count"
+for model in phong blinn; do qemu-aarch64 -L "$sysroot" "$out/phong_insn_count" hand exact $model 1024 4 1 check; done
+echo "aarch64: all in $((SECONDS - start)) s"
