@@ -4,8 +4,9 @@
 # and glibc under /usr/aarch64-linux-gnu), -O2 and -O3, run under qemu-aarch64 with the same
 # assertions as on x86-64:
 #  - tests/batch_accuracy.test.cpp: shade_batch's NEON lanes (4 floats, 2 doubles), every mode
-#    (exact, stable's twofold lanes, fast), every stiff and extreme class, against the published
-#    bounds and the long-double reference (IEEE binary128 on aarch64: 113 bits);
+#    (exact; stable: float's double-lane route, double's twofold lanes; fast), every stiff and
+#    extreme class, against the published bounds and the long-double reference (IEEE binary128 on
+#    aarch64: 113 bits);
 #  - tests/power.test.cpp: the scalar power kernels, and "constant evaluation and run time give the
 #    same bits" (both compilers contract a * b + c into fused instructions by default there);
 #  - tests/lanes_power.test.cpp, tests/fast_math.test.cpp: the lanes' powers, fast::rsqrt and the
