@@ -30,7 +30,7 @@ for cxx in g++ clang++; do
     compiler=(aarch64-linux-gnu-g++)
   else
     compiler=(clang++ --target=aarch64-linux-gnu)
-    files+=(batch.test) # clang++ only: g++ takes over 3 CPU minutes per build of it, clang++ 21 s
+    files+=(batch.test) # clang++ only: g++ 12 takes over 3 CPU minutes per build of it, clang++ one
   fi
   for opt in -O2 -O3; do
     dir=$out/$cxx$opt
