@@ -12,16 +12,18 @@
 // that set is the one of classes.bench.cpp's class.* rows, which have no batch rows to compare.
 //
 // Layout: SoA float input (x, y, z arrays of positions and normals), SoA rgb output, W = 16 points
-// per step (AVX-512, __m512) or 8 (AVX2 + FMA, __m256). Per call, hoisted: per light L_i, kd Ld_i
-// and ks Ls_i (the material folded into the light), and ka sum_i La_i; per W points, in
-// registers: n, v, n.v; the light loop runs over broadcast constants with every pair's work inline.
+// per step (AVX-512, __m512), 8 (AVX2 + FMA, __m256) or 4 (AArch64 NEON, float32x4_t). Per call,
+// hoisted: per light L_i, kd Ld_i and ks Ls_i (the material folded into the light), and
+// ka sum_i La_i; per W points, in registers: n, v, n.v; the light loop runs over broadcast
+// constants with every pair's work inline.
 //
 // Approximations (u = 2^-24, the unit roundoff of float):
 //  * 1/sqrt(x): hardware estimate y0 (AVX-512 rsqrt14: |e0| < 2^-14; AVX2 rsqrt: |e0| <= 1.5 2^-12)
 //    and one Newton step in correction form, y1 = y0 + (y0 / 2)(1 - (x y0) y0) with fused
 //    multiply-adds. The step squares the estimate's error: 1.5 e0^2 (0.1 u; AVX2 3.4 u), plus the
-//    rounding of x y0 (u, halved by the factor y0 / 2) and of the last fma (u):
-//      |rel err| <= 1.6 u (AVX-512; measured 1.25 u),  <= 4.9 u (AVX2).
+//    rounding of x y0 (u, halved by the factor y0 / 2) and of the last fma (u) (NEON: vrsqrte's
+//    |e0| < 2^-8 takes two steps, 1.5 (1.5 e0^2)^2 < 2^-30 plus the same roundings):
+//      |rel err| <= 1.6 u (AVX-512; measured 1.25 u; NEON the same),  <= 4.9 u (AVX2).
 //  * x^m for x in [0, 1], m >= 0 as 2^(m log2 x):
 //    log2: x = 2^e f with f in [sqrt(1/2), sqrt(2)) by integer arithmetic on the bits (exact),
 //      log2 f = t P(t), t = f - 1 (exact), P of degree 8 (Chebyshev fit of log2(1 + t) / t; fit error
@@ -64,6 +66,9 @@
 
 #if defined(__AVX512F__) || (defined(__AVX2__) && defined(__FMA__))
 #  include <immintrin.h>
+#  define PHONG_HAND_SIMD 1
+#elif defined(__aarch64__)
+#  include <arm_neon.h>
 #  define PHONG_HAND_SIMD 1
 #else
 #  define PHONG_HAND_SIMD 0
@@ -109,7 +114,51 @@ inline constexpr float exp2_coef[6] = {0.0001545316294512069f, 0.001339086336467
 #if PHONG_HAND_SIMD
 #  define PHONG_HAND_INLINE inline __attribute__((always_inline))
 
-#  if defined(__AVX512F__)
+#  if defined(__aarch64__)
+/// AArch64 NEON (Advanced SIMD): 4 float lanes, masks as all-ones / all-zeros lanes. Every
+/// aarch64 has fused multiply-adds (vfmaq_f32). NEON's 1/sqrt estimate (vrsqrteq_f32) has only
+/// about 8 correct bits, so rsqrt below takes two Newton steps (rsqrt_steps) to reach AVX-512's
+/// 1.6 u (the first step leaves about 2^-16, the second the roundings).
+struct isa {
+    using V = float32x4_t;
+    using M = uint32x4_t;
+    static constexpr std::size_t W = 4;
+    static constexpr const char* name = "neon";
+    static constexpr int rsqrt_steps = 2;
+    static constexpr bool clamp_y = true; // y >= -101: 2^k a normal float
+    static PHONG_HAND_INLINE V load(const float* p) { return vld1q_f32(p); }
+    static PHONG_HAND_INLINE void store(float* p, V v) { vst1q_f32(p, v); }
+    static PHONG_HAND_INLINE V set1(float x) { return vdupq_n_f32(x); }
+    static PHONG_HAND_INLINE V add(V a, V b) { return vaddq_f32(a, b); }
+    static PHONG_HAND_INLINE V sub(V a, V b) { return vsubq_f32(a, b); }
+    static PHONG_HAND_INLINE V mul(V a, V b) { return vmulq_f32(a, b); }
+    static PHONG_HAND_INLINE V fma(V a, V b, V c) { return vfmaq_f32(c, a, b); }              // a b + c
+    static PHONG_HAND_INLINE V fms(V a, V b, V c) { return vfmaq_f32(vnegq_f32(c), a, b); }   // a b - c
+    static PHONG_HAND_INLINE V fnma(V a, V b, V c) { return vfmsq_f32(c, a, b); }             // c - a b
+    static PHONG_HAND_INLINE V min(V a, V b) { return vminq_f32(a, b); }
+    static PHONG_HAND_INLINE V max(V a, V b) { return vmaxq_f32(a, b); }
+    static PHONG_HAND_INLINE V rsqrt_estimate(V x) { return vrsqrteq_f32(x); }
+    static PHONG_HAND_INLINE M gt(V a, V b) { return vcgtq_f32(a, b); }
+    static PHONG_HAND_INLINE M both(M a, M b) { return vandq_u32(a, b); }
+    static PHONG_HAND_INLINE M either(M a, M b) { return vorrq_u32(a, b); }
+    static PHONG_HAND_INLINE M all_if(bool b) { return vdupq_n_u32(b ? ~0u : 0u); }
+    static PHONG_HAND_INLINE V zero_unless(M m, V v) { return vreinterpretq_f32_u32(vandq_u32(m, vreinterpretq_u32_f32(v))); }
+    static PHONG_HAND_INLINE V round(V y) { return vrndnq_f32(y); }
+    /// p 2^k for integral k in [-101, 0] (2^k built in the exponent field) where y >= y_floor, else 0.
+    static PHONG_HAND_INLINE V ldexp_above(V p, V k, V y, V y_floor)
+    {
+        const int32x4_t field = vaddq_s32(vcvtq_s32_f32(k), vdupq_n_s32(127));
+        return zero_unless(vcgeq_f32(y, y_floor), mul(p, vreinterpretq_f32_s32(vshlq_n_s32(field, 23))));
+    }
+    static PHONG_HAND_INLINE V split(V x, V& e)
+    {
+        const int32x4_t bits = vreinterpretq_s32_f32(x);
+        const int32x4_t ei = vshrq_n_s32(vsubq_s32(bits, vdupq_n_s32(0x3f3504f3)), 23);
+        e = vcvtq_f32_s32(ei);
+        return sub(vreinterpretq_f32_s32(vsubq_s32(bits, vshlq_n_s32(ei, 23))), set1(1));
+    }
+};
+#  elif defined(__AVX512F__)
 /// AVX-512F: 16 float lanes, k-register masks.
 struct isa {
     using V = __m512;
@@ -117,6 +166,7 @@ struct isa {
     static constexpr std::size_t W = 16;
     static constexpr const char* name = "avx512";
     static constexpr bool clamp_y = false; // the masked scalef leaves the lanes below the floor alone
+    static constexpr int rsqrt_steps = 1;
     static PHONG_HAND_INLINE V load(const float* p) { return _mm512_loadu_ps(p); }
     static PHONG_HAND_INLINE void store(float* p, V v) { _mm512_storeu_ps(p, v); }
     static PHONG_HAND_INLINE V set1(float x) { return _mm512_set1_ps(x); }
@@ -157,6 +207,7 @@ struct isa {
     static constexpr std::size_t W = 8;
     static constexpr const char* name = "avx2";
     static constexpr bool clamp_y = true; // y >= -101: 2^k a normal float
+    static constexpr int rsqrt_steps = 1;
     static PHONG_HAND_INLINE V load(const float* p) { return _mm256_loadu_ps(p); }
     static PHONG_HAND_INLINE void store(float* p, V v) { _mm256_storeu_ps(p, v); }
     static PHONG_HAND_INLINE V set1(float x) { return _mm256_set1_ps(x); }
@@ -199,9 +250,12 @@ inline constexpr const char* isa_name = isa::name;
 /// 1/sqrt(x): estimate + one Newton step in correction form (error in the header comment).
 PHONG_HAND_INLINE V rsqrt(V x)
 {
-    const V y0 = isa::rsqrt_estimate(x);
-    const V e = isa::fnma(isa::mul(x, y0), y0, isa::set1(1)); // 1 - x y0^2
-    return isa::fma(isa::mul(y0, isa::set1(0.5f)), e, y0);
+    V y = isa::rsqrt_estimate(x);
+    for (int step = 0; step < isa::rsqrt_steps; ++step) {
+        const V e = isa::fnma(isa::mul(x, y), y, isa::set1(1)); // 1 - x y^2
+        y = isa::fma(isa::mul(y, isa::set1(0.5f)), e, y);
+    }
+    return y;
 }
 
 /// log2(x) for normal positive x.

@@ -34,12 +34,11 @@
 
 namespace phong::detail::ieee {
 
-/// x unchanged, but opaque to the optimizer where it may reassociate (see above): nothing computed
-/// from the result is simplified using how x was computed. Scalars (float, double) and SIMD batches
-/// (any type with a register_type, e.g. xsimd::batch).
-template <class V> PHONG_INLINE constexpr V opaque(V x)
+/// x unchanged, opaque to the optimizer at run time in every build (identity in constant
+/// evaluation): the empty asm of opaque() below, unconditionally. Scalars and SIMD batches.
+template <class V> PHONG_INLINE constexpr V barrier(V x)
 {
-#if PHONG_FP_BARRIER && (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
     if (!std::is_constant_evaluated()) {
         if constexpr (std::is_floating_point_v<V>) {
 #  if defined(__x86_64__) || defined(__i386__)
@@ -65,6 +64,45 @@ template <class V> PHONG_INLINE constexpr V opaque(V x)
     }
 #endif
     return x;
+}
+
+/// x unchanged, but opaque to the optimizer where it may reassociate (see above): nothing computed
+/// from the result is simplified using how x was computed. Scalars (float, double) and SIMD batches
+/// (any type with a register_type, e.g. xsimd::batch).
+template <class V> PHONG_INLINE constexpr V opaque(V x)
+{
+#if PHONG_FP_BARRIER
+    return barrier(x);
+#else
+    return x;
+#endif
+}
+
+/// 1 where the scalar power kernels (detail/power.hpp) keep every product rounded on its own:
+/// aarch64, whose FMA instructions are always enabled and which g++ (-ffp-contract=fast, the
+/// default outside ISO mode) and clang++ (-ffp-contract=on: within an expression) contract
+/// a * b + c into by default. A contracted kernel rounds differently from its constant evaluation
+/// (which never contracts), so "constant evaluation and run time give the same bits" would fail
+/// (tests/power.test.cpp). Elsewhere 0 (x86-64 contracts only where -mfma or -march enables FMA
+/// instructions, an opt-in documented in detail/power.hpp); define PHONG_UNFUSED_KERNELS=1 to keep
+/// the products unfused there too.
+#if !defined(PHONG_UNFUSED_KERNELS)
+#  if defined(__aarch64__)
+#    define PHONG_UNFUSED_KERNELS 1
+#  else
+#    define PHONG_UNFUSED_KERNELS 0
+#  endif
+#endif
+
+/// a * b rounded on its own (PHONG_UNFUSED_KERNELS: behind barrier(), so no later addition is
+/// fused with it), else a * b.
+template <class V> PHONG_INLINE constexpr V unfused_product(V a, V b)
+{
+#if PHONG_UNFUSED_KERNELS
+    return barrier(a * b);
+#else
+    return a * b;
+#endif
 }
 
 /// y rounded to a multiple of shift's ulp by the sum y + shift (round to nearest; |y| well below

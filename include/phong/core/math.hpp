@@ -51,8 +51,9 @@ template <class V, class S = V>
 PHONG_INLINE constexpr V dekker_product_error(const V& a, const V& b, const V& p)
 {
     const V split = V(S((1ull << ((std::numeric_limits<S>::digits + 1) / 2)) + 1));
-    const V ca = ieee::opaque(split * a), ah = ieee::opaque(ca - ieee::opaque(ca - a)), al = a - ah;
-    const V cb = ieee::opaque(split * b), bh = ieee::opaque(cb - ieee::opaque(cb - b)), bl = b - bh;
+    // split * a rounded on its own (unfused_product): fused into ca - a it would not split a.
+    const V ca = ieee::opaque(ieee::unfused_product(split, a)), ah = ieee::opaque(ca - ieee::opaque(ca - a)), al = a - ah;
+    const V cb = ieee::opaque(ieee::unfused_product(split, b)), bh = ieee::opaque(cb - ieee::opaque(cb - b)), bl = b - bh;
     return ieee::ordered_sum(ah * bh - p, ah * bl, al * bh, al * bl);
 }
 
@@ -62,7 +63,7 @@ PHONG_INLINE constexpr V dekker_product_error(const V& a, const V& b, const V& p
 template <class V, class S = V>
 PHONG_INLINE constexpr V dekker_fma(const V& a, const V& b, const V& c)
 {
-    const V p = a * b;
+    const V p = ieee::unfused_product(a, b); // fl(a b), not fused into p + c
     return ieee::opaque(p + c) + dekker_product_error<V, S>(a, b, p);
 }
 

@@ -16,8 +16,10 @@
 // |y| = 512; the m term is the rounding of r = z / c_i - 1, which is not exact for x just below 1):
 // 1e-14 for m <= 100, 1e-11 at m = 1e5. Float: 99.99 % correctly rounded, worst 0.5005 ulp.
 // Constant evaluation and run time give the same bits unless the compiler contracts the
-// polynomials' multiply-adds into FMA instructions (g++ and clang do with -march=native: then they
-// differ by rounding, within the same bound).
+// polynomials' multiply-adds into FMA instructions (g++ and clang do on x86-64 with -march=native:
+// then they differ by rounding, within the same bound). On aarch64, where FMA is always on and both
+// compilers contract by default, every product is kept unfused (mul below, ieee::unfused_product):
+// the same bits as constant evaluation, and as x86-64 without FMA.
 #pragma once
 
 #include "config.hpp"
@@ -174,6 +176,10 @@ inline constexpr double b1 = 0x1.62e42fefa39efp-1, b2 = 0x1.ebfbdff82c58fp-3, b3
 // END power
 // clang-format on
 
+/// a * b, never fused with a later addition (ieee::unfused_product): the kernels below round each
+/// product on its own as constant evaluation does, so both give the same bits on every target.
+PHONG_INLINE constexpr double mul(double a, double b) { return ieee::unfused_product(a, b); }
+
 /// log2 x for a positive normal double x (absolute error about 2^-53 (|log2 c_i| + 1)). Short:
 /// float's degree-5 polynomial (truncation below r^6/6 < 2^-50 absolute, which only matters times
 /// m where m |log2 x| < 150, else the float result is 0) instead of degree 7.
@@ -185,11 +191,11 @@ PHONG_INLINE constexpr double log2_normal(double x)
     const int i = static_cast<int>((tmp >> (52 - log_table_bits)) % (1u << log_table_bits));
     const double k = static_cast<double>(static_cast<std::int64_t>(tmp) >> 52); // arithmetic shift (C++20)
     const double z = std::bit_cast<double>(u - (tmp & (u64(0xfff) << 52)));
-    const double r = ieee::opaque(z * log2_table[i].inv_c - 1.0); // exact for the interval holding 1 (inv_c = 1)
+    const double r = ieee::opaque(mul(z, log2_table[i].inv_c) - 1.0); // exact for the interval holding 1 (inv_c = 1)
     const double r2 = r * r;
     double p;
-    if constexpr (Short) p = r * (a1 + r * a2) + r2 * r * (a3 + r * a4 + r2 * a5);
-    else p = r * (a1 + r * a2) + r2 * r * ((a3 + r * a4) + r2 * ((a5 + r * a6) + r2 * a7));
+    if constexpr (Short) p = mul(r, a1 + mul(r, a2)) + mul(r2 * r, (a3 + mul(r, a4)) + mul(r2, a5));
+    else p = mul(r, a1 + mul(r, a2)) + mul(r2 * r, (a3 + mul(r, a4)) + mul(r2, (a5 + mul(r, a6)) + mul(r2, a7)));
     return (k + log2_table[i].log2_c) + p;
 }
 
@@ -209,10 +215,10 @@ PHONG_INLINE constexpr double exp2_tabulated(double y)
     const double t = ieee::opaque(y - rounded); // |t| <= 1/128
     const double scale = std::bit_cast<double>(exp2_table[n % (1u << exp_table_bits)] + (n << (52 - exp_table_bits)));
     if constexpr (Short) {
-        return scale + scale * (t * (b1 + t * (b2 + t * b3)));
+        return scale + mul(scale, mul(t, b1 + mul(t, b2 + mul(t, b3))));
     } else {
         const double t2 = t * t;
-        return scale + scale * (t * b1 + t2 * ((b2 + t * b3) + t2 * (b4 + t * b5)));
+        return scale + mul(scale, mul(t, b1) + mul(t2, (b2 + mul(t, b3)) + mul(t2, b4 + mul(t, b5))));
     }
 }
 

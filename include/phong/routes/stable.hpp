@@ -1,6 +1,6 @@
 // phong: the stable evaluation route, features::mode = evaluation::stable for double, double SIMD
 // batches and float with features::precision = twofold (float's default, the wider route, is
-// detail/exact.hpp run in double; float SIMD batches on x86 take detail/simd/stable_lanes.hpp, and this
+// detail/exact.hpp run in double; float SIMD batches on x86 and aarch64 take detail/simd/stable_lanes.hpp, and this
 // route only for steps with a shininess above 2^20). Vectors are rescaled by powers of two (exact) so that every
 // finite input is in range, and the unit vectors n, l, v (h), n.l and the specular chords are
 // carried twofold (detail/twofold.hpp) from the exact L.xyz - w Q; the specular power is

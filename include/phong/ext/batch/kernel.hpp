@@ -26,7 +26,7 @@
 namespace phong::detail {
 
 /// Whether shade_batch runs F on lanes V through detail/simd/stable_lanes.hpp (the stable mode on
-/// float lanes of x86).
+/// float lanes of x86 and aarch64).
 template <features F, class V> inline constexpr bool stable_lanes_route =
 #if PHONG_STABLE_LANES
     F.mode == evaluation::stable && stable_lanes::applies<V>;

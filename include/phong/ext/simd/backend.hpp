@@ -28,9 +28,42 @@
 // (tests/consumer/batch_user.cpp). Include phong/batch.hpp before <xsimd/xsimd.hpp> for this to
 // hold.
 #if !defined(PHONG_NO_XSIMD) && !defined(__CUDACC__) && __has_include(<xsimd/xsimd.hpp>)
+#  if defined(__aarch64__)
+// xsimd 8.1's float division and square root on NEON (its neon kernels, which neon64 inherits)
+// are reciprocal estimates with two Newton steps, not correctly rounded (a few ulp off), and its
+// sqrt is x * rsqrt(x), NaN at x = inf. phong's bounds count IEEE division and square root, so
+// neon64 float batches take AArch64's instructions (vdivq_f32, vsqrtq_f32), as xsimd already does
+// for double. These overloads take neon64 itself where xsimd's take its base neon, so xsimd's
+// calls (kernel::div<A>(..., A{}), kernel::sqrt<A>(..., A{}), qualified: looked up where xsimd
+// defines them) choose them; hence they are declared before <xsimd/xsimd.hpp>.
+#    if defined(XSIMD_HPP)
+#      error "phong: on aarch64 include phong/batch.hpp (or a phong lane header) before <xsimd/xsimd.hpp>: phong's NEON float division and square root must be declared first"
+#    endif
+#    include <arm_neon.h>
+namespace xsimd {
+template <class T, class A> class batch;
+struct neon64;
+namespace kernel {
+template <class A> inline batch<float, A> div(batch<float, A> const& a, batch<float, A> const& b, neon64 const&) noexcept;
+template <class A> inline batch<float, A> detail::sqrt(batch<float, A> const& x, neon64 const&) noexcept;
+} // namespace kernel
+} // namespace xsimd
+#  endif
 #  include "diagnostics_push.hpp"
 #  include <xsimd/xsimd.hpp>
 #  include "diagnostics_pop.hpp"
+#  if defined(__aarch64__)
+namespace xsimd::kernel {
+template <class A> inline batch<float, A> div(batch<float, A> const& a, batch<float, A> const& b, neon64 const&) noexcept
+{
+    return vdivq_f32(a, b);
+}
+template <class A> inline batch<float, A> detail::sqrt(batch<float, A> const& x, neon64 const&) noexcept
+{
+    return vsqrtq_f32(x);
+}
+} // namespace xsimd::kernel
+#  endif
 #  define PHONG_HAS_XSIMD 1
 #else
 #  define PHONG_HAS_XSIMD 0
@@ -52,8 +85,9 @@ namespace detail::simd {
 
 /// a * b + c rounded once on xsimd lanes. xsimd 8.1's fma is a separate multiply and add on
 /// AVX-512 and on targets without FMA (found by the stable mode's error-free products losing
-/// their error term), so the fused instructions are called directly, and without FMA hardware
-/// the exact product comes from Dekker's split (split_fma below).
+/// their error term), so the fused instructions are called directly (x86 FMA3 and AVX-512;
+/// AArch64's vfmaq, which every aarch64 target has), and without FMA hardware the exact product
+/// comes from Dekker's split (split_fma below).
 template <class V> PHONG_LANES_INLINE V split_fma(const V& a, const V& b, const V& c);
 
 template <class V> PHONG_LANES_INLINE V fma(const V& a, const V& b, const V& c)
@@ -72,6 +106,12 @@ template <class V> PHONG_LANES_INLINE V fma(const V& a, const V& b, const V& c)
     } else if constexpr (sizeof(V) == 16) {
         if constexpr (float_lanes) return V(_mm_fmadd_ps(a, b, c));
         else return V(_mm_fmadd_pd(a, b, c));
+    }
+#  endif
+#  if defined(__aarch64__)
+    if constexpr (sizeof(V) == 16) {
+        if constexpr (float_lanes) return V(vfmaq_f32(c, a, b));
+        else return V(vfmaq_f64(c, a, b));
     }
 #  endif
     return split_fma(a, b, c);
@@ -95,7 +135,10 @@ template <class V> PHONG_LANES_INLINE V split_fma(const V& a, const V& b, const 
     const auto big_a = xsimd::abs(a) > limit, big_b = xsimd::abs(b) > limit;
     const V as = xsimd::select(big_a, a * down, a), bs = xsimd::select(big_b, b * down, b);
     const V scale = xsimd::select(big_a, up, one) * xsimd::select(big_b, up, one);
-    return detail::ieee::opaque(a * b + c) + detail::dekker_product_error<V, T>(as, bs, as * bs) * scale;
+    // fl(fl(a b) + c): the product unfused (ieee::barrier), else a contracting compiler makes it one
+    // fused multiply-add, and adding e would count the product's error twice.
+    return detail::ieee::opaque(detail::ieee::barrier(a * b) + c) +
+           detail::dekker_product_error<V, T>(as, bs, detail::ieee::barrier(as * bs)) * scale;
 }
 
 } // namespace detail::simd

@@ -1,4 +1,4 @@
-// phong: fast::detail::lanes for xsimd batches (the lane-wise bit access of phong/fast_math.hpp's kernels)
+// phong: fast::detail::lanes for xsimd batches (the lane-wise bit access of phong/core/fast_math.hpp's kernels)
 // and the batches' fast::rsqrt.
 // SPDX-License-Identifier: MIT
 #pragma once
@@ -23,13 +23,13 @@ struct lanes<xsimd::batch<T, A>> {
     using bits_t = xsimd::batch<std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>, A>;
     static bits_t bits(const V& x) { return xsimd::bitwise_cast<bits_t>(x); }
     static V from_bits(const bits_t& u) { return xsimd::bitwise_cast<V>(u); }
-    /// a * b + c: the fused instruction where the target has one (xsimd 8.1's fma is a separate
-    /// multiply and add on AVX-512), else a multiply and an add (not math_traits' exact fma:
-    /// Dekker's split takes many operations where this takes one, and the kernels do not need the
-    /// single rounding).
+    /// a * b + c: the fused instruction where the target has one (x86 FMA3, AVX-512, every
+    /// aarch64: xsimd 8.1's fma is a separate multiply and add on AVX-512), else a multiply and an
+    /// add (not math_traits' exact fma: Dekker's split takes many operations where this takes one,
+    /// and the kernels do not need the single rounding).
     static V madd(const V& a, const V& b, const V& c)
     {
-#  if defined(__FMA__) || defined(__AVX512F__)
+#  if defined(__FMA__) || defined(__AVX512F__) || defined(__aarch64__)
         return phong::detail::math_traits<V>::fma(a, b, c);
 #  else
         return a * b + c;

@@ -1,5 +1,6 @@
 // phong: the stable mode on float SIMD lanes (shade_batch<F> with F.mode = evaluation::stable and
-// float points on x86): the geometry of every pair in double lanes, the power and the sums in float.
+// float points on x86 and aarch64): the geometry of every pair in double lanes, the power and the
+// sums in float.
 // SPDX-License-Identifier: MIT
 //
 // Why double, and why only the geometry: float inputs fit double with room to spare. |d|^2 of a
@@ -34,6 +35,9 @@
 #if PHONG_HAS_XSIMD && defined(__SSE2__)
 #  include <immintrin.h>
 #  define PHONG_STABLE_LANES 1
+#elif PHONG_HAS_XSIMD && defined(__aarch64__)
+#  include <arm_neon.h>
+#  define PHONG_STABLE_LANES 1
 #else
 #  define PHONG_STABLE_LANES 0
 #endif
@@ -47,7 +51,7 @@ namespace phong::detail::stable_lanes {
 inline constexpr float max_shininess = 1048576.0f; // 2^20
 
 #if PHONG_STABLE_LANES
-/// Whether V is a float batch of an x86 ISA that this route splits into two double batches.
+/// Whether V is a float batch of an x86 ISA (or NEON) that this route splits into two double batches.
 template <class V> inline constexpr bool applies = false;
 template <class A>
 inline constexpr bool applies<xsimd::batch<float, A>> = sizeof(xsimd::batch<float, A>) == 16 ||
@@ -81,8 +85,13 @@ template <class V> inline lane_parts<V> widen(const V& x)
         return {D(_mm256_cvtps_pd(_mm256_castps256_ps128(r))), D(_mm256_cvtps_pd(_mm256_extractf128_ps(r, 1)))};
 #  endif
     } else {
+#  if defined(__aarch64__)
+        const float32x4_t r = x;
+        return {D(vcvt_f64_f32(vget_low_f32(r))), D(vcvt_high_f64_f32(r))};
+#  else
         const __m128 r = x;
         return {D(_mm_cvtps_pd(r)), D(_mm_cvtps_pd(_mm_movehl_ps(r, r)))};
+#  endif
     }
 }
 /// The float batch of its two double parts (lower, upper lanes), each lane rounded once.
@@ -98,7 +107,11 @@ template <class V> inline V join(const double_t<V>& lower, const double_t<V>& up
         return V(_mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps(lower)), _mm256_cvtpd_ps(upper), 1));
 #  endif
     } else {
+#  if defined(__aarch64__)
+        return V(vcvt_high_f32_f64(vcvt_f32_f64(lower), upper));
+#  else
         return V(_mm_movelh_ps(_mm_cvtpd_ps(lower), _mm_cvtpd_ps(upper)));
+#  endif
     }
 }
 
