@@ -234,11 +234,16 @@ template <class T, power_kernel P = power_kernel::scalar> constexpr double exact
 /// k_max)^2 times the smallest normal number of T (each light has at most 8 roundings that may
 /// underflow, each off by at most a subnormal half-ulp < u min, or min for double's flush of a
 /// power below 2^-1022, scaled by at most f and two coefficients; f_max: the largest f_i, k_max:
-/// the largest material or light coefficient).
+/// the largest material or light coefficient), plus 2 K max(1, f_max) max(1, k_max)^2 times the
+/// power floor 2^ieee::power_floor_log2<T> (2^-100 float, 2^-996 double): each light's specular
+/// power and spot factor are returned as 0 below the floor, an absolute error of at most the floor
+/// times the coefficients and f that scale them (docs/accuracy.md, 'The power floor').
 template <class T> constexpr double exact_absolute_allowance(int lights, double f_max, double k_max)
 {
-    return (8.0 * lights + 4) * detail::maxd(1, f_max) * detail::maxd(1, k_max) * detail::maxd(1, k_max) *
-           double(std::numeric_limits<T>::min());
+    const double scale = detail::maxd(1, f_max) * detail::maxd(1, k_max) * detail::maxd(1, k_max);
+    const double floor = double(std::numeric_limits<T>::min()) * 0x1p26; // 2^power_floor_log2<T>
+    static_assert(phong::detail::ieee::power_floor_log2<T> == std::numeric_limits<T>::min_exponent - 1 + 26);
+    return (8.0 * lights + 4) * scale * double(std::numeric_limits<T>::min()) + 2.0 * lights * scale * floor;
 }
 
 /// A class's worst-case conditioning for the exact mode (the class's limits): every lit pair has

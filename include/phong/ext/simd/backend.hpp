@@ -45,7 +45,7 @@ template <class T, class A> class batch;
 struct neon64;
 namespace kernel {
 template <class A> inline batch<float, A> div(batch<float, A> const& a, batch<float, A> const& b, neon64 const&) noexcept;
-template <class A> inline batch<float, A> detail::sqrt(batch<float, A> const& x, neon64 const&) noexcept;
+template <class A> inline batch<float, A> sqrt(batch<float, A> const& x, neon64 const&) noexcept;
 } // namespace kernel
 } // namespace xsimd
 #  endif
@@ -58,7 +58,7 @@ template <class A> inline batch<float, A> div(batch<float, A> const& a, batch<fl
 {
     return vdivq_f32(a, b);
 }
-template <class A> inline batch<float, A> detail::sqrt(batch<float, A> const& x, neon64 const&) noexcept
+template <class A> inline batch<float, A> sqrt(batch<float, A> const& x, neon64 const&) noexcept
 {
     return vsqrtq_f32(x);
 }
