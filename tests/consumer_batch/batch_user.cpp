@@ -93,7 +93,7 @@ template <features F, class T> bool check(const char* name)
     if constexpr (F.view == view_model::eye_point) env.eye = glm::vec<4, T>(T(0.5), T(-0.5), T(1), T(1));
 
     bool ok = true;
-    for (int masked_lights = 0; phong::detail::masked_lights < 2; ++masked_lights) {
+    for (int masked_lights = 0; masked_lights < 2; ++masked_lights) {
         const std::span<const std::uint64_t> masks = masked_lights ? std::span<const std::uint64_t>(h.masks) : std::span<const std::uint64_t>();
         soa_points<T> soa{.positions = {h.px, h.py, h.pz}, .normals = {h.nx, h.ny, h.nz}, .light_masks = masks};
         aos_points<T> aos{.positions = h.p, .normals = h.n, .light_masks = masks};
