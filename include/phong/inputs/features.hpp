@@ -125,23 +125,23 @@ struct features {
     ///   constexpr features F = presets::raytracer_phong.with_unit_inputs(true).with_specular_gate(false);
     ///   constexpr features G = features{}.with_lights(light_kind::directional).with_view(view_model::fixed_direction);
     /// Each returns a copy; the value it is called on is unchanged.
-    PHONG_INLINE constexpr features with_scene_ambient(bool value) const { features f = *this; f.scene_ambient = value; return f; }
-    PHONG_INLINE constexpr features with_light_ambient(bool value) const { features f = *this; f.light_ambient = value; return f; }
-    PHONG_INLINE constexpr features with_diffuse(bool value) const { features f = *this; f.diffuse = value; return f; }
-    PHONG_INLINE constexpr features with_specular(specular_model value) const { features f = *this; f.specular = value; return f; }
-    PHONG_INLINE constexpr features with_specular_gate(bool value) const { features f = *this; f.specular_gate = value; return f; }
-    PHONG_INLINE constexpr features with_lights(light_kind value) const { features f = *this; f.lights = value; return f; }
-    PHONG_INLINE constexpr features with_attenuation(attenuation_model value) const { features f = *this; f.attenuation = value; return f; }
-    PHONG_INLINE constexpr features with_spot(spot_model value) const { features f = *this; f.spot = value; return f; }
-    PHONG_INLINE constexpr features with_attenuate_ambient(bool value) const { features f = *this; f.attenuate_ambient = value; return f; }
-    PHONG_INLINE constexpr features with_two_sided(facing value) const { features f = *this; f.two_sided = value; return f; }
-    PHONG_INLINE constexpr features with_view(view_model value) const { features f = *this; f.view = value; return f; }
-    PHONG_INLINE constexpr features with_emission(bool value) const { features f = *this; f.emission = value; return f; }
-    PHONG_INLINE constexpr features with_alpha(bool value) const { features f = *this; f.alpha = value; return f; }
-    PHONG_INLINE constexpr features with_mode(evaluation value) const { features f = *this; f.mode = value; return f; }
-    PHONG_INLINE constexpr features with_precision(stable_precision value) const { features f = *this; f.precision = value; return f; }
-    PHONG_INLINE constexpr features with_stable_twofold_above(unsigned value) const { features f = *this; f.stable_twofold_above = value; return f; }
-    PHONG_INLINE constexpr features with_unit_inputs(bool value) const { features f = *this; f.unit_inputs = value; return f; }
+    PHONG_INLINE constexpr features with_scene_ambient(bool value) const { features f = *this; f.scene_ambient = value; return f; } ///< a copy with scene_ambient = value
+    PHONG_INLINE constexpr features with_light_ambient(bool value) const { features f = *this; f.light_ambient = value; return f; } ///< a copy with light_ambient = value
+    PHONG_INLINE constexpr features with_diffuse(bool value) const { features f = *this; f.diffuse = value; return f; } ///< a copy with diffuse = value
+    PHONG_INLINE constexpr features with_specular(specular_model value) const { features f = *this; f.specular = value; return f; } ///< a copy with specular = value
+    PHONG_INLINE constexpr features with_specular_gate(bool value) const { features f = *this; f.specular_gate = value; return f; } ///< a copy with specular_gate = value
+    PHONG_INLINE constexpr features with_lights(light_kind value) const { features f = *this; f.lights = value; return f; } ///< a copy with lights = value
+    PHONG_INLINE constexpr features with_attenuation(attenuation_model value) const { features f = *this; f.attenuation = value; return f; } ///< a copy with attenuation = value
+    PHONG_INLINE constexpr features with_spot(spot_model value) const { features f = *this; f.spot = value; return f; } ///< a copy with spot = value
+    PHONG_INLINE constexpr features with_attenuate_ambient(bool value) const { features f = *this; f.attenuate_ambient = value; return f; } ///< a copy with attenuate_ambient = value
+    PHONG_INLINE constexpr features with_two_sided(facing value) const { features f = *this; f.two_sided = value; return f; } ///< a copy with two_sided = value
+    PHONG_INLINE constexpr features with_view(view_model value) const { features f = *this; f.view = value; return f; } ///< a copy with view = value
+    PHONG_INLINE constexpr features with_emission(bool value) const { features f = *this; f.emission = value; return f; } ///< a copy with emission = value
+    PHONG_INLINE constexpr features with_alpha(bool value) const { features f = *this; f.alpha = value; return f; } ///< a copy with alpha = value
+    PHONG_INLINE constexpr features with_mode(evaluation value) const { features f = *this; f.mode = value; return f; } ///< a copy with mode = value
+    PHONG_INLINE constexpr features with_precision(stable_precision value) const { features f = *this; f.precision = value; return f; } ///< a copy with precision = value
+    PHONG_INLINE constexpr features with_stable_twofold_above(unsigned value) const { features f = *this; f.stable_twofold_above = value; return f; } ///< a copy with stable_twofold_above = value
+    PHONG_INLINE constexpr features with_unit_inputs(bool value) const { features f = *this; f.unit_inputs = value; return f; } ///< a copy with unit_inputs = value
 };
 
 /// A feature set as a type, for templating a CUDA kernel on it: nvcc 13 rejects a class-type
