@@ -124,8 +124,11 @@ PHONG_INLINE constexpr T luminance_probability(const glm::vec<3, T, Q>& kd, cons
 /// cos a, 1 - cos a and sin a of a power-cosine lobe sample, pdf (m+1)/(2 pi) cos^m a:
 /// t = log(u) / (m+1) <= 0, 1 - cos a = -expm1(t), cos a = 1 - (1 - cos a),
 /// sin a = sqrt((1 - cos a)(2 - (1 - cos a))). Each within a few ulps of its exact value for
-/// u in (0, 1) at any m >= 0 (tests/bsdf.test.cpp: 4 ulps in float). u = 0 (and NaN) gives
-/// cos a = 0, sin a = 1: the edge of the hemisphere, as the limit u -> 0.
+/// u in (0, 1) at any m >= 0 (tests/bsdf.test.cpp: 4 ulps; measured 2 in double, 1 in float).
+/// float: evaluated in double, where expm1(t) is t + t^2/2 + t^3/6 + t^4/24 for |t| < 2^-10
+/// (truncation below 2^-53 relative) and exp(t) - 1 beyond (|exp(t) - 1| >= 2^-10: 2^-43 relative),
+/// then rounded once: glibc's double log and exp are faster than its logf + expm1f.
+/// u = 0 (and NaN) gives cos a = 0, sin a = 1: the edge of the hemisphere, as the limit u -> 0.
 template <class T> struct cone {
     T one_minus_cos; ///< 1 - cos a, in [0, 1]
     T cos;           ///< cos a, in [0, 1]
@@ -135,8 +138,14 @@ template <class T>
 PHONG_INLINE constexpr cone<T> sample_cone(T u, T m)
 {
     if (!(u > T(0))) return {T(1), T(0), T(1)};
-    const T omc = -phong::expm1(phong::log(u) / (m + T(1)));
-    return {omc, T(1) - omc, phong::sqrt(omc * (T(2) - omc))};
+    if constexpr (std::is_same_v<T, float>) {
+        const double t = phong::log(double(u)) / (double(m) + 1.0);
+        const double omc = t > -0x1p-10 ? -(t + t * t * (0.5 + t * (1.0 / 6 + t * (1.0 / 24)))) : 1.0 - phong::exp(t);
+        return {float(omc), float(1.0 - omc), float(phong::sqrt(omc * (2.0 - omc)))};
+    } else {
+        const T omc = -phong::expm1(phong::log(u) / (m + T(1)));
+        return {omc, T(1) - omc, phong::sqrt(omc * (T(2) - omc))};
+    }
 }
 
 /// (cos 2 pi u, sin 2 pi u). Run time: std::cos, std::sin. Constant evaluation: a Taylor series
@@ -177,13 +186,29 @@ PHONG_INLINE constexpr T one_minus_cos(const glm::vec<3, T, Q>& a, const glm::ve
     return phong::dot(x, x) / (T(1) + cos_ab);
 }
 
+/// log1p(-x) for x in [0, 1): log(y) - ((y - 1) + x) / y with y = 1 - x rounded (the rounding
+/// error of y corrected to first order; Goldberg, "What every computer scientist should know about
+/// floating-point arithmetic", 1991, theorem 4): within 2 ulps, one log instead of glibc's slower log1p.
+template <class W>
+PHONG_INLINE constexpr W log1p_minus(W x)
+{
+    const W y = W(1) - x;
+    if (y == W(1)) return -x;
+    return phong::log(y) - ((y - W(1)) + x) / y;
+}
+
 /// cos^m a = exp(m log1p(-x)) for x = 1 - cos a in [0, 1), clamped below 1 so that m = 0 gives 1
-/// (no 0 * -inf). Relative error about (1 + m x) ulps beyond that of x.
+/// (no 0 * -inf). Relative error about (1 + m x) ulps beyond that of x. float: in double (then
+/// the exponent's error is m 2^-53 x, below a float ulp for m x < 2^28).
 template <class T>
 PHONG_INLINE constexpr T lobe_power(T x, T m)
 {
     constexpr T below_one = T(1) - std::numeric_limits<T>::epsilon() / 2;
-    return phong::exp(m * phong::log1p(-phong::min(x, below_one)));
+    if constexpr (std::is_same_v<T, float>) {
+        return float(phong::exp(double(m) * log1p_minus(double(phong::min(x, below_one)))));
+    } else {
+        return phong::exp(m * log1p_minus(phong::min(x, below_one)));
+    }
 }
 
 /// Choose the lobe with u0 and stretch u0 back onto [0, 1) for the lobe's own use.
