@@ -228,6 +228,7 @@ void run_type(int samples, int directions, double max_m, summary& sum)
 
 int main(int argc, char** argv)
 {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0); // a line per test as it ends, also into a file
     const int samples = argc > 1 ? std::atoi(argv[1]) : 1000000;
     const int directions = argc > 2 ? std::atoi(argv[2]) : 20;
     const double max_m = argc > 3 ? std::atof(argv[3]) : 1e5;

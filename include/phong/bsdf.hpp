@@ -286,7 +286,7 @@ inline T exp_weighted_integral(T xmax, G g)
 /// The material's ka, emission and alpha are not used; shininess is m.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct modified_phong_bsdf {
-    using vec3 = glm::vec<3, T, Q>;
+    using vec3 = glm::vec<3, T, Q>; ///< the direction and colour type
     vec3 kd{T(0.7)};                  ///< diffuse albedo
     vec3 ks{T(0.2)};                  ///< specular albedo at normal incidence
     T shininess = T(32);              ///< m >= 0
@@ -304,6 +304,16 @@ struct modified_phong_bsdf {
     /// cos^m of the angle between wi and r = reflect(wo); 0 where it exceeds 90 degrees.
     PHONG_INLINE constexpr T specular_power(const vec3& wo, const vec3& wi) const
     {
+        if constexpr (std::is_same_v<T, float>) {
+            // float: one_minus_cos in double (insensitive to the length of wi, unit within float's
+            // rounding only), then (1 - x)^m by pow_unit's double kernel: its error, m 2^-53, is far
+            // below a float ulp.
+            const glm::dvec3 rd{-double(wo.x), -double(wo.y), double(wo.z)}, wd{wi};
+            const double c = phong::dot(wd, rd);
+            if (!(c > 0.0)) return T(0);
+            const double x = detail::bsdf::one_minus_cos(wd, rd, c);
+            return float(detail::power::pow_unit_at_most_one(1.0 - phong::min(x, 1.0), double(shininess)));
+        }
         const vec3 r{-wo.x, -wo.y, wo.z};
         const T c = phong::dot(wi, r);
         if (!(c > T(0))) return T(0);
@@ -429,7 +439,7 @@ PHONG_INLINE constexpr T blinn_phong_normalization(T m, blinn_normalization kind
 /// The material's ka, emission and alpha are not used; shininess is m.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct blinn_phong_bsdf {
-    using vec3 = glm::vec<3, T, Q>;
+    using vec3 = glm::vec<3, T, Q>; ///< the direction and colour type
     vec3 kd{T(0.7)};                 ///< diffuse albedo
     vec3 ks{T(0.2)};                 ///< specular albedo at normal incidence (exact normalization)
     T shininess = T(32);             ///< m >= 0
@@ -454,6 +464,13 @@ struct blinn_phong_bsdf {
     /// H.x = H.y = 0 gives h = n (also where |H| underflows: wo, wi opposite on the horizon).
     PHONG_INLINE constexpr glm::vec<2, T> half_power(const vec3& wo, const vec3& wi) const
     {
+        if constexpr (std::is_same_v<T, float>) {
+            // float: H and n.h = H.z / |H| in double (H exact), then pow_unit's double kernel.
+            const double hx = double(wo.x) + double(wi.x), hy = double(wo.y) + double(wi.y), hz = double(wo.z) + double(wi.z);
+            const double len = phong::sqrt(hx * hx + hy * hy + hz * hz);
+            const double c = len > 0.0 ? phong::min(hz / len, 1.0) : 1.0;
+            return {float(detail::power::pow_unit_at_most_one(c, double(shininess))), float(len)};
+        }
         const vec3 H = wo + wi;
         const T xy = H.x * H.x + H.y * H.y, len = phong::sqrt(xy + H.z * H.z);
         return {detail::bsdf::lobe_power(xy > T(0) ? xy / (len * (len + H.z)) : T(0), shininess), len};
