@@ -124,6 +124,24 @@ PHONG_INLINE constexpr wide log1p(wide x)
     return log(1 + x);
 }
 
+// e^x - 1 without cancellation for small |x|: the series itself for |x| < 1/2, else exp(x) - 1.
+PHONG_INLINE constexpr wide expm1(wide x)
+{
+    if (is_nan(x) || x == inf<wide>()) return x;
+    if (x == -inf<wide>()) return -1;
+    if (x > -0.5L && x < 0.5L) {
+        wide term = x, sum = x;
+        for (int i = 2; i < 40; ++i) {
+            term *= x / static_cast<wide>(i);
+            const wide next = sum + term;
+            if (next == sum) break;
+            sum = next;
+        }
+        return sum;
+    }
+    return exp(x) - 1;
+}
+
 PHONG_INLINE constexpr wide pow(wide x, wide y)
 {
     if (y == 0 || x == 1) return 1; // IEEE: pow(x, 0) = 1 even for NaN x; pow(1, y) = 1

@@ -1,4 +1,4 @@
-// phong: scalar kernels (sqrt, exp, log, log1p, pow, fma, min/max/clamp, select).
+// phong: scalar kernels (sqrt, exp, expm1, log, log1p, pow, fma, min/max/clamp, select).
 // SPDX-License-Identifier: MIT
 //
 // Every formula in phong calls these, never std:: directly, for two reasons:
@@ -135,6 +135,12 @@ struct math_traits {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log1p(x));
         return std::log1p(x);
     }
+    /// e^x - 1, accurate for small x (std::expm1; constant evaluation: detail::ce::expm1).
+    PHONG_INLINE static constexpr V expm1(V x)
+    {
+        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::expm1(x));
+        return std::expm1(x);
+    }
     /// x^y (std::pow; constant evaluation: detail::ce::pow).
     PHONG_INLINE static constexpr V pow(V x, V y)
     {
@@ -237,6 +243,9 @@ template <class V> PHONG_INLINE constexpr V exp(V x) { return math_traits<V>::ex
 template <class V> PHONG_INLINE constexpr V log(V x) { return math_traits<V>::log(x); }
 /// ln(1 + x), accurate for small |x|. log1p(-1) = -inf, x < -1 gives NaN.
 template <class V> PHONG_INLINE constexpr V log1p(V x) { return math_traits<V>::log1p(x); }
+/// e^x - 1, accurate for small |x|. expm1(-inf) = -1, expm1(+inf) = inf. Scalars only (the SIMD
+/// math_traits have no expm1).
+template <class V> PHONG_INLINE constexpr V expm1(V x) { return math_traits<V>::expm1(x); }
 /// x^y (IEEE pow: pow(0, 0) = 1, pow(0, y > 0) = 0).
 template <class V> PHONG_INLINE constexpr V pow(V x, V y) { return math_traits<V>::pow(x, y); }
 /// x^m for a base x in [0, 1] and an exponent m >= 0: the specular and spot powers.

@@ -1,0 +1,630 @@
+// phong: BSDFs of phong's materials, for path tracers: the modified Phong of Lafortune and Willems
+// and the normalized Blinn-Phong, each beside a Lambertian lobe, with eval, pdf, sample and the
+// directional albedo. Opt-in: include <phong/bsdf.hpp> by name (phong.hpp does not include it).
+// SPDX-License-Identifier: MIT
+//
+// Conventions (as pbrt and Mitsuba): every direction is a unit vector in the local frame of the
+// shading point (local_frame: the normal is +z) and points away from the surface; wo toward the
+// viewer (where the path came from), wi the direction sampled toward the light. Reflection only,
+// one-sided: f = 0 unless wo.z > 0 and wi.z > 0 (a two-sided surface flips its frame first).
+//
+// Stability at any exponent (docs/bsdf.md has the figures): the lobe is sampled by
+//   t = log(u) / (m + 1),  1 - cos a = -expm1(t),  sin a = sqrt((1 - cos a)(1 + cos a)),
+// never by cos a = u^(1/(m+1)), sin a = sqrt(1 - cos^2 a), which loses every digit of sin a in
+// float from m ~ 1e3 (cos a rounds to 1). The lobe power cos^m a of a direction is
+// exp(m log1p(-(1 - cos a))), with 1 - cos a from a cross product (one_minus_cos), so that the pdf
+// of a sampled direction is as accurate as the direction itself.
+#pragma once
+
+#include "detail/config.hpp"
+#include "material.hpp"
+#include "math.hpp"
+#include "validate.hpp"
+#include "vector.hpp"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <type_traits>
+
+namespace phong {
+
+// ------------------------------------------------------------------------------------------------
+// The local frame
+// ------------------------------------------------------------------------------------------------
+
+/// An orthonormal frame (s, t, n), right-handed (s x t = n): the shading point's tangent, bitangent
+/// and normal. to_local(v) = (v.s, v.t, v.n), to_world(v) = v.x s + v.y t + v.z n.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct shading_frame {
+    glm::vec<3, T, Q> s{T(1), T(0), T(0)}; ///< tangent
+    glm::vec<3, T, Q> t{T(0), T(1), T(0)}; ///< bitangent
+    glm::vec<3, T, Q> n{T(0), T(0), T(1)}; ///< normal, the local +z
+    /// v in the frame's coordinates: (dot(v, s), dot(v, t), dot(v, n)).
+    PHONG_INLINE constexpr glm::vec<3, T, Q> to_local(const glm::vec<3, T, Q>& v) const
+    {
+        return {phong::dot(v, s), phong::dot(v, t), phong::dot(v, n)};
+    }
+    /// The world vector of local coordinates v: v.x s + v.y t + v.z n.
+    PHONG_INLINE constexpr glm::vec<3, T, Q> to_world(const glm::vec<3, T, Q>& v) const
+    {
+        return s * v.x + t * v.y + n * v.z;
+    }
+};
+
+/// The local frame of a unit normal n, built once per shading point: Duff, Burgess, Christensen,
+/// Hery, Kensler, Liani and Villemin, "Building an Orthonormal Basis, Revisited" (JCGT 6(1), 2017):
+///   sign = n.z < 0 ? -1 : 1,  a = -1 / (sign + n.z),  b = n.x n.y a,
+///   s = (1 + sign n.x^2 a, sign b, -sign n.x),  t = (b, sign + n.y^2 a, -n.y).
+/// No branch on a threshold, no normalization, continuous but across n.z = 0; s, t unit and
+/// orthogonal to n within a few ulps for every unit n (n = (0, 0, -1) included).
+/// Pre: n unit length (else s, t are not unit). Edge: n = 0 gives s = (1, 0, 0), t = (0, 1, 0).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr shading_frame<T, Q> local_frame(const glm::vec<3, T, Q>& n)
+{
+    const T sign = n.z < T(0) ? T(-1) : T(1);
+    const T a = T(-1) / (sign + n.z);
+    const T b = n.x * n.y * a;
+    return {{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}, n};
+}
+
+// ------------------------------------------------------------------------------------------------
+// Results and choices
+// ------------------------------------------------------------------------------------------------
+
+/// Which lobe a sample came from.
+enum class bsdf_lobe : unsigned char { diffuse, specular };
+
+/// What sample(wo, u) returns: the direction wi (local frame, unit), its pdf (solid angle, the
+/// mixture's: pdf(wo, wi)) and the weight f(wo, wi) wi.z / pdf. A direction below the horizon
+/// (or a wo at or below it) carries nothing: pdf = 0 and weight = 0; a path tracer ends the path.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct bsdf_sample {
+    glm::vec<3, T, Q> wi{T(0), T(0), T(1)}; ///< the sampled direction, toward the light
+    T pdf = T(0);                            ///< its probability density (per steradian); 0: no sample
+    glm::vec<3, T, Q> weight{T(0)};          ///< f cos / pdf: the path throughput factor
+    bsdf_lobe lobe = bsdf_lobe::diffuse;     ///< the lobe it was drawn from
+};
+
+/// Normalization of the Blinn-Phong lobe ks N (n.h)^m.
+///  - exact: N = (m+2)(m+4) / (8 pi (2^(-m/2) + m)), the directional albedo at normal incidence is
+///    exactly 1 (derivation in docs/bsdf.md); energy conserving at every angle.
+///  - approximate: N = (m+8) / (8 pi) (Akenine-Moller, Real-Time Rendering; common in games):
+///    NOT energy conserving, albedo at normal incidence 1.024 at m = 1, 1.075 at m = 10.
+///  - three_js: N = (m+2) / (8 pi) (three.js BRDF_BlinnPhong, without its Fresnel term): NOT
+///    normalized, albedo 0.34 at m = 1, about (m+2)/(m+8) of the exact one for large m.
+/// The last two exist to match other renderers' pictures; validate() does not reject them.
+enum class blinn_normalization : unsigned char { exact, approximate, three_js };
+
+namespace detail::bsdf {
+
+template <class T> inline constexpr T pi = T(3.14159265358979323846264338327950288L);
+template <class T> inline constexpr T inv_pi = T(0.318309886183790671537767526745028724L);
+template <class T> inline constexpr T inv_two_pi = T(0.159154943091895335768883763372514362L);
+template <class T> inline constexpr T ln2 = T(0.693147180559945309417232121458176568L);
+
+/// Rec. 709 luminance, Mitsuba's weights for choosing a lobe.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T luminance(const glm::vec<3, T, Q>& c)
+{
+    return T(0.212671) * c.x + T(0.715160) * c.y + T(0.072169) * c.z;
+}
+
+/// Mitsuba 0.6's lobe choice: lum(ks) / (lum(kd) + lum(ks)); 0 when both are black.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T luminance_probability(const glm::vec<3, T, Q>& kd, const glm::vec<3, T, Q>& ks)
+{
+    const T d = luminance(kd), s = luminance(ks);
+    return d + s > T(0) ? s / (d + s) : T(0);
+}
+
+/// cos a, 1 - cos a and sin a of a power-cosine lobe sample, pdf (m+1)/(2 pi) cos^m a:
+/// t = log(u) / (m+1) <= 0, 1 - cos a = -expm1(t), cos a = 1 - (1 - cos a),
+/// sin a = sqrt((1 - cos a)(2 - (1 - cos a))). Each within a few ulps of its exact value for
+/// u in (0, 1) at any m >= 0 (tests/bsdf.test.cpp: 4 ulps; measured 2 in double, 1 in float).
+/// float: evaluated in double, where expm1(t) is t + t^2/2 + t^3/6 + t^4/24 for |t| < 2^-10
+/// (truncation below 2^-53 relative) and exp(t) - 1 beyond (|exp(t) - 1| >= 2^-10: 2^-43 relative),
+/// log and exp by pow_unit's inline kernels (no libm call), then rounded once.
+/// u = 0 (and NaN) gives cos a = 0, sin a = 1: the edge of the hemisphere, as the limit u -> 0.
+template <class T> struct cone {
+    T one_minus_cos; ///< 1 - cos a, in [0, 1]
+    T cos;           ///< cos a, in [0, 1]
+    T sin;           ///< sin a, in [0, 1]
+};
+template <class T>
+PHONG_INLINE constexpr cone<T> sample_cone(T u, T m)
+{
+    if (!(u > T(0))) return {T(1), T(0), T(1)};
+    if constexpr (std::is_same_v<T, float>) {
+        // log2 and exp2 from detail/power.hpp's inline double kernels (pow_unit's): absolute
+        // error about 2^-53 in log2 u, 2^-50 relative in 2^y, far below a float ulp of the result.
+        const double t2 = power::log2_normal(double(u)) / (double(m) + 1.0), t = t2 * double(ce::ln2);
+        const double omc = t > -0x1p-10 ? -(t + t * t * (0.5 + t * (1.0 / 6 + t * (1.0 / 24)))) : 1.0 - power::exp2_tabulated(t2);
+        return {float(omc), float(1.0 - omc), float(phong::sqrt(omc * (2.0 - omc)))};
+    } else {
+        const T omc = -phong::expm1(phong::log(u) / (m + T(1)));
+        return {omc, T(1) - omc, phong::sqrt(omc * (T(2) - omc))};
+    }
+}
+
+/// (cos 2 pi u, sin 2 pi u). Run time: std::cos, std::sin. Constant evaluation: a Taylor series
+/// in long double after reducing u to a quarter turn (exact: 4u - k).
+template <class T>
+PHONG_INLINE constexpr glm::vec<2, T> cos_sin_turns(T u)
+{
+    if (std::is_constant_evaluated()) {
+        using W = ce::wide;
+        const W q = static_cast<W>(u) * 4;
+        W k = 0;
+        for (int i = 0; i < 4 && k + 1 <= q; ++i) k += 1; // u in [0, 1]: at most 4 quarters
+        const W x = (q - k) * (pi<W> / 2);
+        W c = 1, s = x, tc = 1, ts = x;
+        for (int i = 1; i < 30; ++i) {
+            tc *= -x * x / static_cast<W>((2 * i - 1) * (2 * i));
+            ts *= -x * x / static_cast<W>((2 * i) * (2 * i + 1));
+            c += tc;
+            s += ts;
+        }
+        const int quarter = static_cast<int>(k) % 4;
+        if (quarter == 0) return {T(c), T(s)};
+        if (quarter == 1) return {T(-s), T(c)};
+        if (quarter == 2) return {T(-c), T(-s)};
+        return {T(s), T(-c)};
+    }
+    const T phi = T(2) * pi<T> * u;
+    return {std::cos(phi), std::sin(phi)};
+}
+
+/// 1 - a.b for unit vectors a, b with cos_ab = a.b > 0: |(a - b) x b|^2 / (1 + a.b), the squared
+/// sine over 1 + cos. Relative error a few ulps even where a ~ b (a - b is then exact, the cross
+/// product has no cancellation, 1 + a.b >= 1); 1 - a.b itself loses all digits there.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr T one_minus_cos(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b, T cos_ab)
+{
+    const glm::vec<3, T, Q> x = phong::cross(a - b, b);
+    return phong::dot(x, x) / (T(1) + cos_ab);
+}
+
+/// log1p(-x) for x in [0, 1): log(y) - ((y - 1) + x) / y with y = 1 - x rounded (the rounding
+/// error of y corrected to first order; Goldberg, "What every computer scientist should know about
+/// floating-point arithmetic", 1991, theorem 4): within 2 ulps, one log instead of glibc's slower log1p.
+template <class W>
+PHONG_INLINE constexpr W log1p_minus(W x)
+{
+    const W y = W(1) - x;
+    if (y == W(1)) return -x;
+    return phong::log(y) - ((y - W(1)) + x) / y;
+}
+
+/// cos^m a = exp(m log1p(-x)) for x = 1 - cos a in [0, 1), clamped below 1 so that m = 0 gives 1
+/// (no 0 * -inf). Relative error about (1 + m x) ulps beyond that of x. float: (1 - x)^m in double
+/// by pow_unit's kernel (relative error 3 (m |log2 c| + m + 4) 2^-53 + m 2^-53: 3e-10 at m = 1e6).
+template <class T>
+PHONG_INLINE constexpr T lobe_power(T x, T m)
+{
+    constexpr T below_one = T(1) - std::numeric_limits<T>::epsilon() / 2;
+    if constexpr (std::is_same_v<T, float>) {
+        // c = 1 - x in double is exact to 2^-53, a relative error 2^-53 / c of c: m times that,
+        // below a float ulp for m < 2^29 c; then pow_unit's inline double kernel.
+        return float(power::pow_unit_at_most_one(1.0 - double(phong::min(x, below_one)), double(m)));
+    } else {
+        return phong::exp(m * log1p_minus(phong::min(x, below_one)));
+    }
+}
+
+/// Choose the lobe with u0 and stretch u0 back onto [0, 1) for the lobe's own use.
+template <class T>
+PHONG_INLINE constexpr bool choose_specular(T& u0, T p)
+{
+    if (u0 < p || p >= T(1)) { // p = 1: u0 = 1 (allowed) would give 0 / 0 below
+        u0 = u0 / p;
+        return true;
+    }
+    u0 = (u0 - p) / (T(1) - p);
+    return false;
+}
+
+/// The Lambertian sample (Malley): r = sqrt(u1), z = sqrt(1 - u1), phi = 2 pi u0. z > 0 for u1 < 1.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr glm::vec<3, T, Q> sample_cosine(T u0, T u1)
+{
+    const glm::vec<2, T> cs = cos_sin_turns(u0);
+    const T r = phong::sqrt(u1);
+    return {r * cs.x, r * cs.y, phong::sqrt(T(1) - u1)};
+}
+
+/// Gauss-Legendre with 8 nodes per panel of int_0^xmax e^-x g(x) dx, panels 0, 1/4, 1/2, 1, ...,
+/// 28, 40 (e^-40 < 5e-18 is the truncation), the first one in y = sqrt(x). The albedo's quadrature (docs/bsdf.md: its accuracy
+/// against a brute-force 2-D integration).
+template <class T, class G>
+inline T exp_weighted_integral(T xmax, G g)
+{
+    constexpr T node[4] = {T(0.1834346424956498049394761L), T(0.5255324099163289858177390L),
+                           T(0.7966664774136267395915539L), T(0.9602898564975362316835609L)};
+    constexpr T weight[4] = {T(0.3626837833783619829651504L), T(0.3137066458778872873379622L),
+                             T(0.2223810344533744705443560L), T(0.1012285362903762591525314L)};
+    constexpr T edge[] = {0, 0.25, 0.5, 1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 28, 40};
+    T sum = T(0);
+    for (unsigned p = 0; p + 1 < sizeof(edge) / sizeof(edge[0]); ++p) {
+        const T a = edge[p], b = phong::min(edge[p + 1], xmax);
+        if (!(b > a)) break;
+        if (p == 0) { // x = y^2 on the first panel: g may go as sqrt(x) there (wo on the horizon)
+            const T hy = phong::sqrt(b) / 2;
+            for (int k = 0; k < 4; ++k)
+                for (const T y : {hy - hy * node[k], hy + hy * node[k]})
+                    sum += hy * weight[k] * T(2) * y * std::exp(-y * y) * g(y * y);
+            continue;
+        }
+        const T mid = (a + b) / 2, half = (b - a) / 2;
+        for (int k = 0; k < 4; ++k)
+            for (const T x : {mid - half * node[k], mid + half * node[k]})
+                sum += half * weight[k] * std::exp(-x) * g(x);
+    }
+    return sum;
+}
+
+} // namespace detail::bsdf
+
+// ------------------------------------------------------------------------------------------------
+// The modified Phong
+// ------------------------------------------------------------------------------------------------
+
+/// The modified Phong BSDF (Lafortune and Willems, "Using the modified Phong reflectance model for
+/// physically based rendering", 1994; Mitsuba 0.6's `phong`):
+///   f(wo, wi) = kd / pi + ks (m+2) / (2 pi) max(0, wi.r)^m,   r = reflect(wo) = (-wo.x, -wo.y, wo.z),
+/// for wo.z > 0 and wi.z > 0, else 0. Reciprocal (wi.r(wo) = wo.r(wi)). Its specular albedo is 1
+/// at normal incidence and falls to about cos(theta_o) toward grazing, so kd + ks <= 1 conserves
+/// energy (validate).
+/// Sampling: the specular lobe with probability specular_probability (default: Mitsuba's
+/// luminance ratio lum(ks) / (lum(kd) + lum(ks))), else the cosine-weighted hemisphere. The
+/// specular lobe is drawn about r with pdf (m+1)/(2 pi) cos^m a over the hemisphere around r; its
+/// part below the surface is wasted (sample: pdf = 0, weight = 0), so pdf(wo, .) integrates over
+/// the upper hemisphere to 1 - specular_probability * (the lobe's fraction below the horizon).
+/// The material's ka, emission and alpha are not used; shininess is m.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct modified_phong_bsdf {
+    using vec3 = glm::vec<3, T, Q>; ///< the direction and colour type
+    vec3 kd{T(0.7)};                  ///< diffuse albedo
+    vec3 ks{T(0.2)};                  ///< specular albedo at normal incidence
+    T shininess = T(32);              ///< m >= 0
+    T specular_probability = T(0.5);  ///< probability of sampling the specular lobe, in [0, 1]
+
+    constexpr modified_phong_bsdf() = default;
+    /// From a material: kd, ks, shininess; the lobe chosen by luminance (Mitsuba 0.6).
+    PHONG_INLINE constexpr explicit modified_phong_bsdf(const material<T, Q>& mat)
+        : kd(mat.kd), ks(mat.ks), shininess(mat.shininess),
+          specular_probability(detail::bsdf::luminance_probability(mat.kd, mat.ks)) {}
+    /// From a material, with the lobe's probability given (e.g. from the albedo at wo).
+    PHONG_INLINE constexpr modified_phong_bsdf(const material<T, Q>& mat, T specular_probability_)
+        : kd(mat.kd), ks(mat.ks), shininess(mat.shininess), specular_probability(specular_probability_) {}
+
+    /// cos^m of the angle between wi and r = reflect(wo); 0 where it exceeds 90 degrees.
+    PHONG_INLINE constexpr T specular_power(const vec3& wo, const vec3& wi) const
+    {
+        if constexpr (std::is_same_v<T, float>) {
+            // float: one_minus_cos in double (insensitive to the length of wi, unit within float's
+            // rounding only), then (1 - x)^m by pow_unit's double kernel: its error, m 2^-53, is far
+            // below a float ulp.
+            const glm::dvec3 rd{-double(wo.x), -double(wo.y), double(wo.z)}, wd{wi};
+            const double c = phong::dot(wd, rd);
+            if (!(c > 0.0)) return T(0);
+            const double x = detail::bsdf::one_minus_cos(wd, rd, c);
+            return float(detail::power::pow_unit_at_most_one(1.0 - phong::min(x, 1.0), double(shininess)));
+        }
+        const vec3 r{-wo.x, -wo.y, wo.z};
+        const T c = phong::dot(wi, r);
+        if (!(c > T(0))) return T(0);
+        return detail::bsdf::lobe_power(detail::bsdf::one_minus_cos(wi, r, c), shininess);
+    }
+
+    /// f(wo, wi) = kd / pi + ks (m+2)/(2 pi) max(0, wi.r)^m; 0 unless wo.z > 0 and wi.z > 0.
+    /// Pre: wo, wi unit. Finite for every finite m >= 0.
+    PHONG_INLINE constexpr vec3 eval(const vec3& wo, const vec3& wi) const
+    {
+        if (!(wo.z > T(0) && wi.z > T(0))) return vec3(T(0));
+        return kd * detail::bsdf::inv_pi<T> + ks * ((shininess + T(2)) * detail::bsdf::inv_two_pi<T> * specular_power(wo, wi));
+    }
+    /// f(wo, wi) wi.z, the integrand of the rendering equation; 0 below the horizon.
+    PHONG_INLINE constexpr vec3 eval_cos(const vec3& wo, const vec3& wi) const { return eval(wo, wi) * phong::max(wi.z, T(0)); }
+
+    /// The density of sample(wo, .) at wi (per steradian):
+    ///   (1 - p) wi.z / pi + p (m+1)/(2 pi) max(0, wi.r)^m,  p = specular_probability;
+    /// 0 unless wo.z > 0 and wi.z > 0.
+    PHONG_INLINE constexpr T pdf(const vec3& wo, const vec3& wi) const
+    {
+        if (!(wo.z > T(0) && wi.z > T(0))) return T(0);
+        const T p = specular_probability;
+        return (T(1) - p) * wi.z * detail::bsdf::inv_pi<T> + p * (shininess + T(1)) * detail::bsdf::inv_two_pi<T> * specular_power(wo, wi);
+    }
+
+    /// A direction wi from u in [0, 1)^2: u.x chooses the lobe (then reused, stretched, for the
+    /// azimuth), u.y gives the polar angle about r (specular, the stable form above) or
+    /// sqrt(u.y) as the radius (diffuse). Returns wi, pdf(wo, wi) and f wi.z / pdf, both evaluated
+    /// at the returned wi (so a caller's MIS sees the same numbers as pdf() and eval()); pdf = 0 and
+    /// weight = 0 when wi falls below the horizon or wo is not above it. Never NaN or inf for
+    /// u in [0, 1]^2, any unit wo and any finite m >= 0.
+    PHONG_INLINE constexpr bsdf_sample<T, Q> sample(const vec3& wo, const glm::vec<2, T, Q>& u) const
+    {
+        bsdf_sample<T, Q> out;
+        if (!(wo.z > T(0))) return out;
+        T u0 = u.x;
+        if (detail::bsdf::choose_specular(u0, specular_probability)) {
+            out.lobe = bsdf_lobe::specular;
+            const vec3 r{-wo.x, -wo.y, wo.z};
+            const auto cone = detail::bsdf::sample_cone(u.y, shininess);
+            const glm::vec<2, T> cs = detail::bsdf::cos_sin_turns(u0);
+            const shading_frame<T, Q> fr = local_frame(r);
+            out.wi = fr.s * (cone.sin * cs.x) + fr.t * (cone.sin * cs.y) + r * cone.cos;
+            if (!(out.wi.z > T(0))) return out;
+        } else {
+            out.wi = detail::bsdf::sample_cosine<T, Q>(u0, u.y);
+        }
+        // pdf and weight at the returned direction: one lobe power for both.
+        const T pw = specular_power(wo, out.wi), p = specular_probability;
+        const T cz = out.wi.z;
+        out.pdf = (T(1) - p) * cz * detail::bsdf::inv_pi<T> + p * (shininess + T(1)) * detail::bsdf::inv_two_pi<T> * pw;
+        if (!(out.pdf > T(0))) return bsdf_sample<T, Q>{out.wi, T(0), vec3(T(0)), out.lobe};
+        const vec3 f = kd * detail::bsdf::inv_pi<T> + ks * ((shininess + T(2)) * detail::bsdf::inv_two_pi<T> * pw);
+        out.weight = f / out.pdf * cz; // f / pdf is bounded (f <= C pdf) even where both are subnormal
+        return out;
+    }
+
+    /// The specular lobe's directional albedo int f_s(wo, wi) wi.z dwi / ks:
+    ///   cos th (1 - sin^(m+2) th) + (m+2)/(m+1) sin^(m+1) th int_0^inf e^-x G(sin th e^(-x/(m+1))) dx,
+    /// th the angle of wo from the normal; the first term is the part of the lobe above the
+    /// horizon whole (closed form), the second the clipped rest, G(c) = (c cos th acos(-c cos th /
+    /// (sqrt(1 - c^2) sin th)) + sqrt(sin^2 th - c^2)) / pi being the azimuthal integral of
+    /// max(0, wi.z) at lobe angle acos c (closed form), integrated by exp_weighted_integral.
+    /// 1 at normal incidence for every m, 1/2 at m = 0 on the horizon. 0 unless wo.z > 0. Not
+    /// constexpr (std::acos). Accuracy: docs/bsdf.md.
+    inline T specular_albedo(const vec3& wo) const
+    {
+        if (!(wo.z > T(0))) return T(0);
+        const T m = shininess, co = phong::min(wo.z, T(1));
+        const T so = phong::min(phong::sqrt(wo.x * wo.x + wo.y * wo.y), T(1));
+        if (!(so > T(0))) return co;
+        const T log_so = phong::log(so);
+        T a = co * -phong::expm1((m + T(2)) * log_so); // cos th (1 - sin^(m+2) th)
+        const T tk = phong::exp((m + T(1)) * log_so);
+        if (tk > T(0)) {
+            const T k = T(1) / (m + T(1));
+            const auto g = [&](T x) {
+                const T c = so * phong::exp(-x * k), s = phong::sqrt(phong::max(T(1) - c * c, T(0)));
+                const T ratio = phong::min(c * co / (s * so), T(1));
+                return (c * co * std::acos(-ratio) + so * phong::sqrt(-phong::expm1(T(-2) * x * k))) * detail::bsdf::inv_pi<T>;
+            };
+            a += (m + T(2)) * k * tk * detail::bsdf::exp_weighted_integral(T(40), g);
+        }
+        return a;
+    }
+    /// The directional albedo int f(wo, wi) wi.z dwi = kd + ks specular_albedo(wo) (the white
+    /// furnace's reflected fraction); 0 unless wo.z > 0.
+    inline vec3 albedo(const vec3& wo) const
+    {
+        if (!(wo.z > T(0))) return vec3(T(0));
+        return kd + ks * specular_albedo(wo);
+    }
+};
+
+// ------------------------------------------------------------------------------------------------
+// The normalized Blinn-Phong
+// ------------------------------------------------------------------------------------------------
+
+/// The Blinn-Phong normalization N(m) of `kind` (see blinn_normalization). exact: written as
+/// (m+2)/(8 pi) * (m+4)/(2^(-m/2) + m), finite for every finite m >= 0 (the product (m+2)(m+4)
+/// would overflow float from m ~ 2e19). N(0) = 1/pi (exact).
+template <class T>
+PHONG_INLINE constexpr T blinn_phong_normalization(T m, blinn_normalization kind = blinn_normalization::exact)
+{
+    constexpr T inv_8pi = detail::bsdf::inv_pi<T> / T(8);
+    if (kind == blinn_normalization::approximate) return (m + T(8)) * inv_8pi;
+    if (kind == blinn_normalization::three_js) return (m + T(2)) * inv_8pi;
+    return (m + T(2)) * inv_8pi * ((m + T(4)) / (phong::exp(-m / T(2) * detail::bsdf::ln2<T>) + m));
+}
+
+/// The normalized Blinn-Phong BSDF with a Lambertian lobe:
+///   f(wo, wi) = kd / pi + ks N(m) (n.h)^m,   h = (wo + wi) / |wo + wi|,
+/// for wo.z > 0 and wi.z > 0, else 0; N(m) per `normalization` (exact by default: albedo 1 at
+/// normal incidence, below 1 elsewhere, so kd + ks <= 1 conserves energy). Reciprocal (h is
+/// symmetric in wo, wi).
+/// Sampling (pbrt-v2's Blinn): the specular lobe with probability specular_probability (default
+/// lum(ks) / (lum(kd) + lum(ks))), h drawn with pdf (m+1)/(2 pi) (n.h)^m over the upper hemisphere
+/// (stable form), wi = reflect(-wo, h), pdf(wi) = (m+1)/(2 pi) (n.h)^m / (4 wo.h); else the
+/// cosine-weighted hemisphere. A wi below the horizon (or wo.h <= 0) is wasted: pdf = 0,
+/// weight = 0; pdf(wo, .) integrates over the upper hemisphere to 1 - p (the wasted part), at
+/// normal incidence 1 - p 2^(-(m+1)/2).
+/// The material's ka, emission and alpha are not used; shininess is m.
+template <class T, glm::qualifier Q = glm::defaultp>
+struct blinn_phong_bsdf {
+    using vec3 = glm::vec<3, T, Q>; ///< the direction and colour type
+    vec3 kd{T(0.7)};                 ///< diffuse albedo
+    vec3 ks{T(0.2)};                 ///< specular albedo at normal incidence (exact normalization)
+    T shininess = T(32);             ///< m >= 0
+    T specular_probability = T(0.5); ///< probability of sampling the specular lobe, in [0, 1]
+    blinn_normalization normalization = blinn_normalization::exact; ///< N(m)'s form
+    T norm = blinn_phong_normalization(T(32));                      ///< N(m), set by the constructors
+
+    constexpr blinn_phong_bsdf() = default;
+    /// From a material: kd, ks, shininess; the lobe chosen by luminance; N(m) of `kind`.
+    PHONG_INLINE constexpr explicit blinn_phong_bsdf(const material<T, Q>& mat, blinn_normalization kind = blinn_normalization::exact)
+        : kd(mat.kd), ks(mat.ks), shininess(mat.shininess),
+          specular_probability(detail::bsdf::luminance_probability(mat.kd, mat.ks)), normalization(kind),
+          norm(blinn_phong_normalization(mat.shininess, kind)) {}
+    /// From a material, with the lobe's probability given.
+    PHONG_INLINE constexpr blinn_phong_bsdf(const material<T, Q>& mat, T specular_probability_,
+                                            blinn_normalization kind = blinn_normalization::exact)
+        : kd(mat.kd), ks(mat.ks), shininess(mat.shininess), specular_probability(specular_probability_),
+          normalization(kind), norm(blinn_phong_normalization(mat.shininess, kind)) {}
+
+    /// (n.h)^m and |wo + wi| (= 2 wo.h for unit wo, wi), for wo.z > 0 and wi.z > 0.
+    /// 1 - n.h = (H.x^2 + H.y^2) / (|H| (|H| + H.z)), H = wo + wi: no cancellation near h = n.
+    /// H.x = H.y = 0 gives h = n (also where |H| underflows: wo, wi opposite on the horizon).
+    PHONG_INLINE constexpr glm::vec<2, T> half_power(const vec3& wo, const vec3& wi) const
+    {
+        if constexpr (std::is_same_v<T, float>) {
+            // float: H and n.h = H.z / |H| in double (H exact), then pow_unit's double kernel.
+            const double hx = double(wo.x) + double(wi.x), hy = double(wo.y) + double(wi.y), hz = double(wo.z) + double(wi.z);
+            const double len = phong::sqrt(hx * hx + hy * hy + hz * hz);
+            const double c = len > 0.0 ? phong::min(hz / len, 1.0) : 1.0;
+            return {float(detail::power::pow_unit_at_most_one(c, double(shininess))), float(len)};
+        }
+        const vec3 H = wo + wi;
+        const T xy = H.x * H.x + H.y * H.y, len = phong::sqrt(xy + H.z * H.z);
+        return {detail::bsdf::lobe_power(xy > T(0) ? xy / (len * (len + H.z)) : T(0), shininess), len};
+    }
+    /// The specular lobe's density (m+1)/(2 pi) (n.h)^m / (4 wo.h), 4 wo.h = 2 |H|; it diverges as
+    /// wo.h -> 0 (wo and wi opposite, both on the horizon): clamped to the largest finite T.
+    PHONG_INLINE constexpr T specular_pdf(const glm::vec<2, T>& hp) const
+    {
+        const T d = (shininess + T(1)) * detail::bsdf::inv_two_pi<T> * hp.x;
+        return (hp.y >= T(0.5) || d < T(2) * hp.y * largest<T>()) ? d / (T(2) * hp.y) : largest<T>();
+    }
+
+    /// f(wo, wi) = kd / pi + ks N(m) (n.h)^m; 0 unless wo.z > 0 and wi.z > 0. Pre: wo, wi unit.
+    PHONG_INLINE constexpr vec3 eval(const vec3& wo, const vec3& wi) const
+    {
+        if (!(wo.z > T(0) && wi.z > T(0))) return vec3(T(0));
+        return kd * detail::bsdf::inv_pi<T> + ks * (norm * half_power(wo, wi).x);
+    }
+    /// f(wo, wi) wi.z; 0 below the horizon.
+    PHONG_INLINE constexpr vec3 eval_cos(const vec3& wo, const vec3& wi) const { return eval(wo, wi) * phong::max(wi.z, T(0)); }
+
+    /// The density of sample(wo, .) at wi:
+    ///   (1 - p) wi.z / pi + p (m+1)/(2 pi) (n.h)^m / (4 wo.h),  wo.h = |wo + wi| / 2;
+    /// 0 unless wo.z > 0 and wi.z > 0.
+    PHONG_INLINE constexpr T pdf(const vec3& wo, const vec3& wi) const
+    {
+        if (!(wo.z > T(0) && wi.z > T(0))) return T(0);
+        const glm::vec<2, T> hp = half_power(wo, wi);
+        const T p = specular_probability;
+        return (T(1) - p) * wi.z * detail::bsdf::inv_pi<T> + p * specular_pdf(hp);
+    }
+
+    /// As modified_phong_bsdf::sample, the specular lobe through h: cos th_h from the stable
+    /// form, wi = 2 (wo.h) h - wo. pdf and weight evaluated at the returned wi.
+    PHONG_INLINE constexpr bsdf_sample<T, Q> sample(const vec3& wo, const glm::vec<2, T, Q>& u) const
+    {
+        bsdf_sample<T, Q> out;
+        if (!(wo.z > T(0))) return out;
+        T u0 = u.x;
+        if (detail::bsdf::choose_specular(u0, specular_probability)) {
+            out.lobe = bsdf_lobe::specular;
+            const auto cone = detail::bsdf::sample_cone(u.y, shininess);
+            const glm::vec<2, T> cs = detail::bsdf::cos_sin_turns(u0);
+            const vec3 h{cone.sin * cs.x, cone.sin * cs.y, cone.cos};
+            const T oh = phong::dot(wo, h);
+            out.wi = h * (T(2) * oh) - wo;
+            if (!(oh > T(0) && out.wi.z > T(0))) return out;
+        } else {
+            out.wi = detail::bsdf::sample_cosine<T, Q>(u0, u.y);
+        }
+        const glm::vec<2, T> hp = half_power(wo, out.wi);
+        const T p = specular_probability, cz = out.wi.z;
+        out.pdf = (T(1) - p) * cz * detail::bsdf::inv_pi<T> + p * specular_pdf(hp);
+        if (!(out.pdf > T(0))) return bsdf_sample<T, Q>{out.wi, T(0), vec3(T(0)), out.lobe};
+        const vec3 f = kd * detail::bsdf::inv_pi<T> + ks * (norm * hp.x);
+        out.weight = f / out.pdf * cz; // f / pdf is bounded (f <= C pdf) even where both are subnormal
+        return out;
+    }
+
+    /// The specular lobe's directional albedo int N (n.h)^m wi.z dwi (ks = 1), over h:
+    ///   N 2 pi / (m+1) int_0^1 H(c) dt,  c = cos th_h = t^(1/(m+1)),
+    /// H(c) = (1/2 pi) int dphi_h 4 q max(0, 2 q c - cos th) (q = wo.h = c cos th + sin th_h sin th
+    /// cos phi_h), the azimuthal integral in closed form (an arc of polynomials in cos phi_h), the
+    /// t integral by exp_weighted_integral split at its kinks th_h = (pi/2 -+ th)/2. 1 at normal
+    /// incidence with the exact N. 0 unless wo.z > 0. Not constexpr (std::acos). Accuracy:
+    /// docs/bsdf.md.
+    inline T specular_albedo(const vec3& wo) const
+    {
+        if (!(wo.z > T(0))) return T(0);
+        const T m = shininess, co = phong::min(wo.z, T(1));
+        const T so = phong::min(phong::sqrt(wo.x * wo.x + wo.y * wo.y), T(1));
+        const T th = std::atan2(so, co), quarter = detail::bsdf::pi<T> / 4;
+        const T c1 = std::cos(quarter - th / 2), c2 = std::cos(quarter + th / 2); // c1 >= c2
+        const T k = T(1) / (m + T(1));
+        const auto H = [&](T c) {
+            const T s = phong::sqrt(phong::max(T(1) - c * c, T(0)));
+            const T A = c * co, B = s * so, q0 = co / (T(2) * c);
+            T phi1;
+            if (!(B > T(0))) phi1 = A > q0 ? detail::bsdf::pi<T> : T(0);
+            else {
+                const T kappa = (q0 - A) / B;
+                phi1 = kappa <= T(-1) ? detail::bsdf::pi<T> : (kappa >= T(1) ? T(0) : std::acos(kappa));
+            }
+            if (!(phi1 > T(0))) return T(0);
+            const T sn = std::sin(phi1), s2 = std::sin(T(2) * phi1);
+            const T I1 = T(2) * (A * phi1 + B * sn);
+            const T I2 = T(2) * (A * A * phi1 + T(2) * A * B * sn + B * B * (phi1 / T(2) + s2 / T(4)));
+            return phong::max(T(8) * c * I2 - T(4) * co * I1, T(0)) * detail::bsdf::inv_two_pi<T>;
+        };
+        // int_{c_lo^(m+1)}^{c_hi^(m+1)} H dt with t = c_hi^(m+1) e^-x.
+        const auto piece = [&](T c_hi, T c_lo) {
+            if (!(c_hi > T(0) && c_hi > c_lo)) return T(0);
+            const T log_hi = phong::log(c_hi);
+            const T t_hi = phong::exp((m + T(1)) * log_hi);
+            if (!(t_hi > T(0))) return T(0);
+            const T xmax = c_lo > T(0) ? (m + T(1)) * (log_hi - phong::log(c_lo)) : T(40);
+            return t_hi * detail::bsdf::exp_weighted_integral(phong::min(xmax, T(40)),
+                                                              [&](T x) { return H(c_hi * phong::exp(-x * k)); });
+        };
+        return norm * T(2) * detail::bsdf::pi<T> * k * (piece(T(1), c1) + piece(c1, c2));
+    }
+    /// kd + ks specular_albedo(wo); 0 unless wo.z > 0.
+    inline vec3 albedo(const vec3& wo) const
+    {
+        if (!(wo.z > T(0))) return vec3(T(0));
+        return kd + ks * specular_albedo(wo);
+    }
+};
+
+// ------------------------------------------------------------------------------------------------
+// validate
+// ------------------------------------------------------------------------------------------------
+
+namespace detail::bsdf {
+template <class B>
+PHONG_INLINE constexpr validation validate_common(const B& b)
+{
+    using T = decltype(b.shininess);
+    if (!finite_non_negative(b.kd)) return {"bsdf.kd (material.kd): negative, NaN or inf"};
+    if (!finite_non_negative(b.ks)) return {"bsdf.ks (material.ks): negative, NaN or inf"};
+    if (!finite_non_negative(b.shininess)) return {"bsdf.shininess (material.shininess): must be finite and >= 0"};
+    for (int c = 0; c < 3; ++c)
+        if (b.kd[c] + b.ks[c] > T(1))
+            return {"material.kd + material.ks: above 1 in a channel, the BSDF would reflect more light than it receives"};
+    const T p = b.specular_probability;
+    if (!(p >= T(0) && p <= T(1))) return {"bsdf.specular_probability: must be in [0, 1]"};
+    const bool has_d = b.kd[0] > T(0) || b.kd[1] > T(0) || b.kd[2] > T(0);
+    const bool has_s = b.ks[0] > T(0) || b.ks[1] > T(0) || b.ks[2] > T(0);
+    if (has_s && !(p > T(0))) return {"bsdf.specular_probability: 0 with ks > 0, the specular lobe is never sampled (biased)"};
+    if (has_d && !(p < T(1))) return {"bsdf.specular_probability: 1 with kd > 0, the diffuse lobe is never sampled (biased)"};
+    return {};
+}
+} // namespace detail::bsdf
+
+/// Checks a modified Phong BSDF: kd, ks finite and >= 0, shininess finite and >= 0,
+/// kd + ks <= 1 in every channel (energy conservation; the message names material.kd +
+/// material.ks), specular_probability in [0, 1], above 0 when ks > 0 and below 1 when kd > 0
+/// (else a lobe is never sampled and the estimate is biased).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr validation validate(const modified_phong_bsdf<T, Q>& b)
+{
+    return detail::bsdf::validate_common(b);
+}
+
+/// Checks a Blinn-Phong BSDF as validate(modified_phong_bsdf); also that norm is N(shininess) of
+/// its normalization (a shininess changed after construction is caught). The approximate and
+/// three_js normalizations are accepted (chosen on purpose; documented as not energy conserving).
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr validation validate(const blinn_phong_bsdf<T, Q>& b)
+{
+    if (const validation v = detail::bsdf::validate_common(b); !v) return v;
+    if (!(b.norm == blinn_phong_normalization(b.shininess, b.normalization)))
+        return {"bsdf.norm: not N(shininess) of its normalization (shininess changed after construction?)"};
+    return {};
+}
+
+} // namespace phong
