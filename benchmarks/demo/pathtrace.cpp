@@ -103,15 +103,15 @@ glm::vec3 radiance(const scene& sc, const std::vector<any_bsdf>& bsdfs, ray r, r
     for (int depth = 0; depth < 16; ++depth) {
         const hit_record h = trace(sc, r, 1e-4f);
         if (h.object < 0) return L + throughput * sky;
-        const glm::vec3 d = phong::normalize(r.direction);
-        const glm::vec3 n = phong::dot(h.normal, d) > 0.0f ? -h.normal : h.normal; // toward the ray
+        const glm::vec3 d = phong::detail::normalize(r.direction);
+        const glm::vec3 n = phong::detail::dot(h.normal, d) > 0.0f ? -h.normal : h.normal; // toward the ray
         const phong::shading_frame<float> frame = phong::local_frame(n);
         const glm::vec3 wo = frame.to_local(-d);
         const any_bsdf& bsdf = bsdfs[std::size_t(h.object)];
         const glm::vec3 P = h.position + n * 1e-4f;
         for (const auto& light : sc.lights) {
             const glm::vec3 toward = glm::vec3(light.position) - light.position.w * P;
-            const float dist = phong::length(toward);
+            const float dist = phong::detail::length(toward);
             const glm::vec3 wi_world = toward / dist;
             const glm::vec3 wi = frame.to_local(wi_world);
             if (!(wi.z > 0.0f)) continue;
@@ -224,7 +224,7 @@ int main(int argc, char** argv)
                 const ray r = primary_ray(fcam, inv, x, y);
                 const hit_record h = trace(fsc, r);
                 if (h.object < 0) continue;
-                const glm::vec3 d = phong::normalize(r.direction);
+                const glm::vec3 d = phong::detail::normalize(r.direction);
                 const phong::shading_frame<float> frame = phong::local_frame(h.normal);
                 const double expected = double(b[0].albedo(frame.to_local(-d)).x);
                 const double v = double(img.at(x, y).x), se = std::sqrt(double(var.at(x, y).x));

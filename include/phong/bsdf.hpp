@@ -16,11 +16,11 @@
 // of a sampled direction is as accurate as the direction itself.
 #pragma once
 
-#include "detail/config.hpp"
-#include "material.hpp"
-#include "math.hpp"
-#include "validate.hpp"
-#include "vector.hpp"
+#include "core/config.hpp"
+#include "inputs/material.hpp"
+#include "core/math.hpp"
+#include "inputs/validate.hpp"
+#include "core/vector.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -46,7 +46,7 @@ struct shading_frame {
     /// v in the frame's coordinates: (dot(v, s), dot(v, t), dot(v, n)).
     PHONG_INLINE constexpr glm::vec<3, T, Q> to_local(const glm::vec<3, T, Q>& v) const
     {
-        return {phong::dot(v, s), phong::dot(v, t), phong::dot(v, n)};
+        return {detail::dot(v, s), detail::dot(v, t), detail::dot(v, n)};
     }
     /// The world vector of local coordinates v: v.x s + v.y t + v.z n.
     PHONG_INLINE constexpr glm::vec<3, T, Q> to_world(const glm::vec<3, T, Q>& v) const
@@ -143,10 +143,10 @@ PHONG_INLINE constexpr cone<T> sample_cone(T u, T m)
         // error about 2^-53 in log2 u, 2^-50 relative in 2^y, far below a float ulp of the result.
         const double t2 = power::log2_normal(double(u)) / (double(m) + 1.0), t = t2 * double(ce::ln2);
         const double omc = t > -0x1p-10 ? -(t + t * t * (0.5 + t * (1.0 / 6 + t * (1.0 / 24)))) : 1.0 - power::exp2_tabulated(t2);
-        return {float(omc), float(1.0 - omc), float(phong::sqrt(omc * (2.0 - omc)))};
+        return {float(omc), float(1.0 - omc), float(detail::sqrt(omc * (2.0 - omc)))};
     } else {
-        const T omc = -phong::expm1(phong::log(u) / (m + T(1)));
-        return {omc, T(1) - omc, phong::sqrt(omc * (T(2) - omc))};
+        const T omc = -detail::expm1(detail::log(u) / (m + T(1)));
+        return {omc, T(1) - omc, detail::sqrt(omc * (T(2) - omc))};
     }
 }
 
@@ -184,8 +184,8 @@ PHONG_INLINE constexpr glm::vec<2, T> cos_sin_turns(T u)
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T one_minus_cos(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b, T cos_ab)
 {
-    const glm::vec<3, T, Q> x = phong::cross(a - b, b);
-    return phong::dot(x, x) / (T(1) + cos_ab);
+    const glm::vec<3, T, Q> x = detail::cross(a - b, b);
+    return detail::dot(x, x) / (T(1) + cos_ab);
 }
 
 /// log1p(-x) for x in [0, 1): log(y) - ((y - 1) + x) / y with y = 1 - x rounded (the rounding
@@ -196,7 +196,7 @@ PHONG_INLINE constexpr W log1p_minus(W x)
 {
     const W y = W(1) - x;
     if (y == W(1)) return -x;
-    return phong::log(y) - ((y - W(1)) + x) / y;
+    return detail::log(y) - ((y - W(1)) + x) / y;
 }
 
 /// cos^m a = exp(m log1p(-x)) for x = 1 - cos a in [0, 1), clamped below 1 so that m = 0 gives 1
@@ -209,9 +209,9 @@ PHONG_INLINE constexpr T lobe_power(T x, T m)
     if constexpr (std::is_same_v<T, float>) {
         // c = 1 - x in double is exact to 2^-53, a relative error 2^-53 / c of c: m times that,
         // below a float ulp for m < 2^29 c; then pow_unit's inline double kernel.
-        return float(power::pow_unit_at_most_one(1.0 - double(phong::min(x, below_one)), double(m)));
+        return float(power::pow_unit_at_most_one(1.0 - double(detail::min(x, below_one)), double(m)));
     } else {
-        return phong::exp(m * log1p_minus(phong::min(x, below_one)));
+        return detail::exp(m * log1p_minus(detail::min(x, below_one)));
     }
 }
 
@@ -232,8 +232,8 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<3, T, Q> sample_cosine(T u0, T u1)
 {
     const glm::vec<2, T> cs = cos_sin_turns(u0);
-    const T r = phong::sqrt(u1);
-    return {r * cs.x, r * cs.y, phong::sqrt(T(1) - u1)};
+    const T r = detail::sqrt(u1);
+    return {r * cs.x, r * cs.y, detail::sqrt(T(1) - u1)};
 }
 
 /// Gauss-Legendre with 8 nodes per panel of int_0^xmax e^-x g(x) dx, panels 0, 1/4, 1/2, 1, ...,
@@ -249,10 +249,10 @@ inline T exp_weighted_integral(T xmax, G g)
     constexpr T edge[] = {0, 0.25, 0.5, 1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 28, 40};
     T sum = T(0);
     for (unsigned p = 0; p + 1 < sizeof(edge) / sizeof(edge[0]); ++p) {
-        const T a = edge[p], b = phong::min(edge[p + 1], xmax);
+        const T a = edge[p], b = detail::min(edge[p + 1], xmax);
         if (!(b > a)) break;
         if (p == 0) { // x = y^2 on the first panel: g may go as sqrt(x) there (wo on the horizon)
-            const T hy = phong::sqrt(b) / 2;
+            const T hy = detail::sqrt(b) / 2;
             for (int k = 0; k < 4; ++k)
                 for (const T y : {hy - hy * node[k], hy + hy * node[k]})
                     sum += hy * weight[k] * T(2) * y * std::exp(-y * y) * g(y * y);
@@ -309,13 +309,13 @@ struct modified_phong_bsdf {
             // rounding only), then (1 - x)^m by pow_unit's double kernel: its error, m 2^-53, is far
             // below a float ulp.
             const glm::dvec3 rd{-double(wo.x), -double(wo.y), double(wo.z)}, wd{wi};
-            const double c = phong::dot(wd, rd);
+            const double c = detail::dot(wd, rd);
             if (!(c > 0.0)) return T(0);
             const double x = detail::bsdf::one_minus_cos(wd, rd, c);
-            return float(detail::power::pow_unit_at_most_one(1.0 - phong::min(x, 1.0), double(shininess)));
+            return float(detail::power::pow_unit_at_most_one(1.0 - detail::min(x, 1.0), double(shininess)));
         }
         const vec3 r{-wo.x, -wo.y, wo.z};
-        const T c = phong::dot(wi, r);
+        const T c = detail::dot(wi, r);
         if (!(c > T(0))) return T(0);
         return detail::bsdf::lobe_power(detail::bsdf::one_minus_cos(wi, r, c), shininess);
     }
@@ -328,7 +328,7 @@ struct modified_phong_bsdf {
         return kd * detail::bsdf::inv_pi<T> + ks * ((shininess + T(2)) * detail::bsdf::inv_two_pi<T> * specular_power(wo, wi));
     }
     /// f(wo, wi) wi.z, the integrand of the rendering equation; 0 below the horizon.
-    PHONG_INLINE constexpr vec3 eval_cos(const vec3& wo, const vec3& wi) const { return eval(wo, wi) * phong::max(wi.z, T(0)); }
+    PHONG_INLINE constexpr vec3 eval_cos(const vec3& wo, const vec3& wi) const { return eval(wo, wi) * detail::max(wi.z, T(0)); }
 
     /// The density of sample(wo, .) at wi (per steradian):
     ///   (1 - p) wi.z / pi + p (m+1)/(2 pi) max(0, wi.r)^m,  p = specular_probability;
@@ -383,18 +383,18 @@ struct modified_phong_bsdf {
     inline T specular_albedo(const vec3& wo) const
     {
         if (!(wo.z > T(0))) return T(0);
-        const T m = shininess, co = phong::min(wo.z, T(1));
-        const T so = phong::min(phong::sqrt(wo.x * wo.x + wo.y * wo.y), T(1));
+        const T m = shininess, co = detail::min(wo.z, T(1));
+        const T so = detail::min(detail::sqrt(wo.x * wo.x + wo.y * wo.y), T(1));
         if (!(so > T(0))) return co;
-        const T log_so = phong::log(so);
-        T a = co * -phong::expm1((m + T(2)) * log_so); // cos th (1 - sin^(m+2) th)
-        const T tk = phong::exp((m + T(1)) * log_so);
+        const T log_so = detail::log(so);
+        T a = co * -detail::expm1((m + T(2)) * log_so); // cos th (1 - sin^(m+2) th)
+        const T tk = detail::exp((m + T(1)) * log_so);
         if (tk > T(0)) {
             const T k = T(1) / (m + T(1));
             const auto g = [&](T x) {
-                const T c = so * phong::exp(-x * k), s = phong::sqrt(phong::max(T(1) - c * c, T(0)));
-                const T ratio = phong::min(c * co / (s * so), T(1));
-                return (c * co * std::acos(-ratio) + so * phong::sqrt(-phong::expm1(T(-2) * x * k))) * detail::bsdf::inv_pi<T>;
+                const T c = so * detail::exp(-x * k), s = detail::sqrt(detail::max(T(1) - c * c, T(0)));
+                const T ratio = detail::min(c * co / (s * so), T(1));
+                return (c * co * std::acos(-ratio) + so * detail::sqrt(-detail::expm1(T(-2) * x * k))) * detail::bsdf::inv_pi<T>;
             };
             a += (m + T(2)) * k * tk * detail::bsdf::exp_weighted_integral(T(40), g);
         }
@@ -422,7 +422,7 @@ PHONG_INLINE constexpr T blinn_phong_normalization(T m, blinn_normalization kind
     constexpr T inv_8pi = detail::bsdf::inv_pi<T> / T(8);
     if (kind == blinn_normalization::approximate) return (m + T(8)) * inv_8pi;
     if (kind == blinn_normalization::three_js) return (m + T(2)) * inv_8pi;
-    return (m + T(2)) * inv_8pi * ((m + T(4)) / (phong::exp(-m / T(2) * detail::bsdf::ln2<T>) + m));
+    return (m + T(2)) * inv_8pi * ((m + T(4)) / (detail::exp(-m / T(2) * detail::bsdf::ln2<T>) + m));
 }
 
 /// The normalized Blinn-Phong BSDF with a Lambertian lobe:
@@ -467,12 +467,12 @@ struct blinn_phong_bsdf {
         if constexpr (std::is_same_v<T, float>) {
             // float: H and n.h = H.z / |H| in double (H exact), then pow_unit's double kernel.
             const double hx = double(wo.x) + double(wi.x), hy = double(wo.y) + double(wi.y), hz = double(wo.z) + double(wi.z);
-            const double len = phong::sqrt(hx * hx + hy * hy + hz * hz);
-            const double c = len > 0.0 ? phong::min(hz / len, 1.0) : 1.0;
+            const double len = detail::sqrt(hx * hx + hy * hy + hz * hz);
+            const double c = len > 0.0 ? detail::min(hz / len, 1.0) : 1.0;
             return {float(detail::power::pow_unit_at_most_one(c, double(shininess))), float(len)};
         }
         const vec3 H = wo + wi;
-        const T xy = H.x * H.x + H.y * H.y, len = phong::sqrt(xy + H.z * H.z);
+        const T xy = H.x * H.x + H.y * H.y, len = detail::sqrt(xy + H.z * H.z);
         return {detail::bsdf::lobe_power(xy > T(0) ? xy / (len * (len + H.z)) : T(0), shininess), len};
     }
     /// The specular lobe's density (m+1)/(2 pi) (n.h)^m / (4 wo.h), 4 wo.h = 2 |H|; it diverges as
@@ -480,7 +480,7 @@ struct blinn_phong_bsdf {
     PHONG_INLINE constexpr T specular_pdf(const glm::vec<2, T>& hp) const
     {
         const T d = (shininess + T(1)) * detail::bsdf::inv_two_pi<T> * hp.x;
-        return (hp.y >= T(0.5) || d < T(2) * hp.y * largest<T>()) ? d / (T(2) * hp.y) : largest<T>();
+        return (hp.y >= T(0.5) || d < T(2) * hp.y * detail::largest<T>()) ? d / (T(2) * hp.y) : detail::largest<T>();
     }
 
     /// f(wo, wi) = kd / pi + ks N(m) (n.h)^m; 0 unless wo.z > 0 and wi.z > 0. Pre: wo, wi unit.
@@ -490,7 +490,7 @@ struct blinn_phong_bsdf {
         return kd * detail::bsdf::inv_pi<T> + ks * (norm * half_power(wo, wi).x);
     }
     /// f(wo, wi) wi.z; 0 below the horizon.
-    PHONG_INLINE constexpr vec3 eval_cos(const vec3& wo, const vec3& wi) const { return eval(wo, wi) * phong::max(wi.z, T(0)); }
+    PHONG_INLINE constexpr vec3 eval_cos(const vec3& wo, const vec3& wi) const { return eval(wo, wi) * detail::max(wi.z, T(0)); }
 
     /// The density of sample(wo, .) at wi:
     ///   (1 - p) wi.z / pi + p (m+1)/(2 pi) (n.h)^m / (4 wo.h),  wo.h = |wo + wi| / 2;
@@ -515,7 +515,7 @@ struct blinn_phong_bsdf {
             const auto cone = detail::bsdf::sample_cone(u.y, shininess);
             const glm::vec<2, T> cs = detail::bsdf::cos_sin_turns(u0);
             const vec3 h{cone.sin * cs.x, cone.sin * cs.y, cone.cos};
-            const T oh = phong::dot(wo, h);
+            const T oh = detail::dot(wo, h);
             out.wi = h * (T(2) * oh) - wo;
             if (!(oh > T(0) && out.wi.z > T(0))) return out;
         } else {
@@ -540,13 +540,13 @@ struct blinn_phong_bsdf {
     inline T specular_albedo(const vec3& wo) const
     {
         if (!(wo.z > T(0))) return T(0);
-        const T m = shininess, co = phong::min(wo.z, T(1));
-        const T so = phong::min(phong::sqrt(wo.x * wo.x + wo.y * wo.y), T(1));
+        const T m = shininess, co = detail::min(wo.z, T(1));
+        const T so = detail::min(detail::sqrt(wo.x * wo.x + wo.y * wo.y), T(1));
         const T th = std::atan2(so, co), quarter = detail::bsdf::pi<T> / 4;
         const T c1 = std::cos(quarter - th / 2), c2 = std::cos(quarter + th / 2); // c1 >= c2
         const T k = T(1) / (m + T(1));
         const auto H = [&](T c) {
-            const T s = phong::sqrt(phong::max(T(1) - c * c, T(0)));
+            const T s = detail::sqrt(detail::max(T(1) - c * c, T(0)));
             const T A = c * co, B = s * so, q0 = co / (T(2) * c);
             T phi1;
             if (!(B > T(0))) phi1 = A > q0 ? detail::bsdf::pi<T> : T(0);
@@ -558,17 +558,17 @@ struct blinn_phong_bsdf {
             const T sn = std::sin(phi1), s2 = std::sin(T(2) * phi1);
             const T I1 = T(2) * (A * phi1 + B * sn);
             const T I2 = T(2) * (A * A * phi1 + T(2) * A * B * sn + B * B * (phi1 / T(2) + s2 / T(4)));
-            return phong::max(T(8) * c * I2 - T(4) * co * I1, T(0)) * detail::bsdf::inv_two_pi<T>;
+            return detail::max(T(8) * c * I2 - T(4) * co * I1, T(0)) * detail::bsdf::inv_two_pi<T>;
         };
         // int_{c_lo^(m+1)}^{c_hi^(m+1)} H dt with t = c_hi^(m+1) e^-x.
         const auto piece = [&](T c_hi, T c_lo) {
             if (!(c_hi > T(0) && c_hi > c_lo)) return T(0);
-            const T log_hi = phong::log(c_hi);
-            const T t_hi = phong::exp((m + T(1)) * log_hi);
+            const T log_hi = detail::log(c_hi);
+            const T t_hi = detail::exp((m + T(1)) * log_hi);
             if (!(t_hi > T(0))) return T(0);
-            const T xmax = c_lo > T(0) ? (m + T(1)) * (log_hi - phong::log(c_lo)) : T(40);
-            return t_hi * detail::bsdf::exp_weighted_integral(phong::min(xmax, T(40)),
-                                                              [&](T x) { return H(c_hi * phong::exp(-x * k)); });
+            const T xmax = c_lo > T(0) ? (m + T(1)) * (log_hi - detail::log(c_lo)) : T(40);
+            return t_hi * detail::bsdf::exp_weighted_integral(detail::min(xmax, T(40)),
+                                                              [&](T x) { return H(c_hi * detail::exp(-x * k)); });
         };
         return norm * T(2) * detail::bsdf::pi<T> * k * (piece(T(1), c1) + piece(c1, c2));
     }
