@@ -190,7 +190,7 @@ PHONG_INLINE constexpr T one_minus_cos(const glm::vec<3, T, Q>& a, const glm::ve
 
 /// log1p(-x) for x in [0, 1): log(y) - ((y - 1) + x) / y with y = 1 - x rounded (the rounding
 /// error of y corrected to first order; Goldberg, "What every computer scientist should know about
-/// floating-point arithmetic", 1991, theorem 4): within 2 ulps, one log instead of glibc's slower log1p.
+/// floating-point arithmetic", 1991, theorem 4): within 2 ulps, by one log.
 template <class W>
 PHONG_INLINE constexpr W log1p_minus(W x)
 {
