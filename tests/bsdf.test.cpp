@@ -1,8 +1,7 @@
 // The BSDFs (phong/bsdf.hpp): local frame, normalization, albedo, white furnace, pdf integral,
 // sample/pdf/eval consistency, reciprocity, the sampling's accuracy in ulps at any exponent, no
 // NaN or inf at the edges, validate. The chi-square test of sample against pdf is
-// tests/bsdf_chi2.cpp (its own executable: ctest runs a short pass, .ci/steps/38-bsdf.sh the
-// full one). Expected values come from integrals written here (long double, no phong code), the
+// tests/bsdf_chi2.cpp (its own executable, run built -O2 by .ci/steps/38-bsdf.sh). Expected values come from integrals written here (long double, no phong code), the
 // closed forms derived in docs/bsdf.md, the published figures, or Monte Carlo.
 #include <phong/bsdf.hpp>
 
