@@ -23,7 +23,7 @@ for entry in "${mutants[@]}"; do
   g++ -std=c++20 -O2 -DNDEBUG -I"$out/include" -I"$root/tests" "$root/tests/bsdf_chi2.cpp" -pthread -o "$out/chi2" || exit 2
   g++ -std=c++20 -O2 -DNDEBUG -I"$out/include" "$root/benchmarks/demo/pathtrace.cpp" -o "$out/pt" || exit 2
   unit=$("$out/unit" -ni -nv 2>&1 | grep -E '^\[doctest\] test cases' | sed 's/.*| *\([0-9]*\) failed.*/\1/')
-  failed_cases=$("$out/unit" -ni 2>&1 | grep -E '^TEST CASE:' | sed 's/^TEST CASE: *//' | sort -u | tr '\n' ';')
+  failed_cases=$("$out/unit" -ni 2>&1 | awk '/^TEST CASE:/ { sub(/^TEST CASE: */, ""); name = $0 } /ERROR:/ { print name }' | sort -u | tr '\n' ';')
   chi=$("$out/chi2" 250000 20 | tail -1 | sed 's/.*; \([0-9]*\) of.*/\1/')
   if "$out/pt" "$out/images" --spp 8 --size 160x120 >"$out/pt.txt" 2>&1; then furnace=pass; else furnace=FAIL; fi
   echo "$name: unit test cases failed: $unit ($failed_cases); chi-square (model, type, m) failed: $chi of 24; furnace: $furnace"
