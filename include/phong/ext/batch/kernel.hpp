@@ -187,13 +187,7 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
         else run_steps.template operator()<false, false>(m);
     };
     if constexpr (F.mode == evaluation::fast && !std::is_same_v<V, T>) {
-        // One integer shininess in every lane (a shared material, or a step of equal ones):
-        // the fast power by binary powering, its schedule made here once rather than per pair
-        // (n >= 1; m = 0, pow(0, 0) = 1 on every lane that is on, takes lane_shininess below).
-        const T m0 = mat.shininess.get(0);
-        if (m0 >= T(1) && m0 <= T(fast::detail::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
-            math_traits<V>::all(mat.shininess == V(m0)))
-            return run(exact::integer_exponent<V>::of(unsigned(m0)));
+        if (const unsigned n = shared_integer_exponent<V, T>(mat)) return run(exact::integer_exponent<V>::of(n));
     }
     if constexpr (F.mode != evaluation::stable && !std::is_same_v<V, T>) {
         run(shininess_lanes(mat.shininess)); // m == 0 tested once

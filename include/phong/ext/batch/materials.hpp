@@ -240,6 +240,17 @@ template <class V> exact::lane_shininess<V> shininess_lanes(const V& m)
             detail::min(m, V(S(0x1p100)))};
 }
 
+/// The fast mode's shared integer exponent: n when every lane's shininess is the same integer n in
+/// [1, fast::detail::pow_integer_max_exponent] (binary powering, its schedule made once per call),
+/// else 0 (m = 0, pow(0, 0) = 1 on every lane that is on, and other m take lane_shininess).
+template <class V, class T, glm::qualifier Q> unsigned shared_integer_exponent(const material<V, Q>& mat)
+{
+    const T m0 = mat.shininess.get(0);
+    const bool shared = m0 >= T(1) && m0 <= T(fast::detail::pow_integer_max_exponent) && m0 == T(unsigned(m0)) &&
+                        math_traits<V>::all(mat.shininess == V(m0));
+    return shared ? unsigned(m0) : 0u;
+}
+
 } // namespace phong::detail
 
 #include "../simd/diagnostics_pop.hpp"
