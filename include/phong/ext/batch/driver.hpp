@@ -24,10 +24,8 @@
 
 namespace phong::detail {
 
-// g++ -O1 reports `in` below as maybe uninitialized when it passes the array to shade_lanes, which
-// reads in[k] only for k < steps, all loaded first: a false positive (found by CI's consumer build
-// with PHONG_NO_XSIMD -O1 -march=native). Silenced for this function only; with xsimd the region
-// opened before <xsimd/xsimd.hpp> covers it already.
+// g++ -O1 reports `in` below as maybe uninitialized (shade_lanes reads in[k] only for k < steps,
+// all loaded first): silenced here (with xsimd, backend.hpp's region covers it already).
 #if defined(__GNUC__) && !defined(__clang__)
 #  pragma GCC diagnostic push
 #  pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
@@ -135,15 +133,11 @@ std::size_t point_step_materials(const MaterialLanes& materials, std::size_t i, 
     return k < steps && used == Slots ? k : steps;
 }
 
-/// Up to call_steps batch steps from point i (steps full steps of W points, or one step of
-/// count < W points: a tail), through one call of shade_lanes; returns the steps shaded (fewer
-/// than `steps` when the call ran out of step_material_slots). Full SoA steps, full AoS steps
-/// (aos_in_registers) and light masks of full steps are read in place, full steps' SoA or
-/// interleaved rgb colours written in place. `materials` gives each step's material lanes
-/// (shared_lanes, per_point_lanes or table_lanes); materials that differ per step go in one call
-/// of several steps in the exact mode (a table's full steps: looked up by shade_lanes in its step
-/// loop; per-point materials and a table's tail: a pointer per step, to a table's lanes as they
-/// are or to a slot), one step per call in the others.
+/// Up to call_steps steps from point i (full steps of W points, or one tail step) through one call
+/// of shade_lanes; returns the steps shaded (fewer when step_material_slots ran out). Full steps
+/// are read and written in place where the layout allows. `materials` (shared_lanes,
+/// per_point_lanes, table_lanes): differing materials go several steps per call in the exact mode
+/// (a table's full steps looked up by shade_lanes; others a pointer per step), one otherwise.
 template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
 std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, const Points& points,
                                const MaterialLanes& materials, std::span<const light<V, Q>> lights,
