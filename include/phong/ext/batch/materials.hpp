@@ -47,12 +47,10 @@ template <class T, glm::qualifier Q, std::size_t W> void put_fields(T (&lane)[14
     lane[13][k] = m.alpha;
 }
 
-/// One material of lanes: lane k takes base[element[k]] (k < W). The same values as splatting
-/// each material, so the same bits downstream. With gather_instructions (a material table: small,
-/// in cache) and AVX-512 or AVX2: one gather instruction per field (14); otherwise a scalar
-/// transpose through a small buffer. Per-point materials take the scalar transpose: they stream
-/// from memory, where sequential reads beat 14 gathers over the same 14 cache lines
-/// (docs/batch.md).
+/// One material of lanes: lane k takes base[element[k]] (the same values as splatting each
+/// material). With gather_instructions (a small table, in cache) and AVX-512 or AVX2: one gather
+/// per field; otherwise a scalar transpose through a small buffer (per-point materials stream from
+/// memory, where sequential reads beat the gathers: docs/batch.md).
 template <class V, bool gather_instructions, class T, glm::qualifier Q>
 material<V, Q> gather(const material<T, Q>* base, const std::uint32_t* element)
 {
@@ -98,9 +96,8 @@ template <std::size_t W> struct consecutive_elements {
 };
 template <std::size_t W> inline constexpr consecutive_elements<W> full_step_elements{W};
 
-/// Storage for one step's material lanes, left uninitialized (material's default member
-/// initializers would fill 14 vectors per slot per call: 8 KiB of stores per call of 32 steps);
-/// the step functions construct the lanes in it (std::construct_at) before any read.
+/// Storage for one step's material lanes, left uninitialized (default initializers would cost
+/// 8 KiB of stores per call); the step functions construct the lanes (std::construct_at) before any read.
 template <class V, glm::qualifier Q> union material_slot {
     material<V, Q> lanes;
     material_slot() {}
@@ -114,10 +111,9 @@ template <class V, class T, glm::qualifier Q> struct table_lanes {
     std::span<const material<T, Q>> table;
     std::span<const std::uint32_t> ids;
     std::vector<material<V, Q>> splatted; ///< table[j] in every lane
-    /// A table of at most W entries (float lanes, AVX-512 or AVX2; empty otherwise): field f of
-    /// entry j in lane j (the last entry repeated past the table). A step of mixed ids then takes
-    /// each field with one in-register permute by id instead of a gather from memory (a scene's
-    /// few materials: 14 permutes against 14 gathers, the same values).
+    /// A table of at most W entries (float lanes, AVX-512 or AVX2; empty otherwise): field f of entry
+    /// j in lane j (the last entry repeated). A step of mixed ids then takes each field by one
+    /// in-register permute instead of a gather (the same values).
     std::vector<V> columns;
 
     /// The lanes of field f of table[id[k]] in lane k, from columns (ids: W clamped ids in a register).

@@ -55,19 +55,15 @@ template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
     std::span<const std::uint64_t> light_masks{}; ///< N light masks; empty: every light visible
 };
 
-/// Materials as a renderer keeps them: a table (a scene's materials) and one index into it per
-/// point (each hit's material id). shade_batch with a material_table shades point i with
-/// materials[ids[i]], bit for bit as the overloads that take one material per point would with
-/// that material, without copying a material per point: the table goes to SIMD lanes once per
-/// call; a step whose points all have one id (coherent primary hits: most steps) uses those
-/// lanes as they are, and a step of mixed ids takes each field from the table: with float lanes
-/// and at most batch_width<float> entries (16 with AVX-512, 8 with AVX2), one in-register
-/// permute per field; else one gather instruction per field (AVX-512 and AVX2).
+/// Materials as a renderer keeps them: a table and one index per point. shade_batch shades point i
+/// with materials[ids[i]], bit for bit as with one material per point, without copying one per
+/// point: the table goes to lanes once per call; a step whose points share one id uses those lanes,
+/// a step of mixed ids takes each field from the table (one permute per field for float lanes and
+/// at most batch_width<float> entries, else one gather per field).
 ///   materials: the table, validate() for each entry; not empty when there are points;
-///   ids: N indices (N = the number of points), each < materials.size().
-/// Pre (debug assertions through the precondition handler): ids N long, every id in the
-/// table. Edge: an id past the table takes its last entry (memory-safe in release builds);
-/// an empty table shades nothing (every build).
+///   ids: N indices, each < materials.size().
+/// Pre (debug assertions): ids N long, every id in the table. Edge: an id past the table takes its
+/// last entry (memory-safe in release builds); an empty table shades nothing (every build).
 template <class T, glm::qualifier Q = glm::defaultp> struct material_table {
     std::span<const material<T, Q>> materials; ///< the table
     std::span<const std::uint32_t> ids;        ///< one index into the table per point
