@@ -114,8 +114,7 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_at(const glm::vec<3, T, Q>& positi
     }
 }
 
-/// Lane-wise: the squares of the normal and the view vector are at most T's largest, which means
-/// finite inputs (poison 0). A given view vector says nothing about Q: its square joins the test.
+/// Lane-wise: both squares at most T's largest, i.e. finite inputs (given v: |Q|^2 joins the test).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr mask_t<T> squares_in_range(const glm::vec<3, T, Q>& position, T normal_square, T view_square)
 {
@@ -372,9 +371,8 @@ PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, 
     }
 }
 
-/// 1/|d| of a lit pair (dd = |d|^2 a normal number): detail::rsqrt_normal, or in the fast mode
-/// fast::rsqrt, except on float SIMD lanes, whose rsqrt_normal already is an estimate and one Newton
-/// step (1.6 u AVX-512, 4.9 u AVX2: within fast::rsqrt_max_rel<float>) without fast::rsqrt's guards.
+/// 1/|d| of a lit pair: detail::rsqrt_normal, or fast::rsqrt in the fast mode but on float SIMD
+/// lanes (their rsqrt_normal, estimate + Newton step, is within fast::rsqrt_max_rel already).
 template <evaluation M, class T>
 PHONG_INLINE constexpr T lit_inverse_length(T dd)
 {
@@ -390,8 +388,7 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> unrounded_halfway_sum(const glm::vec<3,
     return {math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z)};
 }
 
-/// 1/|h| (lit_inverse_length of |h|^2) where |h|^2 >= min_square, else 0: Blinn's 1/|l + v| with
-/// the threshold below which a route takes l = -v (no halfway vector).
+/// 1/|h| where |h|^2 >= min_square (below: l = -v, no halfway vector), else 0.
 template <evaluation M, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T min_square)
 {
@@ -409,8 +406,7 @@ PHONG_INLINE constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l
         constexpr double er = fast::rsqrt_max_rel<scalar_t<T>>;
         return inverse_length_at_least<M>(l + v, T(scalar_t<T>(16 * er * er)));
     } else if constexpr (!std::is_same_v<mask_t<T>, bool>) {
-        // SIMD lanes: the lanes that are lit have l and v unit (or v = 0), so |l + v|^2 <= 4 and
-        // only the lower end (l = -v) needs a test; the others are selected away by add_light.
+        // SIMD lanes: lit lanes have |l + v|^2 <= 4, so only l = -v needs a test.
         return inverse_length_at_least<M>(l + v, exact_min_square<T>());
     } else {
         return detail::inverse_halfway_length(l, v);
@@ -495,14 +491,12 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
         if constexpr (F.spot == spot_model::none) inv = lit_inverse_length<F.mode>(dd); // lanes where dd is not normal are not lit: selected away
         nl = nd * inv;
     }
-    // Scalars with light_sums add diffuse after specular (the same bits), so a light colour read by
-    // both is not held in registers across the power; SIMD lanes and folded_sums: diffuse first
-    // (docs/batch.md).
+    // Scalars with light_sums add diffuse last (the same bits), so a colour read by both terms is not
+    // held across the power; SIMD lanes and folded_sums: diffuse first (docs/batch.md).
     constexpr bool diffuse_last = std::is_floating_point_v<T> && std::is_same_v<Sums<T, Q>, light_sums<T, Q>>;
     if constexpr (F.diffuse && !diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
-    // Phong with the fast integer power: without a view vector v = 0, so the cosine is 0 and its
-    // power 0 (NaN v: poisoned, not > 0): no sees_viewer test per pair; step_specular's threshold
-    // and halfway_min turn the term off there.
+    // Phong with the fast integer power: no view vector means v = 0, a cosine 0 and power 0 (NaN v:
+    // poisoned): no sees_viewer test per pair; step_specular's threshold and halfway_min do the same.
     static_assert(!std::is_same_v<Exponent, step_specular<T>> || step_specular_route<F>);
     [[maybe_unused]] mask_t<T> specular_on;
     if constexpr ((F.specular == specular_model::phong && is_integer_exponent<Exponent, T>) ||

@@ -167,9 +167,8 @@ template <std::size_t W> inline constexpr aos_permutes<W> aos_permute_table{};
 template <class V, class T, glm::qualifier Q> inline constexpr bool aos_in_registers =
     sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T) && (avx512_lanes<V, T> || avx2_float_lanes<V, T>);
 
-/// The x, y, z lanes of W interleaved vec3 at s (3W scalars: x0 y0 z0 x1 ...), transposed in
-/// registers (aos_in_registers only): AVX-512, three loads and six two-source permutes; AVX2,
-/// three loads, six blends and three permutes.
+/// The x, y, z lanes of W interleaved vec3 at s, transposed in registers (aos_in_registers only):
+/// AVX-512, three loads and six two-source permutes; AVX2, three loads, six blends, three permutes.
 template <class V, glm::qualifier Q, class T>
 inline glm::vec<3, V, Q> aos_lanes([[maybe_unused]] const T* s)
 {
@@ -200,9 +199,8 @@ inline glm::vec<3, V, Q> aos_lanes([[maybe_unused]] const T* s)
     return r;
 }
 
-/// The same from an array of glm vectors (AoS): a W x 3 transpose (aos_lanes for a full step
-/// where aos_in_registers; else through a small buffer). The lanes are the same values as from
-/// SoA spans, so both layouts give the same bits.
+/// The same from an array of glm vectors (AoS): aos_lanes for a full step where aos_in_registers,
+/// else a small buffer; the same values as from SoA spans, so the same bits.
 template <class V, glm::qualifier Q, class T>
 glm::vec<3, V, Q> load_vec3(std::span<const glm::vec<3, T, Q>> in, std::size_t i, std::size_t count, const glm::vec<3, T, Q>& pad)
 {
@@ -250,8 +248,7 @@ inline void interleave_lanes([[maybe_unused]] const glm::vec<3, V, Q>& c, [[mayb
 #endif
 }
 
-/// Stores the lanes of a colour into count interleaved colours at out (rgb, a full step:
-/// interleave_lanes where aos_in_registers; else through a small buffer).
+/// Stores a colour's lanes into count interleaved rgb at out (interleave_lanes or a small buffer).
 template <class V, class T, int N, glm::qualifier Q>
 void store_interleaved(const glm::vec<N, V, Q>& c, glm::vec<N, T, Q>* out, std::size_t count)
 {
@@ -265,8 +262,7 @@ void store_interleaved(const glm::vec<N, V, Q>& c, glm::vec<N, T, Q>* out, std::
         for (int ch = 0; ch < N; ++ch) out[k][ch] = buf[ch][k];
 }
 
-/// The lanes of one batch step: W points' position, normal, view vector (set and read only with
-/// view_model::given) and front-facing flags.
+/// The lanes of one batch step: position, normal, view (view_model::given only), front-facing flags.
 template <class V, glm::qualifier Q> struct step_lanes {
     glm::vec<3, V, Q> position;
     glm::vec<3, V, Q> normal;
