@@ -62,12 +62,11 @@ inline const char* overlap_message(const char* written, const char* read, bool i
     return buffer;
 }
 
-/// shade_batch's aliasing rule, checked in every build (O(1)): what it writes (the first n elements
-/// of each output channel or of the interleaved colours) overlaps nothing it reads point by point
-/// (coordinates, per-point materials, a table and its ids, flags, masks), nor another output.
-/// Exception: an SoA output channel may be exactly an SoA input coordinate span (same data(), length
-/// n): each step reads its points before it stores their colours, and no later step reads them.
-/// Returns nullptr, or the message naming both spans.
+/// shade_batch's aliasing rule, checked in every build (O(1)): what it writes overlaps nothing it
+/// reads point by point (coordinates, per-point materials, a table and its ids, flags, masks), nor
+/// another output. Exception: an SoA output channel may be exactly an SoA input coordinate span
+/// (shading in place: each step reads its points before it stores their colours). Returns nullptr,
+/// or the message naming both spans.
 template <int channels, class T, glm::qualifier Q, class Points, class Materials, class Output>
 const char* output_overlap(const Points& points, const Materials& materials, const Output& out, std::size_t n)
 {
@@ -131,8 +130,7 @@ inline bool memory_safe(bool ok, const char* message, const char* file = PHONG_D
     return ok;
 }
 
-/// Number of vectors in an SoA or AoS input (SoA: the three spans' common length, or a length
-/// no valid input has when they differ).
+/// Number of vectors in an SoA or AoS input (SoA spans of different lengths: a length no input has).
 template <class T> std::size_t vec3_count(const soa3<T>& v)
 {
     return v.y.size() == v.x.size() && v.z.size() == v.x.size() ? v.x.size() : std::size_t(-1);

@@ -26,16 +26,14 @@ template <class T> struct soa_rgba {
     std::span<T> a; ///< alpha (F.alpha only; else may be empty)
 };
 
-/// The points of one shade_batch call, structure of arrays: a renderer's per-point inputs in
-/// one argument (designated initializers name the ones used). N = positions.x.size().
+/// The points of one shade_batch call, structure of arrays (designated initializers name the ones
+/// used); N = positions.x.size().
 ///   positions, normals: N points and their normals (any length; as shade<F> takes them);
-///   views: N view vectors (from each point toward its viewer, e.g. -ray.dir), read only and
-///          required with features::view = view_model::given; leave empty otherwise;
+///   views: N view vectors (toward the viewer, e.g. -ray.dir), read only and required with
+///          view_model::given; empty otherwise;
 ///   front_facing: N flags, read only for facing::flag; empty: all front-facing;
-///   light_masks: N masks, bit j set: light j is visible at that point (a shadow ray's result);
-///          a light whose bit is clear is skipped there exactly as if it were not in the list;
-///          empty: every light visible everywhere. Lights past the 64th are seen by no point
-///          when masks are given (as phong::masked).
+///   light_masks: N masks, bit j set: light j visible there (else skipped exactly as if absent);
+///          empty: every light visible. Lights past the 64th are seen by no point with masks.
 template <class T> struct soa_points {
     soa3<T> positions;                            ///< N points
     soa3<T> normals;                              ///< their N normals
@@ -44,9 +42,8 @@ template <class T> struct soa_points {
     std::span<const std::uint64_t> light_masks{}; ///< N light masks; empty: every light visible
 };
 
-/// The same, array of structures: a ray tracer's hit records as glm vectors
-/// (std::vector<glm::vec3> converts), loaded into lanes per step with a small transpose, so
-/// nothing needs repacking. Fields as soa_points; N = positions.size().
+/// The same, array of structures (a ray tracer's hit records as glm vectors, transposed into lanes
+/// per step: nothing repacked). Fields as soa_points; N = positions.size().
 template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
     std::span<const glm::vec<3, T, Q>> positions; ///< N points
     std::span<const glm::vec<3, T, Q>> normals;   ///< their N normals

@@ -121,11 +121,9 @@ template <class Sums> inline constexpr glm::qualifier Q_of = sums_qualifier<Sums
 
 /// Every light's terms added to the sums of one step, light j only in the lanes whose mask has bit j
 /// (bits: one mask per lane, 0 past the tail; null: every light everywhere; lights past the 64th
-/// are seen by no point). A light no lane sees is skipped; one every lane sees is added as without
-/// masks; else the lanes that do not see it get their sums back (exactly nothing from it). One call
-/// site of add_light for every case, so masked, removed and unmasked lights run the same compiled
-/// code (add_masked_lights' power-of-two fast Phong aside: the same bits). The visibility test is
-/// one bit test of the W masks per light (AVX-512: a k-mask; AVX2: shift and movemask).
+/// are seen by no point). A light no lane sees is skipped; else the lanes that do not see it get
+/// their sums back (exactly nothing from it). One call site of add_light for every case, so masked,
+/// removed and unmasked lights run the same compiled code (the same bits).
 template <class V, class T, class Sums, class AddLight>
 PHONG_LANES_INLINE void each_visible_light(Sums& sums, std::size_t light_count, const std::uint64_t* bits, std::size_t count,
                                                   AddLight&& add_light)
@@ -155,8 +153,7 @@ PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s,
         else add_lights<F>(sums, s, masked(lights, bits[0]), m);
         return;
     } else {
-        // Float lanes: the step's specular constants (exact::step_specular), made once per step; a
-        // pair's specular mask is then one compare. Else m as given.
+        // Float lanes: the step's specular constants, made once per step (one compare per pair).
         const auto step_m = [&] {
             if constexpr (std::is_same_v<Exponent, exact::lane_shininess<V>> && std::is_same_v<T, float> && exact::step_specular_route<F>)
                 return exact::step_specular_of(m, s.sees_viewer);
