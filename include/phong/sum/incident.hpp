@@ -1,6 +1,5 @@
-// phong: shading with what the renderer already has: each light's unit direction and distance
-// (a ray tracer's shadow ray, a rasterizer's constant directional light), the normal, and the view
-// vector (given per call, or one fixed direction); no position.
+// phong: shading from what the renderer already has: each light's unit direction and distance (a
+// shadow ray), the normal and the view vector (given, or one fixed direction); no position.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -186,18 +185,16 @@ PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>&
 /// with l_i = incidents[i].direction (unit) and, for attenuation, d_i = incidents[i].distance given;
 /// s_i and f_i as shade<F>, from l_i.
 /// normal: any length (unit and used as is with unit_inputs). surf: a material<T, Q> or a
-/// surface<T, Q>. lights: a range of light<T> or of a light_traits type, or masked(lights, bits);
-/// only colours, attenuation and spot are read (w too with light_kind::any; light_traits without
-/// position() is accepted, incident_light_source). incidents: a random-access range, incidents[i]
-/// for the i-th light, masked or not. The viewer: given (the overload below) or fixed_direction
-/// (environment::eye.xyz, normalized once per call unless unit_inputs).
+/// surface<T, Q>. lights: a range of light<T> or of a light_traits type (position() optional:
+/// incident_light_source; w read with light_kind::any), or masked(lights, bits). incidents: a
+/// random-access range, incidents[i] for the i-th light, masked or not. The viewer: given (the
+/// overload below) or fixed_direction (eye.xyz, normalized once per call unless unit_inputs).
 /// Pre: an incident for every light (fewer is reported in debug builds and constant evaluation;
 /// nothing is read past them in any build); directions unit (within 1e-3), distances finite and
 /// >= 0; n, v (and eye.xyz for fixed_direction) unit with unit_inputs; validate(surf as a material),
 /// validate(env), validate(light) (checked in debug builds and constant evaluation).
-/// Edges: normal = 0: no diffuse or specular; a zero view vector: no specular; NaN or inf in the
-/// normal or view input: every channel NaN; Blinn with l = -v: n.h = 0; m = 0: base^0 = 1 where
-/// the specular term is on; distance 0 with c0 = 0: f capped as in shade<F>.
+/// Edges as shade<F> (a zero normal, no view vector, l = -v, m = 0, distance 0 with c0 = 0); NaN or
+/// inf in the normal or the view input read makes every channel NaN.
 /// Modes: exact and fast as shade<F>; stable float: the wider route; double and twofold run the
 /// exact formulas (the given l is already rounded: no error-free L - Q).
 /// Result: shade<F>'s colour for those l_i, d_i, within phong::accuracy's exact bound.

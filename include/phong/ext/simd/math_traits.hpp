@@ -1,5 +1,4 @@
-// phong: math_traits for xsimd batches: every kernel of math.hpp, lane-wise (the SIMD backend's
-// arithmetic; the primary template in math.hpp serves scalars).
+// phong: math_traits for xsimd batches: every kernel of math.hpp, lane-wise.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -52,8 +51,7 @@ struct math_traits<xsimd::batch<T, A>> {
         if constexpr (has_rsqrt_estimate) return rsqrt_newton_correction(x, rsqrt_estimate(x));
         else return V(T(1)) / xsimd::sqrt(x);
     }
-    /// x is a positive normal number (the exact mode's test of a squared length). AVX-512DQ: one
-    /// vfpclass in place of two compares.
+    /// x is a positive normal number (AVX-512DQ: one vfpclass, not two compares).
     PHONG_LANES_INLINE static mask positive_normal(const V& x)
     {
 #if defined(__AVX512DQ__)
@@ -146,8 +144,7 @@ struct math_traits<xsimd::batch<T, A>> {
         if constexpr (float_lanes) return detail::lanes::pow_unit(x, m);
         else return pow(x, m);
     }
-    /// pow_unit with m_is_zero = (m == 0) given (computed once per call by shade_batch). Both
-    /// kinds of lanes give x <= 0 and NaN the power of 0 (0, or 1 for m = 0).
+    /// pow_unit with m_is_zero = (m == 0) given; x <= 0 and NaN give 0^m (0, or 1 for m = 0).
     PHONG_LANES_INLINE static V pow_unit(const V& x, const V& m, const mask& m_is_zero)
     {
         if constexpr (float_lanes) return detail::lanes::pow_unit(x, m, m_is_zero);
@@ -163,9 +160,8 @@ struct math_traits<xsimd::batch<T, A>> {
     /// Float lanes: lanes_power.hpp's least_base (x^m >= 2^-101 above it; 0 for m < 1).
     template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
     PHONG_LANES_INLINE static V least_base(const V& m) { return detail::lanes::least_base(m); }
-    /// (1 - x)^m for x >= 0, m >= 0 (pow_one_minus): exp(m log1p(-x)) (power_exp); x >= 1 gives 0
-    /// (1 for m = 0). Float lanes: lanes_power.hpp's pow_one_minus, relative error
-    /// <= pow_one_minus_lanes_error(m log2(1 - x)).
+    /// (1 - x)^m for x >= 0, m >= 0: exp(m log1p(-x)) (power_exp); x >= 1 gives 0 (1 for m = 0).
+    /// Float lanes: lanes_power.hpp, relative error <= pow_one_minus_lanes_error(m log2(1 - x)).
     PHONG_LANES_INLINE static V pow_one_minus(const V& x, const V& m)
     {
         if constexpr (float_lanes) return detail::lanes::pow_one_minus(xsimd::max(x, V(T(0))), m);
@@ -187,9 +183,8 @@ struct math_traits<xsimd::batch<T, A>> {
     static V min(const V& a, const V& b) { return xsimd::min(a, b); }
     static V max(const V& a, const V& b) { return xsimd::max(a, b); }
 
-    /// The power of two of inverse_pow2_scale, lane-wise: 2^(bias - e) by one integer subtraction of
-    /// exponent fields; x above 2^bias takes 2^(1 - bias). No integer selects (xsimd 8.1 does not
-    /// compile them for AVX-512BW at -O0).
+    /// The power of two of inverse_pow2_scale, lane-wise: 2^(bias - e) by subtracting exponent fields
+    /// (x above 2^bias: 2^(1 - bias)); no integer selects (xsimd 8.1, AVX-512BW, -O0 cannot compile them).
     static V inverse_pow2_scale(const V& x)
     {
         using I = xsimd::as_integer_t<T>;
@@ -213,11 +208,10 @@ private:
         if constexpr (std::is_base_of_v<xsimd::avx512f, A>) return V(_mm512_rsqrt14_ps(x));
         else return V(_mm256_rsqrt_ps(x));
     }
-    /// One Newton step for 1/sqrt(x) from an estimate: y0 + (y0 / 2)(1 - (x y0) y0) with fmas,
-    /// 1.5 e0^2 + about 1.5 u: 1.6 u from AVX-512's 2^-14, 4.9 u from AVX's 1.5 2^-12 (counted in
-    /// accuracy.hpp's exact bounds). Apart from fast::detail::rsqrt_newton_product and the stable
-    /// lanes' fourth-order correction on purpose: each rounds differently, so merging would change
-    /// a mode's bits or loosen its bound.
+    /// One Newton step for 1/sqrt(x) from an estimate: y0 + (y0 / 2)(1 - (x y0) y0) with fmas: 1.6 u
+    /// from AVX-512's 2^-14, 4.9 u from AVX's 1.5 2^-12 (counted in accuracy.hpp's exact bounds).
+    /// Apart from fast::detail::rsqrt_newton_product and the stable lanes' fourth-order correction
+    /// on purpose: each rounds differently (merging would change a mode's bits or its bound).
     PHONG_LANES_INLINE static V rsqrt_newton_correction(const V& x, const V& estimate)
     {
         const V residual = fma(-(x * estimate), estimate, V(T(1))); // 1 - x y0^2

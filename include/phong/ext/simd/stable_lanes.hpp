@@ -49,8 +49,7 @@ template <class A> struct double_of<xsimd::batch<float, A>> {
 };
 template <class V> using double_t = typename double_of<V>::type;
 
-/// The lower lanes [0, W/2) and the upper lanes [W/2, W) of a float batch, as two double batches
-/// (exact): the two parts of the lanes that this route computes in double.
+/// The lower lanes [0, W/2) and the upper lanes [W/2, W) of a float batch as two double batches (exact).
 template <class V> struct lane_parts {
     double_t<V> lower, upper;
 };
@@ -130,8 +129,7 @@ template <class D> inline D rsqrt_normal(const D& x)
     return D(1.0) / xsimd::sqrt(x);
 }
 
-/// 1/|v| from dd = |v|^2: 0 unless dd is a positive normal double (a float-derived dd is, but for
-/// a zero vector, and NaN or inf from non-finite input).
+/// 1/|v| from dd = |v|^2: 0 unless dd is a positive normal double (zero vector, NaN, inf).
 template <class D> inline D inverse_length(const D& dd)
 {
     const auto normal = (dd >= D(std::numeric_limits<double>::min())) && (dd <= D(std::numeric_limits<double>::max()));
@@ -233,8 +231,7 @@ template <features F>
 inline constexpr bool unit_factor = (F.attenuation == attenuation_model::none || F.lights == light_kind::directional) &&
                                     F.spot == spot_model::none;
 
-/// L: the light in double (exact: its float values widened). f as the wider route takes it:
-/// float's cap on the attenuation (light_factor with U = float).
+/// L: the light in double (exact); f as the wider route takes it (float's attenuation cap).
 template <features F, class D, glm::qualifier Q>
 inline part_terms<D> part_light(const part_frame<D, Q>& s, const light<double, Q>& L)
 {
@@ -254,8 +251,8 @@ inline part_terms<D> part_light(const part_frame<D, Q>& s, const light<double, Q
     D distance(0.0);
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = dd * inv;
     const D f = light_factor<F, D, Q, light<double, Q>, unweighted, float>(L, distance, w, l, unweighted{});
-    // Lit: a defined normal, a light direction (inv > 0) and, where gated, n.l > 0. Gated, n.d > 0
-    // implies d != 0 and so inv > 0 (a nonzero float-derived dd is at least 2e-90): one compare.
+    // Lit: a defined normal, a light direction and, where gated, n.l > 0 (one compare: gated,
+    // n.d > 0 implies a nonzero float-derived dd >= 2e-90, so inv > 0).
     auto on = s.defined;
     if constexpr (gated<F>) on = on && (nd > D(0.0));
     else on = on && (inv > D(0.0));
@@ -284,10 +281,9 @@ template <class V, class D> inline V power(const part_terms<D>& lower, const par
     return detail::lanes::pow_cosine(xsimd::max(join<V>(lower.x, upper.x), V(0.0f)), join<V>(lower.c, upper.c), m);
 }
 
-/// One light's terms added to the float sums of a step: the geometry of both parts in double,
-/// then the weights, x and c rounded to float once, the power c^m and the sums in float.
-/// L: the light's float lanes (its colours, with the material when folded); wide: the same light
-/// in double (position, attenuation, spot).
+/// One light's terms added to the float sums of a step: the geometry of both parts in double, the
+/// weights, x and c rounded to float once, power and sums in float. L: the light's float lanes
+/// (with the material when folded); wide: the same light in double (position, attenuation, spot).
 template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>
 inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const light<V, Q>& L,
                                   const light<double, Q>& wide, const V& m)
