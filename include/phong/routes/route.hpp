@@ -20,8 +20,8 @@ namespace phong::detail {
 template <features F, class T, glm::qualifier Q>
 using frame_t = std::conditional_t<F.mode == evaluation::stable, stable::surface_frame<T, Q>, exact::surface_frame<T, Q>>;
 
-/// The point's frame (unit normal, view vector, whether both exist, poison), by F's route.
-/// given_view: the view vector for view_model::given (not read otherwise).
+/// The point's frame (unit normal, view vector, whether both exist, poison), by F's route
+/// (given_view: read only for view_model::given).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                             const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
@@ -44,9 +44,8 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& 
 template <class R> struct is_std_array : std::false_type {};
 template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::true_type {};
 
-/// Checks one light against validate() as it is shaded (a single-pass range is read once), as the
-/// light<U> it stands for: a compile error in constant evaluation, an assertion in debug builds,
-/// nothing under NDEBUG (not even evaluated).
+/// Checks one light against validate() as it is shaded, as the light<U> it stands for: a compile
+/// error in constant evaluation, an assertion in debug builds, nothing under NDEBUG.
 template <class Light>
 PHONG_INLINE constexpr void check_light([[maybe_unused]] const Light& L)
 {
@@ -83,14 +82,12 @@ template <class R> using list_element_t = decltype(*std::begin(std::declval<R&>(
 template <class Lights>
 concept light_list = requires { typename list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>; } &&
                      light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>;
-/// What shade_incident<F> takes as lights: a range (masked() too) of incident_light_sources
-/// (light_traits without a position: shade_incident reads each light's direction from its incident).
+/// What shade_incident<F> takes as lights: a range (masked() too) of incident_light_sources.
 template <class Lights>
 concept incident_light_list = requires { typename list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>; } &&
                               incident_light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>;
 
-/// The range a light list iterates: masked()'s or weighted()'s lights, or the list itself.
-/// (Not const where the list is not: a view such as std::views::filter iterates only as non-const.)
+/// The range a light list iterates (non-const where the list is: a filter view iterates only so).
 template <class Lights>
 PHONG_INLINE constexpr auto& light_range(Lights& lights)
 {
@@ -193,9 +190,8 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
     }
 }
 
-/// Every light's terms added to the sums (Sums: light_sums, or folded_sums with one material). A
-/// point without a view vector keeps its diffuse term and has no specular: scalars run it with F's
-/// specular term removed, SIMD lanes mask it.
+/// Every light's terms added to the sums (light_sums, or folded_sums). A point without a view
+/// vector has no specular term: scalars run F without it, SIMD lanes mask it.
 template <features F, bool Check = true, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Lights>
 PHONG_INLINE constexpr void add_lights(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
 {

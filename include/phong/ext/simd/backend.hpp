@@ -129,8 +129,7 @@ using simd_arch = xsimd::avx512dq;
 /// The instruction set of shade_batch's lanes: xsimd's widest for the compile flags.
 using simd_arch = xsimd::default_arch;
 #  endif
-/// The SIMD batch used by shade_batch for T: xsimd's widest for the compile flags (16 floats with
-/// AVX-512, 8 with AVX2, 4 with SSE2); T itself without xsimd.
+/// The SIMD batch used by shade_batch for T: xsimd's widest for the compile flags.
 template <class T> using simd_batch = xsimd::batch<T, simd_arch>;
 #else
 /// The SIMD batch used by shade_batch for T: T itself without xsimd (a scalar loop).
@@ -140,9 +139,8 @@ template <class T> using simd_batch = T;
 /// Lanes per step of shade_batch for T.
 template <class T> inline constexpr std::size_t batch_width = sizeof(simd_batch<T>) / sizeof(T);
 
-/// 1 where simd_batch's lanes would have no fused multiply-add (x86 without FMA: no -march). The
-/// lanes' kernels need fmas (polynomials, Newton steps, error-free products), which Dekker's split
-/// makes slowly (docs/batch.md, "Builds without FMA"), so shade_batch shades point by point with
+/// 1 where simd_batch's lanes would have no fused multiply-add (x86 without FMA): Dekker's split
+/// makes the kernels' fmas slowly (docs/batch.md), so shade_batch shades point by point with
 /// shade<F>'s route (the same bits). PHONG_SIMD_WITHOUT_FMA keeps the lanes anyway.
 #if PHONG_HAS_XSIMD && (defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86)) && \
     !defined(__FMA__) && !defined(__AVX512F__) && !defined(PHONG_SIMD_WITHOUT_FMA)

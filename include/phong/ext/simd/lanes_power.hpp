@@ -55,12 +55,10 @@ template <class V> PHONG_LANES_INLINE V log2_of_split(const V& t, const V& e)
     return fused(t, p, e);
 }
 
-/// 2^y on the lanes of `kept`, 0 on the others: 2^r = 1 + r R(r) by Horner, times 2^k exactly.
-/// Kept lanes must have y >= about -100.01 (the power floor), so the result is normal. Clamp: y is
-/// first clamped at -101 (NaN too), so no lane makes a subnormal; without it (y finite) AVX-512's
-/// masked scalef computes nothing in the other lanes. Apart from power::exp2_tabulated (a gather
-/// per lane) and fast::detail::exp2_estrin (too coarse for this bound): different coefficients, so
-/// merging would change one mode's bits.
+/// 2^y on the lanes of `kept` (y >= about -100.01: a normal result), 0 on the others: 2^r = 1 + r R(r)
+/// by Horner, times 2^k. Clamp: y clamped at -101 first (NaN too), so no lane makes a subnormal;
+/// without it (y finite) AVX-512's masked scalef computes nothing in the other lanes. Apart from
+/// power::exp2_tabulated and fast::detail::exp2_estrin: other coefficients (merging changes bits).
 template <class V, bool Clamp> PHONG_LANES_INLINE V exp2_kept(const V& y_in, const typename V::batch_bool_type& kept)
 {
     using IV = xsimd::batch<std::int32_t, typename V::arch_type>;
@@ -129,8 +127,7 @@ template <class V> PHONG_LANES_INLINE V pow_unit_kept(const V& x, const V& m, co
     return exp2_kept<V, false>(m * log2_of_split(t, e), kept);
 }
 
-/// least_base's lanes with m > 2^20 (float's 2^(-100 / m) too coarse): in double, rounded down.
-/// Out of line: rare.
+/// least_base's lanes with m > 2^20 (float's 2^(-100 / m) too coarse): in double, rounded down (rare).
 template <class V> V least_base_wide(const V& m, const V& least)
 {
     alignas(64) float ms[V::size], out[V::size];
@@ -160,8 +157,7 @@ template <class V> PHONG_LANES_INLINE V least_base(const V& m)
 /// x^m lane-wise for x in [0, 1], m >= 0 finite.
 template <class V> PHONG_LANES_INLINE V pow_unit(const V& x, const V& m) { return pow_unit(x, m, m == V(0.0f)); }
 
-/// The relative error bound of pow_one_minus, y = m log2(1 - x) (results >= 2^-100; below: 0):
-/// pow_unit's plus the rounding of 1 - x on the large-x side.
+/// The relative error bound of pow_one_minus, y = m log2(1 - x): pow_unit's plus the rounding of 1 - x.
 constexpr double pow_one_minus_lanes_error(double y)
 {
     return (6.5 * (y < 0 ? -y : y) + 2.5) * 0x1p-24;
