@@ -1,6 +1,6 @@
-// phong: the full multi-light sum, shade<features>(...), and the per-vertex pipeline of the GLSL ADS shader.
+// phong: the full multi-light sum, shade<features>(...), and the GLSL ADS shader's per-vertex
+// pipeline. Orchestration only: prepare the point, add every light, finish (routes/route.hpp).
 // SPDX-License-Identifier: MIT
-// Orchestration only: prepare the point, add every light, finish (routes/route.hpp picks the route).
 #pragma once
 
 #include "../routes/route.hpp"
@@ -24,7 +24,7 @@ namespace phong {
 namespace detail {
 
 /// validate(material) and validate(environment): a compile error in constant evaluation, an
-/// assertion in debug builds, nothing at all under NDEBUG (not even evaluated).
+/// assertion in debug builds, nothing under NDEBUG (not even evaluated).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const environment<T, Q>& env)
 {
@@ -67,8 +67,8 @@ PHONG_INLINE constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>&
     }
 }
 
-/// prepare, every light, finish: the terms of the model at one point in arithmetic type T (the
-/// lights' scalar type may be narrower: the wider route). Check: as each_light's.
+/// prepare, every light, finish: the model's terms at one point in arithmetic type T (the lights'
+/// may be narrower: the wider route).
 template <features F, bool Check = true, class T, glm::qualifier Q, class Lights>
 PHONG_INLINE constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                 const glm::vec<3, T, Q>& given_view, const material<T, Q>& mat,
@@ -138,8 +138,7 @@ PHONG_INLINE constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::
 } // namespace detail
 
 /// The full local lighting model at one point (classic Phong, 001 and 003 are presets of it):
-///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0)
-///                + ks sum_i f_i Ls_i s_i,
+///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0) + ks sum_i f_i Ls_i s_i,
 ///   s_i = max(r_i.v, 0)^m (r_i = reflect(-l_i, n)) or max(n.h_i, 0)^m (h_i = normalize(l_i + v)),
 ///   f_i = attenuation(d_i) * spot_i,   l_i = normalize(L_i.xyz - L_i.w Q),
 /// with rgba = (I, alpha) when F.alpha. Each term is compiled only when F asks for it.
