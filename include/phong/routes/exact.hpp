@@ -58,8 +58,7 @@ PHONG_INLINE T opaque_lanes(T x)
     return x;
 }
 
-/// A unit vector with its squared length: v / |v|, or 0 when |v|^2 is not a normal number
-/// (below exact_min_square: lost to underflow; inf: overflowed; NaN).
+/// A unit vector with its squared length: v / |v|, or 0 when |v|^2 is not a normal number.
 template <class T, glm::qualifier Q>
 struct unit_vector {
     glm::vec<3, T, Q> unit;
@@ -81,8 +80,7 @@ PHONG_INLINE constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T s
     }
 }
 
-/// unit(e * sign), or, when no term reads v, only its square (the NaN test reads it): no
-/// normalization left behind.
+/// unit(e * sign), or only its square (for the NaN test) where no term reads v.
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T sign)
 {
@@ -150,8 +148,8 @@ PHONG_INLINE constexpr T point_poison(const glm::vec<3, T, Q>& position, const g
     return T(0);
 }
 
-/// The per-point frame: unit normal (faced toward the viewer when two-sided), view vector,
-/// whether both exist, the poison, and n.v.
+/// The per-point frame: unit normal (faced toward the viewer when two-sided), view vector, whether
+/// both exist, the poison, n.v.
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
@@ -332,8 +330,7 @@ PHONG_INLINE constexpr T route_cosine_power(T x, T scale, const lane_shininess<T
     else return math_traits<T>::pow_unit(math_traits<T>::min(x * scale, T(1)), m.m, m.zero);
 }
 
-/// Whether a lane that is on has shininess 0 (pow(0, 0) = 1 keeps the specular term on unlit
-/// cosines); lane_shininess and integer_exponent know per call whether any lane has it.
+/// Whether a lane that is on has shininess 0 (pow(0, 0) = 1 keeps the specular term on).
 template <class T, class Exponent> PHONG_INLINE constexpr bool any_zero_exponent(const Exponent& m, const mask_t<T>& on)
 {
     if constexpr (std::is_same_v<Exponent, lane_shininess<T>>) return m.any_zero && math_traits<T>::any(math_traits<T>::both(on, m.zero));
@@ -396,9 +393,8 @@ PHONG_INLINE constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T m
     return detail::select(hh >= min_square, lit_inverse_length<M>(hh), T(0));
 }
 
-/// Blinn's 1/|l + v| (inverse_halfway_length), or in the fast mode fast::rsqrt and 0 where
-/// |l + v| < 4 fast::rsqrt_max_rel: there l = -v within the fast 1/|d|'s error and n.h is a ratio
-/// of roundings, so it is taken as 0 as the exact mode does for l = -v.
+/// Blinn's 1/|l + v| (inverse_halfway_length), or in the fast mode fast::rsqrt, 0 where
+/// |l + v| < 4 fast::rsqrt_max_rel (l = -v within the fast 1/|d|'s error: n.h taken as 0).
 template <evaluation M, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
 {
