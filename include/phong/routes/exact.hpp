@@ -1,10 +1,6 @@
-// phong: the exact evaluation route, features::mode = evaluation::exact (and, instantiated in
-// double, the stable mode's wider route for float). The model's formulas as written, one small
-// function per step of the data flow: the point's frame (unit normal, view vector), then per
-// light the light vector, f (detail/light_terms.hpp), whether the pair is lit, the diffuse
-// cosine and the specular factor (specular.hpp's steps). Guarded so that finite input never
-// gives NaN or inf; accuracy bounds in phong/accuracy.hpp. The fast mode runs this route too,
-// with fast::pow_unit and fast::rsqrt (phong/core/fast_math.hpp) where the power and 1/|d| are taken.
+// phong: the exact evaluation route (features::mode = exact; in double, the stable mode's wider
+// route for float; the fast mode with fast::pow_unit and fast::rsqrt). The model's formulas as
+// written, one small function per step; finite input never gives NaN or inf.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -20,22 +16,17 @@
 
 namespace phong::detail::exact {
 
-/// The per-point frame's fields for SIMD lanes only (empty for scalars, whose frame stays five
-/// fields):
-///  - minus_position: -Q, exactly (hidden from the compiler, opaque_lanes), so that the light
-///    loop forms d = L.xyz - Q as L.xyz + (-Q), one add with the light's coordinate read from
-///    memory, where a subtraction takes a load and a subtract (x - y and x + (-y) are the same
-///    IEEE operation: the same bits, signed zeros and NaN included);
-///  - nv_seen (Blinn): n.v where sees_viewer, else -inf, so that the fast route's n.l + n.v is not
-///    positive where there is no view vector (add_halfway_specular_fast: no mask per pair).
+/// The frame's fields for SIMD lanes only (empty for scalars):
+///  - minus_position: -Q, hidden from the compiler (opaque_lanes), so that d = L.xyz + (-Q) is one
+///    add with a memory operand (x - y and x + (-y) give the same bits);
+///  - nv_seen (Blinn): n.v where sees_viewer, else -inf, so n.l + n.v <= 0 there (no mask per pair).
 template <class T, glm::qualifier Q, bool Lanes = !std::is_floating_point_v<T>> struct lanes_frame {};
 template <class T, glm::qualifier Q> struct lanes_frame<T, Q, true> {
     glm::vec<3, T, Q> minus_position = glm::vec<3, T, Q>(T(0));
     T nv_seen = T(0);
 };
 
-/// Per-point quantities, computed once and shared by every light (five fields: a compiler
-/// keeps them in registers across the light loop).
+/// Per-point quantities shared by every light (five fields: they stay in registers).
 template <class T, glm::qualifier Q>
 struct surface_frame {
     glm::vec<3, T, Q> position; ///< Q
@@ -67,8 +58,7 @@ PHONG_INLINE T opaque_lanes(T x)
     return x;
 }
 
-/// A unit vector with its squared length: v / |v|, or 0 when |v|^2 is not a normal number
-/// (below exact_min_square: lost to underflow; inf: overflowed; NaN).
+/// A unit vector with its squared length: v / |v|, or 0 when |v|^2 is not a normal number.
 template <class T, glm::qualifier Q>
 struct unit_vector {
     glm::vec<3, T, Q> unit;
@@ -83,16 +73,14 @@ PHONG_INLINE constexpr unit_vector<T, Q> unit_of(const glm::vec<3, T, Q>& v, T s
         const T inv = exact_inverse_length(dd);
         return {v * (inv * sign), dd, inv > T(0)};
     } else {
-        // exact_inverse_length's range test is the mask itself (1/|v| > 0 exactly where dd is normal):
-        // SIMD lanes keep it rather than compare again.
+        // SIMD lanes keep exact_inverse_length's range test as the mask (no second compare).
         const mask_t<T> normal = normal_square(dd);
         const T inv = detail::select(normal, detail::rsqrt_normal(dd), T(0));
         return {v * (inv * sign), dd, normal};
     }
 }
 
-/// unit(e * sign), or, when no term reads v, only its square (the NaN test reads it): no
-/// normalization left behind.
+/// unit(e * sign), or only its square (for the NaN test) where no term reads v.
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T sign)
 {
@@ -103,10 +91,8 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_unit(const glm::vec<3, T, Q>& e, T
     }
 }
 
-/// The view vector v at Q: normalize(-Q) (eye_at_origin), the given vector normalized (given; as
-/// is with unit_inputs), the environment's direction normalized (fixed_direction; as is with
-/// unit_inputs), or normalize(E.xyz - E.w Q)
-/// (eye_point). Its square tells whether the inputs may be non-finite (fixed_direction: |Q|^2 does).
+/// The view vector v at Q per F.view (normalized unless unit_inputs). Its square tells whether the
+/// inputs may be non-finite (fixed_direction: |Q|^2 does).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr unit_vector<T, Q> view_at(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& given_view,
                                                  const environment<T, Q>& env)
@@ -126,8 +112,7 @@ PHONG_INLINE constexpr unit_vector<T, Q> view_at(const glm::vec<3, T, Q>& positi
     }
 }
 
-/// Lane-wise: the squares of the normal and the view vector are at most T's largest, which means
-/// finite inputs (poison 0). A given view vector says nothing about Q: its square joins the test.
+/// Lane-wise: both squares at most T's largest, i.e. finite inputs (given v: |Q|^2 joins the test).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr mask_t<T> squares_in_range(const glm::vec<3, T, Q>& position, T normal_square, T view_square)
 {
@@ -136,10 +121,8 @@ PHONG_INLINE constexpr mask_t<T> squares_in_range(const glm::vec<3, T, Q>& posit
     return math_traits<T>::both(normal_square <= largest<T>(), view_square <= largest<T>());
 }
 
-/// Whether every lane's squares are in range (squares_in_range), which means finite inputs
-/// (poison 0). Where both unit vectors come from unit_of (their ok: the square is a normal
-/// number), their masks are the test: a zero normal or view vector then takes the exact test too
-/// (rare), and no compare is added.
+/// Whether every lane's squares are in range (finite inputs). Where both unit vectors come from
+/// unit_of, their ok masks are the test (a zero vector then takes the exact test: rare).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr bool finite_squares(const glm::vec<3, T, Q>& position, const unit_vector<T, Q>& n, const unit_vector<T, Q>& v)
 {
@@ -154,9 +137,7 @@ PHONG_INLINE constexpr bool finite_squares(const glm::vec<3, T, Q>& position, co
     }
 }
 
-/// The point's poison (poison_of), scalars. Finite squares of the normal and the view vector mean
-/// finite inputs and poison 0, so the exact test runs only in the rare other case (SIMD lanes:
-/// prepare, through finite_squares).
+/// The point's poison (poison_of), scalars: the exact test runs only when a square is out of range.
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T point_poison(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                   const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env, T normal_square,
@@ -167,8 +148,8 @@ PHONG_INLINE constexpr T point_poison(const glm::vec<3, T, Q>& position, const g
     return T(0);
 }
 
-/// The per-point frame: unit normal (faced toward the viewer when two-sided), view vector,
-/// whether both exist, the poison, and n.v.
+/// The per-point frame: unit normal (faced toward the viewer when two-sided), view vector, whether
+/// both exist, the poison, n.v.
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
@@ -185,8 +166,7 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
         poison = point_poison<F>(position, normal, given_view, env, n.square, v.square);
         defined = math_traits<T>::both(n.ok, poison == T(0));
     } else {
-        // SIMD lanes: poison 0 and `defined` the normal's mask unless a lane's squares are not
-        // finite (then the exact test, point_poison's rare case): no compare of a known 0.
+        // SIMD lanes: poison 0 and defined = n.ok unless a lane's squares are not finite (rare).
         poison = T(0);
         defined = n.ok;
         if (!finite_squares<F>(position, n, v)) [[unlikely]] {
@@ -199,7 +179,6 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
     else (void)front_facing;
     T nv = T(0);
     if constexpr (F.specular != specular_model::none) nv = detail::dot(unit_normal, v.unit);
-    // Built from components: copied whole, g++ moved the vectors through the stack.
     lanes_frame<T, Q> lanes{};
     if constexpr (!std::is_floating_point_v<T>) {
         lanes.minus_position = vec3(opaque_lanes(T(-0.0f) - position.x), opaque_lanes(T(-0.0f) - position.y), opaque_lanes(T(-0.0f) - position.z));
@@ -210,10 +189,8 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
             vec3(v.unit.x, v.unit.y, v.unit.z), defined, v.ok, poison, nv, lanes};
 }
 
-/// Whether a pair is lit, from dd = |d|^2 and nd = n.d (d = L.xyz - w Q): the light has a
-/// direction (|d|^2 a normal number: not at Q, no overflow), the point a normal, and, where
-/// gated, n.l > 0. Scalars: one short-circuit condition, the sign first (it
-/// rejects about a third of a typical scene's pairs, and g++ then branches on each compare).
+/// Whether a pair is lit (dd = |d|^2, nd = n.d): |d|^2 a normal number, the point defined, and,
+/// where gated, n.l > 0. Scalars test the sign first (it rejects the most pairs).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
 {
@@ -226,12 +203,9 @@ PHONG_INLINE constexpr mask_t<T> lit(const surface_frame<T, Q>& s, T dd, T nd)
     }
 }
 
-/// The specular power of add_specular: detail::cosine_power, or in the fast mode fast::pow_unit of
-/// the same clamped cosine (SIMD lanes with one integer shininess m <= fast::detail::pow_integer_max_exponent:
-/// fast::detail::pow_integer, within the same bound). Float SIMD lanes keep cosine_power: the exact mode's power there already
-/// is a polynomial kernel of the same cost (detail/simd/lanes_power.hpp, (3.5 |m log2 x| + 2.5) u, within
-/// fast::pow_unit_max_rel where x^m >= 2^-24), so fast::pow_unit would add work, not remove it
-/// (measured in docs/batch.md).
+/// The power of add_specular: detail::cosine_power, or in the fast mode fast::pow_unit of the
+/// clamped cosine. Float SIMD lanes keep cosine_power: their exact power is already a polynomial
+/// of the same cost, within fast::pow_unit_max_rel (docs/batch.md).
 template <evaluation M, class T>
 PHONG_INLINE constexpr T route_cosine_power(T x, T scale, T m)
 {
@@ -240,19 +214,13 @@ PHONG_INLINE constexpr T route_cosine_power(T x, T scale, T m)
     else return detail::cosine_power(x, scale, m);
 }
 
-/// The fast mode's shininess on SIMD lanes where every lane has the same integer n in [1,
-/// fast::detail::pow_integer_max_exponent] (shade_batch finds it once per call): the power is
-/// fast::detail::pow_integer with n's schedule made once (five squarings for n = 32, against two
-/// polynomials), within the fast power's bound (fast::detail::pow_integer_max_rel <= fast::pow_unit_max_rel).
-/// n >= 1: the power of a base 0 is 0, so add_specular zeroes the base of the lanes that are off
-/// (or whose cosine is not positive) instead of selecting the power.
-/// Bases whose power is below the power floor (2^-100 float, 2^-996 double: ieee::power_floor_log2)
-/// are taken as 0 (least, least_half): no squaring makes a subnormal number, nor does the product
-/// by the light's coefficients, as with every other power of the shading.
-/// Squarings: n = 2^Squarings known at compile time (batch.hpp's add_masked_lights picks it per
-/// step from plan.chain, fast Phong without light masks): x^n is that many squarings in a row,
-/// with no jump per pair into pow_integer's chain; the same products, so the same bits. Default
-/// (runtime_squarings): n known at run time only.
+/// The fast mode's shininess on SIMD lanes where every lane has the same integer n in
+/// [1, fast::detail::pow_integer_max_exponent]: fast::detail::pow_integer with n's schedule made
+/// once, within fast::detail::pow_integer_max_rel <= fast::pow_unit_max_rel. The power of base 0 is
+/// 0, so add_specular zeroes the base of off lanes. Bases whose power is below the power floor
+/// (ieee::power_floor_log2) are taken as 0 (least, least_half): no subnormal results.
+/// Squarings: n = 2^Squarings known at compile time (that many squarings, the same bits);
+/// runtime_squarings: n known at run time only.
 inline constexpr unsigned runtime_squarings = ~0u;
 template <class T, unsigned Squarings = runtime_squarings> struct integer_exponent {
     fast::detail::pow_integer_plan plan; ///< of the shininess n of every lane, n >= 1
@@ -307,9 +275,8 @@ private:
 template <class Exponent, class T> inline constexpr bool is_integer_exponent = false;
 template <class T, unsigned K> inline constexpr bool is_integer_exponent<integer_exponent<T, K>, T> = true;
 
-/// The shininess on SIMD lanes with m == 0 tested once (shade_batch: once per call, not per
-/// pair): the power of detail::cosine_power, the same bits. The cosine is clamped above only:
-/// the lanes' pow_unit gives x <= 0 (and NaN) the power of 0 (0, or 1 for m = 0) by itself.
+/// The shininess on SIMD lanes with m == 0 tested once per call: cosine_power's power, the same
+/// bits. The cosine is clamped above only (pow_unit gives x <= 0 and NaN the power of 0).
 template <class T> struct lane_shininess {
     T m;
     mask_t<T> zero; ///< m == 0
@@ -318,31 +285,22 @@ template <class T> struct lane_shininess {
     T bounded;      ///< min(m, 2^100): the same powers of every x in [0, 1] (x^m = 0 for x < 1 from m ~ 2^31 on), and m log2 x finite
 };
 
-/// One step's specular constants on float SIMD lanes (shade_batch's light loop, made per step from
-/// lane_shininess and the frame by step_specular_of):
-///  - m: lane_shininess::bounded, the power's exponent;
-///  - threshold: the power of a cosine c is taken where c > threshold (lane_shininess::threshold),
-///    and +inf where the point does not see the viewer, so the specular term is off there;
-///  - halfway_min (Blinn): the least |h|^2 that has a halfway vector, u^2 (lanes_inverse_halfway_length),
-///    or +inf where the point does not see the viewer, so its 1/|h| and cosine are 0.
-/// With them a pair's specular mask is one compare (c > threshold, within the lit lanes): no mask
-/// of m = 0 and of sees_viewer per pair, and the power needs no select of its own (pow_unit_positive).
-/// Where the point does not see the viewer v = 0: Phong's cosine 2 (n.d)(n.v) - d.v is then 0.
+/// One step's specular constants on float SIMD lanes (step_specular_of): m = lane_shininess::bounded;
+/// threshold: the power is taken where c > threshold, +inf where the point does not see the viewer;
+/// halfway_min (Blinn): the least |h|^2 with a halfway vector (u^2), +inf there too. A pair's
+/// specular mask is then one compare (v = 0 there makes Phong's cosine 0).
 template <class T> struct step_specular {
     T m;
     T threshold;
     T halfway_min;
 };
 
-/// The routes that take step_specular on float lanes: those whose cosine is 0 where the point does
-/// not see the viewer once halfway_min applies (Phong; Blinn in the exact mode without a spot,
-/// whose 1/|h| is lanes_inverse_halfway_length's).
+/// The routes that take step_specular: Phong, and exact Blinn without a spot.
 template <features F>
 inline constexpr bool step_specular_route = F.specular == specular_model::phong ||
                                             (F.specular == specular_model::blinn && F.spot == spot_model::none && F.mode == evaluation::exact);
 
-/// u^2 (u = epsilon / 2): the least |h|^2 that has a halfway vector on SIMD lanes
-/// (lanes_inverse_halfway_length).
+/// u^2 (u = epsilon / 2): the least |h|^2 with a halfway vector on SIMD lanes.
 template <class T> PHONG_INLINE constexpr T lanes_halfway_min()
 {
     constexpr scalar_t<T> u = std::numeric_limits<scalar_t<T>>::epsilon() / 2;
@@ -372,8 +330,7 @@ PHONG_INLINE constexpr T route_cosine_power(T x, T scale, const lane_shininess<T
     else return math_traits<T>::pow_unit(math_traits<T>::min(x * scale, T(1)), m.m, m.zero);
 }
 
-/// Whether a lane that is on has shininess 0 (pow(0, 0) = 1 keeps the specular term on unlit
-/// cosines); lane_shininess and integer_exponent know per call whether any lane has it.
+/// Whether a lane that is on has shininess 0 (pow(0, 0) = 1 keeps the specular term on).
 template <class T, class Exponent> PHONG_INLINE constexpr bool any_zero_exponent(const Exponent& m, const mask_t<T>& on)
 {
     if constexpr (std::is_same_v<Exponent, lane_shininess<T>>) return m.any_zero && math_traits<T>::any(math_traits<T>::both(on, m.zero));
@@ -381,10 +338,8 @@ template <class T, class Exponent> PHONG_INLINE constexpr bool any_zero_exponent
     else return math_traits<T>::any(math_traits<T>::both(on, m == T(0)));
 }
 
-/// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale (route_cosine_power).
-/// Scalars add nothing where the power is 0 (x <= 0 and m > 0). on: the lanes that are lit and see
-/// the viewer (scalars: shade's light loop runs a point without a view vector with the specular
-/// term removed, detail::add_lights).
+/// The specular term Ls_i f max(c, 0)^m of a lit pair, c = x * scale. on: the lanes lit and seeing
+/// the viewer (scalars run a point without a view vector with the specular term removed).
 template <evaluation M, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent>
 PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, T x, T scale, const Exponent& m,
                                      [[maybe_unused]] mask_t<T> on)
@@ -394,37 +349,27 @@ PHONG_INLINE constexpr void add_specular(Sums<T, Q>& sums, const Light& L, T f, 
         if (x > T(0)) sum += in_type<T>(specular_of(L)) * (f * route_cosine_power<M>(x, scale, m));
         else if (m == T(0)) sum += in_type<T>(specular_of(L)) * f; // 0^m = 1 for m = 0 (power_of_zero), no product by 0^m
     } else if constexpr (is_integer_exponent<Exponent, T>) {
-        // The fast power x^n, n >= 1, of the base c zeroed where the lane is off or c <= 0 (then
-        // its power is 0): the mask goes into the product that forms the base, and max(c, 0) in
-        // place of a compare (on AVX-512 a compare takes a multiplier slot, a max does not) and of
-        // a skip of the steps with no c > 0: every step pays the power, a few multiplications
-        // (measured in docs/batch.md). The sum gains +0 where it skipped: the same
-        // bits. The base is not clamped to 1: lanes that are on have unit n, d / |d| and v, so
-        // c <= 1 up to its rounding error, which c^n amplifies by n with or without a clamp
-        // (accuracy.hpp's fast bound), and c^n stays finite (|c| <= 3 |d| for unit vectors); c is
-        // finite where the lane is on (a point with NaN inputs is not `defined`).
+        // The base is zeroed where the lane is off or c <= 0 (power 0): max(c, 0) in place of a
+        // compare (on AVX-512 a compare takes a multiplier slot) and of a skip (docs/batch.md).
+        // No clamp to 1: on lanes c <= 1 up to rounding, amplified by n either way, and finite.
         sum += in_type<T>(specular_of(L)) * (f * m.power(math_traits<T>::max(detail::select(on, x * scale, T(0)), T(0))));
     } else if constexpr (std::is_same_v<Exponent, step_specular<T>>) {
-        // The lanes whose power is not 0: on, and c > 0 (any c where m = 0). The same powers as the
-        // branch below (pow_unit's select, folded into this mask), and the same skip of a step.
-        // The threshold is the least cosine whose power is at least the power floor (lane_shininess):
-        // the lanes below get 0 from the masked power itself, which makes no subnormal number.
+        // The lanes whose power is not 0: on and c > threshold (the least cosine whose power
+        // reaches the power floor; -inf for m = 0). The same skip as below.
         const T c = x * scale;
         const mask_t<T> powered = math_traits<T>::both(on, c > m.threshold);
         if (!math_traits<T>::any(powered)) return; // every power 0: the sum would gain +0
         sum += in_type<T>(specular_of(L)) * (f * math_traits<T>::pow_unit_kept(math_traits<T>::min(c, T(1)), m.m, powered));
     } else {
-        // Where no lane that is on has c > 0 (nor m = 0: pow(0, 0) = 1), every selected power is 0
-        // and the sum would only gain +0: the power is skipped for the whole step, as scalars skip
-        // it per point (the same bits).
+        // No lane on with c > 0 (nor m = 0): every power 0, skipped per step as scalars skip it
+        // per point (the same bits).
         if (!math_traits<T>::any(math_traits<T>::both(on, x > T(0))) && !any_zero_exponent<T>(m, on)) return;
         sum += in_type<T>(specular_of(L)) * (f * detail::select(on, route_cosine_power<M>(x, scale, m), T(0)));
     }
 }
 
-/// 1/|d| of a lit pair (dd = |d|^2 a normal number): detail::rsqrt_normal, or in the fast mode
-/// fast::rsqrt, except on float SIMD lanes, whose rsqrt_normal already is an estimate and one Newton
-/// step (1.6 u AVX-512, 4.9 u AVX2: within fast::rsqrt_max_rel<float>) without fast::rsqrt's guards.
+/// 1/|d| of a lit pair: detail::rsqrt_normal, or fast::rsqrt in the fast mode but on float SIMD
+/// lanes (their rsqrt_normal, estimate + Newton step, is within fast::rsqrt_max_rel already).
 template <evaluation M, class T>
 PHONG_INLINE constexpr T lit_inverse_length(T dd)
 {
@@ -440,8 +385,7 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> unrounded_halfway_sum(const glm::vec<3,
     return {math_traits<T>::fma(d.x, inv, v.x), math_traits<T>::fma(d.y, inv, v.y), math_traits<T>::fma(d.z, inv, v.z)};
 }
 
-/// 1/|h| (lit_inverse_length of |h|^2) where |h|^2 >= min_square, else 0: Blinn's 1/|l + v| with
-/// the threshold below which a route takes l = -v (no halfway vector).
+/// 1/|h| where |h|^2 >= min_square (below: l = -v, no halfway vector), else 0.
 template <evaluation M, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T min_square)
 {
@@ -449,10 +393,8 @@ PHONG_INLINE constexpr T inverse_length_at_least(const glm::vec<3, T, Q>& h, T m
     return detail::select(hh >= min_square, lit_inverse_length<M>(hh), T(0));
 }
 
-/// Blinn's 1/|l + v| (specular.hpp's inverse_halfway_length), or in the fast mode: fast::rsqrt, and 0
-/// where |l + v| < 4 fast::rsqrt_max_rel. There l = -v to within the fast 1/|d|'s error (l = -v
-/// exactly no longer cancels bit for bit), n.h = (n.l + n.v) / |l + v| is a ratio of two roundings,
-/// so it is taken as 0, as the exact mode does for l = -v.
+/// Blinn's 1/|l + v| (inverse_halfway_length), or in the fast mode fast::rsqrt, 0 where
+/// |l + v| < 4 fast::rsqrt_max_rel (l = -v within the fast 1/|d|'s error: n.h taken as 0).
 template <evaluation M, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
 {
@@ -460,48 +402,35 @@ PHONG_INLINE constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l
         constexpr double er = fast::rsqrt_max_rel<scalar_t<T>>;
         return inverse_length_at_least<M>(l + v, T(scalar_t<T>(16 * er * er)));
     } else if constexpr (!std::is_same_v<mask_t<T>, bool>) {
-        // SIMD lanes: the lanes that are lit have l and v unit (or v = 0), so |l + v|^2 <= 4 and
-        // only the lower end (l = -v) needs a test; the others are selected away by add_light.
+        // SIMD lanes: lit lanes have |l + v|^2 <= 4, so only l = -v needs a test.
         return inverse_length_at_least<M>(l + v, exact_min_square<T>());
     } else {
         return detail::inverse_halfway_length(l, v);
     }
 }
 
-/// Blinn's 1/|l + v| on SIMD lanes in the exact mode, from d and inv = 1/|d| (l = d inv):
-/// h = d inv + v in one fma per component (no rounded l: three products fewer per pair than
-/// route_inverse_halfway_length), 0 where |h|^2 < u^2 (u = epsilon / 2). That threshold is where
-/// l = -v bit for bit ends up: fl(d inv) = -v leaves h = the products' rounding errors, |h| <= u / 2,
-/// and n.h is taken as 0 as the rounded route does for h = 0. It zeroes nothing that has an exact
-/// bound (accuracy.hpp: a bound needs |l + v| > 2 E_s >= 28 u, and then |fl(h)| > 14 u).
-/// halfway_min: that u^2 (lanes_halfway_min), or per lane (step_specular) +inf where the point has
-/// no view vector.
+/// Blinn's 1/|l + v| on SIMD lanes, exact mode: h = d inv + v by fma (no rounded l), 0 where
+/// |h|^2 < halfway_min (u^2, or +inf per lane without a view vector). fl(d inv) = -v leaves
+/// |h| <= u / 2, taken as n.h = 0; no case with an exact bound is zeroed (accuracy.hpp).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T lanes_inverse_halfway_length(const glm::vec<3, T, Q>& d, T inv, const glm::vec<3, T, Q>& v, T halfway_min)
 {
     return inverse_length_at_least<evaluation::exact>(unrounded_halfway_sum(d, inv, v), halfway_min);
 }
 
-/// Blinn's specular term in the fast mode on SIMD lanes with an integer shininess n >= 1
-/// (integer_exponent), l = d / |d| with inv = 1/|d| and nl = n.l given (0 where the pair is off;
-/// on: the lit lanes, the point's sees_viewer is read here):
-///   h = d inv + v (one fma per component), hh = |h|^2, n.h = (n.l + n.v) / |h|,
-///   n even: (n.h)^n = ((n.l + n.v)^2 / hh)^(n/2), 1/hh by fast::detail::reciprocal_normal: no square
-///           root, one squaring fewer; the base's error, as a cosine's, is that of n.l + n.v plus
-///           u + reciprocal_max_rel / 2 (AVX-512: 1.5 u), below the 1/|h| route's u + rsqrt's 1.6 u;
-///   n odd:  n.h = (n.l + n.v) rsqrt_normal(hh), as route_inverse_halfway_length.
-/// Lanes with hh < 16 fast::rsqrt_max_rel^2 (l = -v within the error of l: no halfway vector, as in
-/// route_inverse_halfway_length) or n.l + n.v <= 0, or off, get the base 0 and so the power 0.
-/// Unlike the exact route, l is not rounded before l + v: the fast mode does not promise that
-/// l = -v cancels bit for bit (the threshold above takes that case), and one rounding is more
-/// accurate than two.
+/// Blinn's specular term, fast mode, SIMD lanes, integer shininess n >= 1 (nl = n.l, 0 where off):
+///   h = d inv + v (fma), n.h = (n.l + n.v) / |h|;
+///   n even: ((n.l + n.v)^2 / hh)^(n/2), 1/hh by fast::detail::reciprocal_normal (no square root,
+///           one squaring fewer; base error u + reciprocal_max_rel / 2, below the 1/|h| route's);
+///   n odd:  (n.l + n.v) rsqrt_normal(hh).
+/// Base 0 where hh < 16 fast::rsqrt_max_rel^2 (l = -v within l's error), n.l + n.v <= 0, or off.
+/// l is not rounded before l + v: one rounding is more accurate (fast does not cancel l = -v exactly).
 template <class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, unsigned K>
 PHONG_INLINE constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Light& L, T f, T nl, T inv, const glm::vec<3, T, Q>& d,
                                                   const surface_frame<T, Q>& s, const integer_exponent<T, K>& m, mask_t<T> on)
 {
     using S = scalar_t<T>;
-    // n.(l + v); a point without a view vector (sees_viewer off: no specular term) has
-    // nv_seen = -inf, so that its numerator is not positive
+    // n.(l + v); nv_seen = -inf where the point has no view vector, so it is not positive
     const T numerator = nl + s.lanes.nv_seen;
     const mask_t<T> positive = math_traits<T>::both(on, numerator > T(0));
     if (!math_traits<T>::any(positive)) return; // every power 0: the sum would gain +0
@@ -516,12 +445,10 @@ PHONG_INLINE constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Li
     sum_of<term_kind::specular>(sums) += in_type<T>(specular_of(L)) * (f * power);
 }
 
-/// One light's terms added to the sums. Light: a light_source (light.hpp) whose scalar type U is T,
-/// or float lights in double arithmetic (the stable mode's wider route); visibility: unweighted or
-/// a weight in [0, 1]; m: the shininess, T (SIMD lanes in shade_batch: lane_shininess<T>, or
-/// integer_exponent<T> in the fast mode).
-/// Dot products are taken with d = L.xyz - w Q itself and scaled by 1/|d| only for lit pairs:
-/// the signs that decide the branches do not wait for a square root and a division.
+/// One light's terms added to the sums. Light: a light_source of scalar T, or float lights in
+/// double (the stable mode's wider route); visibility: unweighted or a weight in [0, 1]; m: T, or on
+/// SIMD lanes lane_shininess, integer_exponent or step_specular. Dot products use d itself, scaled
+/// by 1/|d| only for lit pairs: the branch signs do not wait for a square root.
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent, class W>
 PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, const Exponent& m, W visibility)
 {
@@ -548,9 +475,8 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
     add_ambient<F>(sums, L, f);
 
     const mask_t<T> on = lit<F>(s, dd, nd);
-    // Scalars skip an unlit pair. SIMD lanes (a mask that is not a bool) do not test: every term
-    // below is selected by `on` (a lane that is off may compute inf or NaN, never added), and a
-    // branch per light on its lanes' signs mispredicts where lit and unlit steps mix.
+    // Scalars skip an unlit pair. SIMD lanes select every term by `on` (off lanes may compute inf
+    // or NaN, never added): a branch per light would mispredict.
     if constexpr (std::is_same_v<mask_t<T>, bool>) {
         if (!on) return;
     }
@@ -561,17 +487,12 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
         if constexpr (F.spot == spot_model::none) inv = lit_inverse_length<F.mode>(dd); // lanes where dd is not normal are not lit: selected away
         nl = nd * inv;
     }
-    // Scalars with separate sums (light_sums): the diffuse term is added after the specular one,
-    // the same bits in either order, so that a light colour read for both terms (an adaptor
-    // returning one field as diffuse and specular) is not held in registers across the power,
-    // which needs them all (docs/batch.md). SIMD lanes and one sum (folded_sums): diffuse first
-    // (the better order there; docs/batch.md).
+    // Scalars with light_sums add diffuse last (the same bits), so a colour read by both terms is not
+    // held across the power; SIMD lanes and folded_sums: diffuse first (docs/batch.md).
     constexpr bool diffuse_last = std::is_floating_point_v<T> && std::is_same_v<Sums<T, Q>, light_sums<T, Q>>;
     if constexpr (F.diffuse && !diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
-    // Phong with the fast integer power (n >= 1): a point without a view vector has v = 0, so its
-    // cosine 2 (n.d)(n.v) - d.v is 0 and its power 0 (or v NaN: a poisoned point, cosine not > 0):
-    // no test of sees_viewer per pair; nor with step_specular, whose threshold and halfway_min
-    // turn the specular term off there.
+    // Phong with the fast integer power: no view vector means v = 0, a cosine 0 and power 0 (NaN v:
+    // poisoned): no sees_viewer test per pair; step_specular's threshold and halfway_min do the same.
     static_assert(!std::is_same_v<Exponent, step_specular<T>> || step_specular_route<F>);
     [[maybe_unused]] mask_t<T> specular_on;
     if constexpr ((F.specular == specular_model::phong && is_integer_exponent<Exponent, T>) ||

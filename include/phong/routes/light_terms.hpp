@@ -1,6 +1,5 @@
-// phong: the steps of one light that every evaluation route shares: f_i(Q) (attenuation and
-// spot), the ambient and diffuse sums, and the sums themselves. The routes (detail/exact.hpp,
-// detail/stable.hpp) differ in how they get l, n.l and the specular factor; these take those.
+// phong: the per-light steps every evaluation route shares: f_i(Q) (attenuation and spot), the
+// ambient and diffuse sums, and the sums themselves.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -22,10 +21,8 @@ struct light_sums {
     glm::vec<3, T, Q> specular{T(0)};
 };
 
-/// The sums of shade_batch with one material for all points: the material folded into the
-/// lights once per call (La_i ka, Ld_i kd, Ls_i ks), so every term of every light goes into one
-/// rgb. Three accumulators instead of light_sums' nine: the light loop keeps them in registers
-/// (AVX2 has 16), and finish has no material products left.
+/// shade_batch's sums with one material: the material folded into the lights once per call, so
+/// every term goes into one rgb (three accumulators in registers, not nine; no products in finish).
 template <class T, glm::qualifier Q>
 struct folded_sums {
     glm::vec<3, T, Q> total{T(0)};
@@ -89,15 +86,10 @@ PHONG_INLINE constexpr T facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<
 }
 
 /// f_i(Q) = attenuation(distance) * spot(l) * visibility: the light's weight at the point.
-/// distance = |L.xyz - Q| (validate: w is 0 or 1), read only with attenuation;
-/// l = the unit light vector (0 if none), read only with a spot. Directional lights (w = 0) are
-/// not attenuated. U is the light's own scalar type: float lights shaded in double keep float's
-/// floor under the attenuation's denominator (attenuation.hpp), so f is float's formula: a light
-/// at Q gives the same large finite value as in float, with the window applied as in float.
-/// visibility: unweighted, or the caller's weight in [0, 1] (phong::weighted: soft shadows).
-/// Light: a light_source (light.hpp), read through light_traits. LightScalar: the light's own
-/// scalar type, whose attenuation floor applies (float lights widened to double by the caller name
-/// float here, detail/simd/stable_lanes.hpp).
+/// distance = |L.xyz - Q|, read only with attenuation (directional lights: none); l = the unit
+/// light vector (0 if none), read only with a spot; visibility: unweighted or a weight in [0, 1].
+/// LightScalar: the light's own scalar type, whose attenuation floor applies, so float lights
+/// shaded in double give float's formula (a light at Q: the same large finite value).
 template <features F, class T, glm::qualifier Q, class Light, class W, class LightScalar = light_scalar_t<Light>>
 PHONG_INLINE constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_unused]] T distance, [[maybe_unused]] T w,
                                   [[maybe_unused]] const glm::vec<3, T, Q>& l, [[maybe_unused]] W visibility)
@@ -118,13 +110,11 @@ PHONG_INLINE constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_u
         else f = fa;
     }
     if constexpr (F.spot != spot_model::none) {
-        // The model reads the axis's direction: validate accepts an axis within 1e-3 of unit
-        // length, and a float axis is unit only to float precision (float lights shaded in double
-        // would otherwise carry that rounding into the wider route's once-rounded colour).
+        // validate accepts an axis within 1e-3 of unit length, and a float axis is unit only to
+        // float precision: normalized, so the wider route does not carry that rounding.
         decltype(auto) cone = spot_of(L);
         glm::vec<3, T, Q> s(cone.direction);
-        // A zero axis is no cone (spot_cone's convention: spot fields left at zero, as shader
-        // uniforms are, light the point). The cone below then reads s = 0 (finite, selected away).
+        // A zero axis is no cone (spot_cone's convention: zero spot fields light the point).
         const mask_t<T> has_cone = detail::dot(s, s) > T(0);
         if constexpr (std::is_same_v<U, T>) s = detail::normalize_unscaled(s); // |s| within 1e-3 of 1: in range
         else s = detail::normalize(s);

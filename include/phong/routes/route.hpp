@@ -1,5 +1,5 @@
-// phong: the evaluation route F picks (detail/exact.hpp or detail/stable.hpp), and the loop over a
-// point's lights: a std::array unrolled, a masked or weighted list (visibility.hpp), any input range.
+// phong: the evaluation route F picks (routes/exact.hpp or routes/stable.hpp), and the one loop over
+// a point's lights: a std::array unrolled, a masked or weighted list (visibility.hpp), any input range.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -20,8 +20,8 @@ namespace phong::detail {
 template <features F, class T, glm::qualifier Q>
 using frame_t = std::conditional_t<F.mode == evaluation::stable, stable::surface_frame<T, Q>, exact::surface_frame<T, Q>>;
 
-/// The point's frame (unit normal, view vector, whether both exist, poison), by F's route.
-/// given_view: the view vector for view_model::given (not read otherwise).
+/// The point's frame (unit normal, view vector, whether both exist, poison), by F's route
+/// (given_view: read only for view_model::given).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                             const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
@@ -31,9 +31,8 @@ PHONG_INLINE constexpr frame_t<F, T, Q> prepare(const glm::vec<3, T, Q>& positio
     else return exact::prepare<F>(position, normal, given_view, env, front_facing);
 }
 
-/// One light's terms added to the sums, by F's route (Light: a light_source, light.hpp, read
-/// through light_traits; m: the shininess, T, or exact::lane_shininess<T> / integer_exponent<T> in
-/// shade_batch's lanes; visibility: unweighted, or a weight that multiplies f).
+/// One light's terms added to the sums, by F's route (m: the shininess T, or a lane type in
+/// shade_batch; visibility: unweighted, or a weight that multiplies f).
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent, class W = unweighted>
 PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, const Light& L, const Exponent& m,
                                   W visibility = {})
@@ -45,10 +44,8 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& 
 template <class R> struct is_std_array : std::false_type {};
 template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::true_type {};
 
-/// Checks one light against validate(): a compile error in constant evaluation, an assertion in
-/// debug builds, nothing under NDEBUG (not even evaluated). Done as the light is shaded, so a
-/// single-pass range of lights is read once. Every light is checked as the light<U> it stands for
-/// (to_light: a copy, in debug builds and constant evaluation only).
+/// Checks one light against validate() as it is shaded, as the light<U> it stands for: a compile
+/// error in constant evaluation, an assertion in debug builds, nothing under NDEBUG.
 template <class Light>
 PHONG_INLINE constexpr void check_light([[maybe_unused]] const Light& L)
 {
@@ -59,9 +56,7 @@ PHONG_INLINE constexpr void check_light([[maybe_unused]] const Light& L)
     }
 }
 
-/// Checks one weight of weighted(): finite and >= 0 (a negative or NaN weight would give a
-/// negative or NaN colour). As check_light: a compile error in constant evaluation, the handler
-/// in debug builds, nothing under NDEBUG.
+/// Checks one weight of weighted(): finite and >= 0 (else a negative or NaN colour), as check_light.
 template <class W>
 PHONG_INLINE constexpr void check_weight([[maybe_unused]] W weight)
 {
@@ -81,21 +76,18 @@ template <class R> struct iterated_range { using type = R; };
 template <class R> struct iterated_range<masked_lights<R>> { using type = std::remove_cvref_t<R>; };
 template <class R, class W> struct iterated_range<weighted_lights<R, W>> { using type = std::remove_cvref_t<R>; };
 
-/// What shade<F> takes as lights: a range (masked() and weighted() ones too) whose elements are
-/// light_sources (light<T>, or a type with a light_traits specialization).
-/// (std::begin, not std::ranges: clang++ 14 with libstdc++ cannot compile its range concepts.)
+/// What shade<F> takes as lights: a range (masked() and weighted() ones too) of light_sources
+/// (std::begin: clang++ 14 with libstdc++ cannot compile std::ranges' concepts).
 template <class R> using list_element_t = decltype(*std::begin(std::declval<R&>()));
 template <class Lights>
 concept light_list = requires { typename list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>; } &&
                      light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>;
-/// What shade_incident<F> takes as lights: a range (masked() too) of incident_light_sources
-/// (light_traits without a position: shade_incident reads each light's direction from its incident).
+/// What shade_incident<F> takes as lights: a range (masked() too) of incident_light_sources.
 template <class Lights>
 concept incident_light_list = requires { typename list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>; } &&
                               incident_light_source<list_element_t<typename iterated_range<std::remove_cvref_t<Lights>>::type>>;
 
-/// The range a light list iterates: masked()'s or weighted()'s lights, or the list itself.
-/// (Not const where the list is not: a view such as std::views::filter iterates only as non-const.)
+/// The range a light list iterates (non-const where the list is: a filter view iterates only so).
 template <class Lights>
 PHONG_INLINE constexpr auto& light_range(Lights& lights)
 {
@@ -106,18 +98,12 @@ PHONG_INLINE constexpr auto& light_range(Lights& lights)
 /// each_listed_light without a second range.
 struct no_second_range {};
 
-/// The one loop over a light list (each_light's masked, weighted and plain lists, SIMD lanes
-/// included, and shade_incident's lights): visit(L, i, on) for the i-th light L of
-/// light_range(lights) in order, on = bit i of masked()'s mask (true for other lists; lights past
-/// bit 63 are off).
-/// second: a range with an entry per light, read by visit at index i (weighted()'s weights,
-/// shade_incident's incidents), or no_second_range. It is never read past (every build; reported
-/// by within_bounds with the message too_few): where the light range has a size, tested once per
-/// call (nothing is visited when second is shorter), else per light (the loop stops at the first
-/// light without an entry).
-/// PeelFirst: the first light visited before the loop, in straight-line code (shade_incident: its
-/// sums start at -0, so the first light's terms become the sums with no addition, and a list of
-/// one light has no loop at all). A std::array is not visited here: each_array_light unrolls it.
+/// The one loop over a light list (SIMD lanes and shade_incident included): visit(L, i, on) for the
+/// i-th light in order, on = bit i of masked()'s mask (true otherwise; past bit 63 off). second: a
+/// range with an entry per light (weights, incidents) or no_second_range, never read past (every
+/// build; within_bounds reports too_few): checked once per call where the range has a size, else
+/// per light. PeelFirst: the first light in straight-line code before the loop (shade_incident's
+/// -0 sums). A std::array is not visited here: each_array_light unrolls it.
 template <bool PeelFirst = false, class Lights, class Second, class Visit>
 PHONG_INLINE constexpr void each_listed_light(Lights& lights, [[maybe_unused]] const Second& second,
                                               [[maybe_unused]] const char* too_few, Visit&& visit)
@@ -155,9 +141,8 @@ PHONG_INLINE constexpr void each_listed_light(Lights& lights, [[maybe_unused]] c
 template <features F>
 inline constexpr features without_specular = F.with_specular(specular_model::none);
 
-/// The lights of a std::array, unrolled at compile time (each_light; a function rather than a
-/// lambda, so that it carries the same inlining attribute as every step of the light loop). An
-/// empty array reads none of its arguments.
+/// The lights of a std::array, unrolled at compile time (a function, not a lambda, to carry the
+/// light loop's inlining attribute). An empty array reads none of its arguments.
 template <features F, class Sums, class Frame, class Lights, class M, std::size_t... I>
 PHONG_INLINE constexpr void each_array_light([[maybe_unused]] Sums& sums, [[maybe_unused]] const Frame& s,
                                              [[maybe_unused]] const Lights& lights, [[maybe_unused]] M m, std::index_sequence<I...>)
@@ -173,9 +158,7 @@ PHONG_INLINE constexpr void check_light_if(const Light& L)
     else (void)L;
 }
 
-/// Every light's terms added to the sums: a std::array unrolled at compile time, a masked or
-/// weighted list (visibility.hpp), or any input range of lights (views included). Check: each
-/// light checked against validate() as it is shaded (check_light; false: checked by the caller).
+/// Every light's terms added to the sums (Check: check_light per light; false: the caller checked).
 template <features F, bool Check = true, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Frame,
           class Lights>
 PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&& lights, T m) // Frame: frame_t<F, T, Q>
@@ -197,8 +180,8 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
             if (on) detail::add_light<F>(sums, s, L, m, unweighted{});
         };
         if constexpr (std::is_floating_point_v<T> && !is_masked<R>::value) {
-            // The same loop twice, so each copy is compiled knowing whether the point has a normal
-            // and a view vector (g++ does not unswitch it by itself).
+            // The same loop twice, each compiled knowing whether the point has a normal and a view
+            // vector (g++ does not unswitch it).
             if (s.defined) each_listed_light(lights, no_second_range{}, nullptr, add);
             else each_listed_light(lights, no_second_range{}, nullptr, add);
         } else {
@@ -207,10 +190,8 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
     }
 }
 
-/// Every light's terms added to the sums (each_light; Sums: light_sums, or folded_sums in
-/// shade_batch with one material). A point without a view vector (at the
-/// eye, or a zero given v) keeps its diffuse term, which does not need v, and has no specular
-/// term: scalars run it with F's specular term removed (no per-light test), SIMD lanes mask it.
+/// Every light's terms added to the sums (light_sums, or folded_sums). A point without a view
+/// vector has no specular term: scalars run F without it, SIMD lanes mask it.
 template <features F, bool Check = true, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Lights>
 PHONG_INLINE constexpr void add_lights(Sums<T, Q>& sums, const frame_t<F, T, Q>& s, Lights&& lights, T m)
 {

@@ -1,14 +1,8 @@
-// phong: the stable evaluation route, features::mode = evaluation::stable for double, double SIMD
-// batches and float with features::precision = twofold (float's default, the wider route, is
-// detail/exact.hpp run in double; float SIMD batches on x86 and aarch64 take detail/simd/stable_lanes.hpp, and this
-// route only for steps with a shininess above 2^20). Vectors are rescaled by powers of two (exact) so that every
-// finite input is in range, and the unit vectors n, l, v (h), n.l and the specular chords are
-// carried twofold (detail/twofold.hpp) from the exact L.xyz - w Q; the specular power is
-// (1 - x)^m = exp(m log1p(-x)) of the half chord x = |r - v|^2 / 2 (|n - h|^2 / 2), so a high m
-// does not amplify the rounding of a cosine; where x > 1/2 it is c^m of the cosine c = 1 - x itself,
-// rounded once from the same twofold value, so a small c keeps its relative accuracy too. With features::stable_twofold_above = M > 0, pairs
-// whose shininess is at most M round each component once instead (about a third of the cost, an
-// error that grows like sqrt(m) eps). Bounds in phong/accuracy.hpp.
+// phong: the stable evaluation route (features::mode = stable: double, double SIMD lanes, float
+// twofold; float's default is routes/exact.hpp in double, float SIMD lanes ext/simd/stable_lanes.hpp).
+// Vectors are rescaled by powers of two (every finite input in range); n, l, v (h), n.l and the
+// chords are twofold from the exact L.xyz - w Q; the power is (1 - x)^m of the half chord x.
+// stable_twofold_above: docs/accuracy.md. Bounds in phong/accuracy.hpp.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -65,12 +59,9 @@ PHONG_INLINE constexpr twofold_vector<T, Q> difference_twofold(const glm::vec<3,
     return d;
 }
 
-/// The per-point frame: n and v twofold from the exact normal and the exact view vector (-Q, the
-/// given v, E.xyz - E.w Q). features::unit_inputs does not skip this: the twofold unit vectors are
-/// what the stable mode's accuracy rests on.
-/// Apart from exact::prepare (not the same steps in another arithmetic type): each vector here is
-/// a pair (hi, lo) from power-of-two rescaled inputs, where the exact frame rounds once, so the two
-/// frames' bits differ by design (accuracy.hpp bounds each).
+/// The per-point frame: n and v twofold from the exact normal and view vector (-Q, the given v,
+/// E.xyz - E.w Q), also under unit_inputs (the mode's accuracy rests on them). Apart from
+/// exact::prepare because its bits differ: pairs (hi, lo) from rescaled inputs where it rounds once.
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                const glm::vec<3, T, Q>& given_view, const environment<T, Q>& env,
@@ -84,19 +75,12 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
     if constexpr (F.view != view_model::eye_point) {
         e.hi = detail::unnormalized_view<F.view>(position, given_view, eye, env.eye.w);
     } else {
-        // d = E.xyz - E.w Q is formed as 2^(a+b) d = 2^a (E.xyz 2^b) - (E.w 2^a)(Q 2^b), which has
-        // d's direction exactly: 2^b brings the larger of E.xyz and Q to [1, 2), then 2^a the
-        // larger of E.xyz 2^b and E.w (E is homogeneous). In that order tiny E.xyz and Q are scaled
-        // up (exact) before anything is scaled down; every term is then at most 4, and a product
-        // (E.w 2^a)(Q_k 2^b), or a component scaled down, can be subnormal only where it is far
-        // below the largest term. Its rounding error is then not exact (a subnormal has no room for
-        // it), which matters only where d cancels to far below its terms: there (|d| < 2^-900 in
-        // double, 2^-100 in float) d is formed again with both terms scaled up by 2^1000 (float
-        // 2^120). Found: E.w = 2.5e-322 gave 1.4e-6 between scalar and SIMD lanes (a fuzzer); E =
-        // (0, 0, 0, 1e-5) with Q ~ 1e-315 gave 2e-3 against the model; E.w first (2^a before 2^b)
-        // lost subnormal E.xyz bits, 0.34 with E.xyz, Q ~ 1e-322 and E.w = 50. Where no
-        // intermediate is subnormal or overflows, every value is the unscaled one times a power of
-        // two: unit_twofold_of gives the same bits; and |E.w Q| > max leaves the viewer a direction.
+        // d = E.xyz - E.w Q as 2^(a+b) d = 2^a (E.xyz 2^b) - (E.w 2^a)(Q 2^b), exactly d's direction:
+        // 2^b brings the larger of E.xyz and Q to [1, 2), then 2^a the larger of E.xyz 2^b and E.w;
+        // scaling up first keeps tiny inputs' bits. A subnormal product's rounding error is inexact,
+        // which matters only where d cancels far below its terms (|d| < 2^-900 double, 2^-100
+        // float): d is then formed again with both terms scaled by 2^1000 (float 2^120). Otherwise
+        // unit_twofold_of gives the unscaled bits; |E.w Q| > max leaves the viewer a direction.
         using S = scalar_t<T>;
         constexpr bool is_float = std::is_same_v<S, float>;
         const T b = math_traits<T>::inverse_pow2_scale(detail::max(detail::max_abs(eye), detail::max_abs(position)));
@@ -148,7 +132,7 @@ struct light_unit {
     T nl, nl_lo, inv, length;
 };
 
-/// l and n.l to about eps^2 (detail/twofold.hpp), from the exact d = hi + lo.
+/// l and n.l to about eps^2 (core/twofold.hpp), from the exact d = hi + lo.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr light_unit<T, Q> light_twofold(const surface_frame<T, Q>& s, const twofold_vector<T, Q>& d)
 {
@@ -180,12 +164,10 @@ PHONG_INLINE constexpr light_unit<T, Q> light_rounded_once(const surface_frame<T
     return {hs * inv, vec3(T(0)), (nh + nlo) * (s.inv_normal_length * inv), T(0), inv, length};
 }
 
-/// c^m = (1 - x)^m from both roundings of the cosine (detail/twofold.hpp's cosine_complement):
-/// exp(m log1p(-x)) where x <= 1/2, c^m (pow_unit) elsewhere. Each takes the rounding with the
-/// smaller effect: x's moves c^m by m x / (1 - x) eps / 2 relative (below m eps / 2 for x <= 1/2),
-/// c's by m eps / 2, which for x > 1/2 (|m log2 c| > m) stays below the power's own |y| eps term.
-/// A SIMD batch computes the second power only when one of its lanes needs it.
-/// Edges: x >= 1 (c <= 0) gives 0, and 1 for m = 0 (pow(0, 0) = 1).
+/// c^m = (1 - x)^m from both roundings of the cosine (core/twofold.hpp's cosine_complement):
+/// exp(m log1p(-x)) where x <= 1/2, else pow_unit(c): each the rounding with the smaller effect
+/// (x's: m x / (1 - x) eps / 2 relative; c's: m eps / 2, below the power's |y| eps where x > 1/2).
+/// A SIMD batch takes the second power only where a lane needs it. Edges: x >= 1 gives 0 (1 for m = 0).
 template <class T>
 PHONG_INLINE constexpr T power_of_cosine(const cosine_complement<T>& p, T m)
 {
@@ -196,9 +178,8 @@ PHONG_INLINE constexpr T power_of_cosine(const cosine_complement<T>& p, T m)
     return detail::select(near_peak, detail::pow_one_minus(p.complement, m), far);
 }
 
-/// The specular factor (1 - x)^m, x = 1 - r.v or 1 - n.h from chords (specular.hpp's
-/// rounded-once steps, or detail/twofold.hpp's twofold ones with the cosine itself where it is
-/// small: power_of_cosine).
+/// The specular factor (1 - x)^m, x = 1 - r.v or 1 - n.h from chords (specular.hpp's once-rounded
+/// steps, or core/twofold.hpp's with the cosine itself where small: power_of_cosine).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T specular_factor(const surface_frame<T, Q>& s, const light_unit<T, Q>& u, bool twofold, T m)
 {
@@ -211,11 +192,9 @@ PHONG_INLINE constexpr T specular_factor(const surface_frame<T, Q>& s, const lig
     }
 }
 
-/// One light's terms added to the sums. A SIMD batch takes the twofold depth when any lane needs it.
-/// Apart from exact::add_light: d = L.xyz - w Q is carried with its rounding error and l, n.l and
-/// the specular chord are twofold (the exact step rounds each once and takes the power of the
-/// cosine), so the bits differ by design; the steps both share (f, the ambient and diffuse sums)
-/// are detail/light_terms.hpp's.
+/// One light's terms added to the sums (twofold where any lane needs it). Apart from exact::add_light
+/// because its bits differ: d carries its rounding error; l, n.l and the chord are twofold. The
+/// shared steps are light_terms.hpp's.
 template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class W>
 PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, T m, W visibility)
 {

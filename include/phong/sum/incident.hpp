@@ -1,6 +1,5 @@
-// phong: shading with what the renderer already has: each light's unit direction and distance
-// (a ray tracer's shadow ray, a rasterizer's constant directional light), the normal, and the view
-// vector (given per call, or one fixed direction); no position.
+// phong: shading from what the renderer already has: each light's unit direction and distance (a
+// shadow ray), the normal and the view vector (given, or one fixed direction); no position.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -23,9 +22,8 @@ struct incident {
     T distance = T(0);                             ///< |L.xyz - Q| >= 0, finite; read only with attenuation
 };
 
-/// A point's surface data as texture maps give it (kd, ks and the exponent per pixel): the terms
-/// of material<T, Q> that vary per point, without emission (0) and alpha (1). shade_incident
-/// takes it or a material<T, Q>.
+/// A point's surface data as texture maps give it: material<T, Q>'s per-point terms, without
+/// emission (0) and alpha (1). shade_incident takes it or a material<T, Q>.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct surface {
     glm::vec<3, T, Q> ka{T(0)}; ///< ambient reflectivity, as material::ka
@@ -39,8 +37,7 @@ namespace detail {
 template <class S> struct is_surface : std::false_type {};
 template <class T, glm::qualifier Q> struct is_surface<surface<T, Q>> : std::true_type {};
 
-/// The material a surface stands for (emission 0, alpha 1): built where it is read, so only the
-/// fields F reads are kept by the compiler.
+/// The material a surface stands for (emission 0, alpha 1), built where read.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr material<T, Q> material_of(const surface<T, Q>& s)
 {
@@ -64,14 +61,10 @@ PHONG_INLINE constexpr void check_incident([[maybe_unused]] const incident<T, Q>
     }
 }
 
-/// The per-point frame without a position: unit normal, view vector (given, or environment::eye's
-/// direction for fixed_direction; used as is under unit_inputs), whether both exist, the poison
-/// (NaN when the normal or the view input is not finite), n.v.
-/// Apart from exact::prepare, whose steps it follows: there is no position, so the NaN test reads
-/// the normal and the view input alone (exact::prepare's also reads |Q|^2), and fixed_direction's
-/// v is unit_of(eye) (exact_inverse_length: 0 where |eye|^2 is not a normal number) where
-/// exact::prepare normalizes with rescaling; one function for both would change one route's bits
-/// for a non-finite or non-unit eye.
+/// The per-point frame without a position: unit normal, view vector (given, or eye's direction for
+/// fixed_direction; as is under unit_inputs), whether both exist, the poison, n.v. Apart from
+/// exact::prepare because its bits differ: the NaN test reads no |Q|^2, and fixed_direction's v is
+/// unit_of(eye) where exact::prepare normalizes with rescaling (non-finite or non-unit eye).
 template <features F, class T, glm::qualifier Q>
 PHONG_INLINE constexpr exact::surface_frame<T, Q> incident_frame(const glm::vec<3, T, Q>& normal, const glm::vec<3, T, Q>& given_view,
                                                                  const environment<T, Q>& env, bool front_facing)
@@ -97,13 +90,9 @@ PHONG_INLINE constexpr exact::surface_frame<T, Q> incident_frame(const glm::vec<
     return {vec3(T(0)), unit_normal, v.unit, defined, v.ok, poison, nv, {}};
 }
 
-/// One light's terms from its given direction l and distance: f (attenuation of the distance,
-/// spot of l), the ambient term, and for a lit pair (the point has a normal and, where gated,
-/// n.l > 0) the diffuse term and the specular term (Phong: r.v = 2 (n.l)(n.v) - l.v; Blinn:
-/// n.h = (n.l + n.v) / |l + v|), as the exact route forms them from d = l, |d| = 1.
-/// Apart from exact::add_light: the light vector and distance are given, so there is no d to
-/// square, no 1/|d| and no range test of |d|^2 (exact::add_light's lit pair), and f reads the given
-/// distance; exact::add_light on d = l would add those steps (and their roundings) back.
+/// One light's terms from its given direction l and distance, as the exact route forms them from
+/// d = l, |d| = 1. Apart from exact::add_light because its bits differ: no |d|^2, no 1/|d|, no range
+/// test, and f reads the given distance (add_light on d = l would add those roundings back).
 template <features F, class T, glm::qualifier Q, class Light, class U>
 PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Light& L,
                                                const incident<U, Q>& in, T m)
@@ -127,13 +116,9 @@ PHONG_INLINE constexpr void add_incident_light(light_sums<T, Q>& sums, const exa
     if constexpr (F.diffuse) add_diffuse<F>(sums, L, f, nl, true);
 }
 
-/// The lights with their incidents (incidents[i] belongs to the i-th light of the list, masked
-/// or not), by the one light loop (each_light's, detail/route.hpp: each_listed_light): an
-/// incident list shorter than the light list is never read past (every build; reported by
-/// within_bounds), tested once per call where the list has a size (then no light is added), else
-/// per light (the lights past the incidents are not). The first light is added before the loop,
-/// in straight-line code that starts from the sums' -0 (evaluate_incident): there -0 + x = x is
-/// folded away, and a list of one light has no loop at all.
+/// The lights with their incidents (incidents[i] for the i-th light, masked or not) by the one light
+/// loop (each_listed_light): never read past a shorter incident list (within_bounds). The first
+/// light is added in straight-line code from the sums' -0 (evaluate_incident): -0 + x = x folds.
 template <features F, class T, glm::qualifier Q, class Lights, class Incidents>
 PHONG_INLINE constexpr void add_incident_lights(light_sums<T, Q>& sums, const exact::surface_frame<T, Q>& s, const Lights& lights,
                                                 const Incidents& incidents, T m)
@@ -145,8 +130,7 @@ PHONG_INLINE constexpr void add_incident_lights(light_sums<T, Q>& sums, const ex
                             });
 }
 
-/// The widened incident list of the stable mode's wider route is read lazily: incident<float>
-/// converted to double per light (exact).
+/// The wider route reads the incident list lazily: incident<float> converted to double per light.
 template <features F, class T, glm::qualifier Q, class Surface, class Lights, class Incidents>
 PHONG_INLINE constexpr shading_terms<T, Q> evaluate_incident(const glm::vec<3, T, Q>& normal, const glm::vec<3, T, Q>& view,
                                                              const Surface& surf, const Lights& lights, const Incidents& incidents,
@@ -154,17 +138,15 @@ PHONG_INLINE constexpr shading_terms<T, Q> evaluate_incident(const glm::vec<3, T
 {
     const material<T, Q>& mat = material_of(surf);
     const exact::surface_frame<T, Q> s = incident_frame<F>(normal, view, env, front_facing);
-    // Every sum starts at -0: -0 + x = x for every x, so the first light's terms become the sums
-    // with no addition (add_incident_lights). The colour has the same bits as from +0: total_of
-    // starts from emission + poison (+0 or more), which turns a -0 term into +0 as a +0 sum would.
+    // Every sum starts at -0 (-0 + x = x: the first light's terms become the sums). The colour has
+    // +0's bits: total_of starts from emission + poison, which turns a -0 term into +0.
     const glm::vec<3, T, Q> negative_zero(-T(0));
     light_sums<T, Q> sums{negative_zero, negative_zero, negative_zero};
     add_incident_lights<F>(sums, s, lights, incidents, mat.shininess);
     return terms_of<F>(sums, s, mat, env);
 }
 
-/// shade_incident's body: checks, then the exact formulas in T, or in double for float's stable
-/// mode with wider precision.
+/// shade_incident's body: checks, then the exact formulas in T (in double for float's wider mode).
 template <features F, class T, glm::qualifier Q, class Surface, class Lights, class Incidents>
 PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>& normal, const glm::vec<3, T, Q>& view, const Surface& surf,
                                                         const Lights& lights, const Incidents& incidents, const environment<T, Q>& env,
@@ -200,36 +182,22 @@ PHONG_INLINE constexpr color<F, T, Q> shade_incident_at(const glm::vec<3, T, Q>&
 /// The full model of shade<F> from what the renderer already has, for a feature set that reads no
 /// position (features::view = view_model::given or fixed_direction):
 ///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0) + ks sum_i f_i Ls_i s_i,
-/// with l_i = incidents[i].direction given (unit) and, for attenuation, d_i = incidents[i].distance:
-/// nothing of L_i - Q is recomputed, and no position is passed. s_i and f_i as shade<F>, from l_i.
-///
-/// normal: n (any length, normalized here; unit and used as given with features::unit_inputs).
-/// surf: a material<T, Q>, or a surface<T, Q> (ka, kd, ks, shininess per point, e.g. from texture
-/// maps: nothing else built per call). lights: a range of light<T> or of the renderer's own light
-/// type (light_traits), or masked(lights, bits); only the lights' colours, attenuation and spot
-/// are read (not their position, except w with light_kind::any: a light_traits specialization
-/// without position() is taken, incident_light_source). incidents: a random-access range
-/// (std::span, std::array, a C array) with incidents[i] for the i-th light of the list, masked
-/// or not (the light's direction from this point, and its distance).
-/// The viewer: view_model::given, the overload below with v; fixed_direction: environment::eye.xyz,
-/// normalized once per call, or used as given (unit) with features::unit_inputs.
-///
-/// Pre: an incident for every light of the list, masked or not (debug builds and constant
-/// evaluation report fewer, "phong::shade_incident: fewer incidents than lights"; in every build
-/// nothing is read past incidents: no light's terms are added then, or for a light range without
-/// a size those of the lights past the incidents are not); every incident's direction unit length (within
-/// 1e-3), distance finite and >= 0; n and v unit with unit_inputs (and environment::eye.xyz for
-/// fixed_direction); validate(surf as a material), validate(env), validate(light) for every light
-/// (these checked in debug builds and in constant evaluation, nothing under NDEBUG).
-/// Edges: normal = 0: no diffuse or specular term; a zero view vector: no specular term; NaN or inf
-/// in the normal or the view input read: every channel NaN; Blinn with l = -v: n.h taken as 0;
-/// m = 0: the specular base^0 = 1 wherever the specular term is on; a light whose distance is 0
-/// with c0 = 0: f capped as in shade<F>.
-/// Modes: exact and fast as shade<F> (the fast power); stable: float evaluated in double (the wider
-/// route), as shade<F>; T = double and stable_precision::twofold run the exact formulas (the given l
-/// is already rounded to T: the twofold route's error-free L - Q is not available).
-/// Result: shade<F>'s colour at the point for those l_i, d_i, within the exact bound of
-/// phong::accuracy for the same inputs (bit for bit in many cases).
+/// with l_i = incidents[i].direction (unit) and, for attenuation, d_i = incidents[i].distance given;
+/// s_i and f_i as shade<F>, from l_i.
+/// normal: any length (unit and used as is with unit_inputs). surf: a material<T, Q> or a
+/// surface<T, Q>. lights: a range of light<T> or of a light_traits type (position() optional:
+/// incident_light_source; w read with light_kind::any), or masked(lights, bits). incidents: a
+/// random-access range, incidents[i] for the i-th light, masked or not. The viewer: given (the
+/// overload below) or fixed_direction (eye.xyz, normalized once per call unless unit_inputs).
+/// Pre: an incident for every light (fewer is reported in debug builds and constant evaluation;
+/// nothing is read past them in any build); directions unit (within 1e-3), distances finite and
+/// >= 0; n, v (and eye.xyz for fixed_direction) unit with unit_inputs; validate(surf as a material),
+/// validate(env), validate(light) (checked in debug builds and constant evaluation).
+/// Edges as shade<F> (a zero normal, no view vector, l = -v, m = 0, distance 0 with c0 = 0); NaN or
+/// inf in the normal or the view input read makes every channel NaN.
+/// Modes: exact and fast as shade<F>; stable float: the wider route; double and twofold run the
+/// exact formulas (the given l is already rounded: no error-free L - Q).
+/// Result: shade<F>'s colour for those l_i, d_i, within phong::accuracy's exact bound.
 template <features F, class T, glm::qualifier Q, class Surface, class Lights, class Incidents>
 PHONG_INLINE constexpr color<F, T, Q> shade_incident(const glm::vec<3, T, Q>& normal, const Surface& surf, const Lights& lights,
                                                      const Incidents& incidents, const environment<T, Q>& env = {},

@@ -1,14 +1,6 @@
-// phong: the full multi-light sum, shade<features>(...), and the per-vertex pipeline of the GLSL ADS shader.
+// phong: the full multi-light sum, shade<features>(...), and the GLSL ADS shader's per-vertex
+// pipeline. Orchestration only: prepare the point, add every light, finish (routes/route.hpp).
 // SPDX-License-Identifier: MIT
-//
-// This header only orchestrates: prepare the point, add every light, finish (detail/route.hpp
-// picks F's route and loops over the lights). The arithmetic of each evaluation route lives in
-// its own unit, one small function per step of the data flow:
-// detail/exact.hpp (the exact mode, and the stable mode's wider route for float: the exact route
-// in double) and detail/stable.hpp (the stable mode's twofold route); the steps that every route
-// shares are in detail/light_terms.hpp and in the public term headers (direction.hpp,
-// attenuation.hpp, specular.hpp); the colour from the sums (color<F>, shading_terms, finish) is
-// shading_terms.hpp's.
 #pragma once
 
 #include "../routes/route.hpp"
@@ -32,7 +24,7 @@ namespace phong {
 namespace detail {
 
 /// validate(material) and validate(environment): a compile error in constant evaluation, an
-/// assertion in debug builds, nothing at all under NDEBUG (not even evaluated).
+/// assertion in debug builds, nothing under NDEBUG (not even evaluated).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const environment<T, Q>& env)
 {
@@ -75,8 +67,8 @@ PHONG_INLINE constexpr void check_unit([[maybe_unused]] const glm::vec<3, T, Q>&
     }
 }
 
-/// prepare, every light, finish: the terms of the model at one point in arithmetic type T (the
-/// lights' scalar type may be narrower: the wider route). Check: as each_light's.
+/// prepare, every light, finish: the model's terms at one point in arithmetic type T (the lights'
+/// may be narrower: the wider route).
 template <features F, bool Check = true, class T, glm::qualifier Q, class Lights>
 PHONG_INLINE constexpr shading_terms<T, Q> evaluate(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                 const glm::vec<3, T, Q>& given_view, const material<T, Q>& mat,
@@ -95,11 +87,9 @@ using arithmetic_t = std::conditional_t<widened<F, T>, double, T>;
 /// Which public entry point checks its inputs (check_inputs): the messages name it.
 enum class entry_point : unsigned char { shade, shade_incident };
 
-/// The entry checks of shade<F> (shade_terms<F>, shade_batch's point-by-point route) and of
-/// shade_incident<F>, written once: the lights are a light list (a static_assert naming
-/// light_traits), validate(material) and validate(environment), and unit_inputs' unit vectors (the
-/// normal; the view vector with view_model::given; environment::eye.xyz with fixed_direction).
-/// The value checks are debug-only (value_checks_on); the messages name the entry point.
+/// The entry checks of shade<F> and shade_incident<F>, written once: a light list (static_assert
+/// naming light_traits), validate(material), validate(environment), and unit_inputs' unit vectors
+/// (debug-only, value_checks_on); the messages name the entry point.
 template <features F, entry_point E, class Lights, class T, glm::qualifier Q>
 PHONG_INLINE constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q>& normal, [[maybe_unused]] const glm::vec<3, T, Q>& view,
                                          const material<T, Q>& mat, const environment<T, Q>& env)
@@ -126,9 +116,8 @@ PHONG_INLINE constexpr void check_inputs([[maybe_unused]] const glm::vec<3, T, Q
     }
 }
 
-/// shade<F>'s body for either view argument: parameters checked, then the route (float's stable
-/// mode: the exact route in double). The terms come in the arithmetic type. Check = false: no
-/// check of the parameters and lights (shade_batch checked them once per call).
+/// shade<F>'s body: checks, then the route (float's stable mode: the exact route in double), terms
+/// in the arithmetic type. Check = false: no checks (shade_batch checked once per call).
 template <features F, bool Check = true, class T, glm::qualifier Q, class Lights>
 PHONG_INLINE constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                                  const glm::vec<3, T, Q>& view, const material<T, Q>& mat,
@@ -149,50 +138,30 @@ PHONG_INLINE constexpr shading_terms<arithmetic_t<F, T>, Q> shade_at(const glm::
 } // namespace detail
 
 /// The full local lighting model at one point (classic Phong, 001 and 003 are presets of it):
-///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0)
-///                + ks sum_i f_i Ls_i s_i,
+///   I = emission + ka (La + sum_i f_i La_i) + kd sum_i f_i Ld_i max(n.l_i, 0) + ks sum_i f_i Ls_i s_i,
 ///   s_i = max(r_i.v, 0)^m (r_i = reflect(-l_i, n)) or max(n.h_i, 0)^m (h_i = normalize(l_i + v)),
 ///   f_i = attenuation(d_i) * spot_i,   l_i = normalize(L_i.xyz - L_i.w Q),
 /// with rgba = (I, alpha) when F.alpha. Each term is compiled only when F asks for it.
-///
-/// position, normal: Q and its normal (any length, normalized here; unit and used as given with
-/// features::unit_inputs) in the lights' coordinates.
-/// lights: light<T> (or light<U>) values, or the renderer's own light type read through its
-/// light_traits specialization (light.hpp: nothing is copied into a light<T>), from any input
-/// range: a std::array<light, N> (unrolled at compile time), std::span, std::vector, a view
-/// (std::views::filter of the lights a shadow test lets through), or masked(lights, bits) /
-/// weighted(lights, weights) (visibility.hpp). Each light is read once. Anything else (a type
-/// without light_traits) is a compile error that names light_traits.
-/// The viewer: per features::view (eye_at_origin: v = normalize(-Q); fixed_direction, eye_point:
-/// from env.eye). For view_model::given, use the overload below that takes v.
+/// position, normal: Q and its normal in the lights' coordinates (any length; unit and used as is
+/// with features::unit_inputs). lights: light<T> (or light<U>) values or the renderer's own type
+/// through light_traits (light.hpp; nothing copied), from any input range (std::array: unrolled;
+/// span, vector, views) or masked() / weighted() of one (visibility.hpp); each read once; anything
+/// else is a compile error naming light_traits. The viewer per features::view (eye_at_origin:
+/// v = normalize(-Q); fixed_direction, eye_point: from env.eye; given: the overload below).
 /// front_facing: read only for facing::flag.
-///
-/// Pre: validate(mat), validate(env) and validate(L) for every light, weights of weighted() finite
-/// and >= 0 (checked: a compile error in constant evaluation, the precondition handler with a
-/// message naming the field in debug builds, detail/config.hpp; nothing under NDEBUG).
-/// Edges (finite input never gives NaN or inf):
-///  * a light at Q (or a directional light with xyz = 0): no direction; that light adds only its
-///    ambient term;
-///  * normal = 0: no diffuse or specular from any light;
-///  * no view vector (Q at the eye, a zero given v): the diffuse terms are kept (they do not need
-///    v; as OpenGL implementations do), no specular term;
-///  * Blinn with l = -v: n.h taken as 0 (0 for m > 0, 1 for m = 0);
-///  * m = 0: the specular base^0 = 1 wherever the specular term is on (pow(0, 0) = 1);
+/// Pre: validate(mat), validate(env), validate(L) for every light, weighted() weights finite and
+/// >= 0 (a compile error in constant evaluation, the precondition handler in debug builds, nothing
+/// under NDEBUG). Edges (finite input never gives NaN or inf):
+///  * a light at Q (or directional with xyz = 0): only its ambient term;
+///  * normal = 0: no diffuse or specular; no view vector (Q at the eye, a zero v): diffuse only;
+///  * Blinn with l = -v: n.h = 0;  m = 0: the specular base^0 = 1 wherever the term is on;
 ///  * c0 = 0 and d -> 0: f capped at 1 / attenuation_denominator_min<T>;
-///  * NaN or inf in position, normal or the view input read (eye_point: env.eye; given: v):
-///    every channel is NaN (not kept when features::unit_inputs' precondition is broken).
-/// Accuracy: per F.mode and input class, the constants phong::accuracy::bounds<M, T, P> (tested in
-/// tests/accuracy.test.cpp, table in README.md). exact: a vector whose squared length is not a
-/// normal number (|L - Q|, |n| or |Q| below ~1.1e-19 or above ~1.8e19 in float, 1.5e-154 and
-/// 1.3e154 in double) is dropped: its light gives 0 (relative error 1), never NaN. stable: every
-/// finite input. Float with F.precision = wider (the default): the exact formulas evaluated in
-/// double (every float input is exact there and no square of one overflows or underflows) and
-/// rounded once: within 1 ulp, correctly rounded but for near-ties, m = 1e5 and n.l ~ 1e-6
-/// included, spot lights too (the model reads the direction of a spot axis, which validate
-/// accepts within 1e-3 of unit length: every route normalizes it, the wider route in double).
-/// Elsewhere a spot adds its own conditioning: the cone cosine's few eps of rounding times the
-/// spot's slope (smoothstep: up to 1.5 / (cos_inner - cos_outer); OpenGL: e / c). Double, and float with F.precision = twofold: unit vectors, n.l and the specular
-/// chords carried twofold (detail/twofold.hpp), within a few ulp on the same classes.
+///  * NaN or inf in position, normal or the view input read: every channel NaN (not kept when
+///    unit_inputs' precondition is broken).
+/// Accuracy (phong::accuracy::bounds<M, T, P>; docs/accuracy.md): exact drops a vector whose squared
+/// length is not a normal number (its light gives 0, never NaN); stable covers every finite input:
+/// float wider (the default) is the exact formulas in double rounded once (within 1 ulp, spot lights
+/// too); double, and float twofold, carry unit vectors, n.l and the chords twofold (a few ulp).
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_INLINE constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                         const material<T, Q>& mat, Lights&& lights,
@@ -203,11 +172,10 @@ PHONG_INLINE constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, c
     return color<F, T, Q>(detail::total_of<F>(detail::shade_at<F>(position, normal, unused, mat, static_cast<Lights&&>(lights), env, front_facing)));
 }
 
-/// shade<F> with the view vector given per call (features::view = view_model::given): view is
-/// the vector from the point toward the viewer, any length (unit with features::unit_inputs).
-/// A ray tracer passes -ray.dir: right for primary, reflected and refracted rays alike (an eye
-/// point is right for primary rays only). Everything else as above; a NaN or inf view vector
-/// makes every channel NaN, a zero one gives no diffuse or specular term.
+/// shade<F> with the view vector given per call (view_model::given): from the point toward the
+/// viewer, any length (unit with unit_inputs). A ray tracer passes -ray.dir (right for every ray
+/// kind; an eye point is right for primary rays only). A NaN or inf view makes every channel NaN,
+/// a zero one gives no diffuse or specular term.
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_INLINE constexpr color<F, T, Q> shade(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                         const glm::vec<3, T, Q>& view, const material<T, Q>& mat, Lights&& lights,
@@ -230,12 +198,10 @@ PHONG_INLINE constexpr shading_terms<A, Q> poisoned(shading_terms<A, Q> t)
 }
 } // namespace detail
 
-/// The same model as shade<F>, with its terms returned separately (emission, ambient, diffuse,
-/// specular, alpha; see shading_terms), for renderers that weight, tone-map or store them apart.
-/// terms.sum() (emission + ambient + diffuse + specular, in that order) is shade<F>'s colour bit
-/// for bit. The terms are in shade<F>'s arithmetic type: double for float's stable mode (the
-/// wider route, whose colour is the double sum rounded once: float(terms.sum()) is shade<F>'s
-/// colour), T otherwise. Arguments, preconditions and edges as shade<F>.
+/// shade<F>'s model with its terms apart (emission, ambient, diffuse, specular, alpha), for renderers
+/// that weight, tone-map or store them. terms.sum() is shade<F>'s colour bit for bit; the terms are
+/// in shade<F>'s arithmetic type (double for float's stable mode: float(terms.sum()) is the colour).
+/// Arguments, preconditions and edges as shade<F>.
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_INLINE constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(const glm::vec<3, T, Q>& position, const glm::vec<3, T, Q>& normal,
                                                                             const material<T, Q>& mat, Lights&& lights,
@@ -257,13 +223,11 @@ PHONG_INLINE constexpr shading_terms<detail::arithmetic_t<F, T>, Q> shade_terms(
     return detail::poisoned(detail::shade_at<F>(position, normal, view, mat, static_cast<Lights&&>(lights), env, front_facing));
 }
 
-/// the GLSL ADS shader's per-vertex pipeline (phong.vert, diffuse.vert): object-space position and normal,
-///   eyeCoords = ModelView * (p, 1),  tnorm = normalize(NormalMatrix * n),
-/// then shade<F>(eyeCoords.xyz, tnorm, ...) with lights in eye coordinates.
-/// Pre: model_view affine (last row 0, 0, 0, 1), as in the seed, which drops eyeCoords.w.
-/// normal_matrix(model_view) gives NormalMatrix. Everything else as shade<F> (F.view must not be
-/// view_model::given: no per-vertex v here), with transform_normal's edges for the normal; a
-/// vertex whose eye coordinates overflow T is shaded as an inf position (NaN in every channel).
+/// The GLSL ADS shader's per-vertex pipeline (phong.vert, diffuse.vert):
+///   eyeCoords = ModelView * (p, 1),  tnorm = normalize(NormalMatrix * n),  then shade<F>(eyeCoords.xyz, tnorm, ...)
+/// with lights in eye coordinates. Pre: model_view affine (eyeCoords.w dropped, as the seed does);
+/// normal_matrix(model_view) gives NormalMatrix; F.view not given. Edges as shade<F> and
+/// transform_normal; eye coordinates that overflow T shade as an inf position (NaN in every channel).
 template <features F, class T, glm::qualifier Q, class Lights>
 PHONG_INLINE constexpr color<F, T, Q> shade_vertex(const glm::vec<3, T, Q>& vertex_position, const glm::vec<3, T, Q>& vertex_normal,
                                                const glm::mat<4, 4, T, Q>& model_view, const glm::mat<3, 3, T, Q>& normal_mat,

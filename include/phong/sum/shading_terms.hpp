@@ -17,13 +17,11 @@ namespace phong {
 template <features F, class T, glm::qualifier Q = glm::defaultp>
 using color = std::conditional_t<F.alpha, glm::vec<4, T, Q>, glm::vec<3, T, Q>>;
 
-/// The model's terms at one point, each an rgb (shade_terms<F>). Their sum in this order,
-///   emission + ambient + diffuse + specular,
-/// is shade<F>'s colour bit for bit (terms F leaves out are 0; with g++ and FMA instructions on,
-/// e.g. -march=native, only under -ffp-contract=off, else within the exact bound:
-/// docs/compilers.md). emission is the material's emission (features::emission), ambient
-/// ka (La + sum_i f_i La_i), diffuse kd sum_i f_i Ld_i max(n.l_i, 0), specular ks sum_i f_i Ls_i
-/// s_i; alpha the material's alpha. For a point with NaN or inf input every term is NaN.
+/// The model's terms at one point, each an rgb (shade_terms<F>): emission, ambient
+/// ka (La + sum_i f_i La_i), diffuse kd sum_i f_i Ld_i max(n.l_i, 0), specular ks sum_i f_i Ls_i s_i
+/// (0 where F leaves a term out), alpha the material's. emission + ambient + diffuse + specular, in
+/// that order, is shade<F>'s colour bit for bit (with FMA contraction on, within the exact bound:
+/// docs/compilers.md). For a point with NaN or inf input every term is NaN.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct shading_terms {
     glm::vec<3, T, Q> emission; ///< the material's emission
@@ -74,11 +72,9 @@ PHONG_INLINE constexpr color<F, T, Q> finish(const light_sums<T, Q>& sums, const
     return total_of<F>(terms_of<F>(sums, s, mat, env));
 }
 
-/// The colour from folded sums (shade_batch with one material: the lights carry ka, kd and ks,
-/// and the total started at the point-independent part plus the poison, emission + ka La +
-/// poison): the total, alpha appended (mat.alpha + poison, as terms_of). The poison added first
-/// rather than last: the same colours (the total is never -0 then; x + 0 = x otherwise), and
-/// the poison is not held across the light loop.
+/// The colour from folded sums (one material: the lights carry ka, kd, ks; the total started at
+/// emission + ka La + poison), alpha appended (mat.alpha + poison). The poison added first: the same
+/// colours (the total is never -0 then), and it is not held across the light loop.
 template <features F, class T, glm::qualifier Q, class Frame>
 PHONG_INLINE constexpr color<F, T, Q> finish(const folded_sums<T, Q>& sums, [[maybe_unused]] const Frame& s,
                                          [[maybe_unused]] const material<T, Q>& mat, const environment<T, Q>&)

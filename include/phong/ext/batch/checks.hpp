@@ -33,9 +33,8 @@ inline bool bytes_overlap(const void* p, std::size_t bytes, const void* q, std::
     return before(a, b + bytes_q) && before(b, a + bytes);
 }
 
-/// Memory that shade_batch reads while it writes, with the span's name: none for one shared
-/// material (copied into lanes first), the N materials when per point, a table's entries
-/// (gathered per step) and its N ids.
+/// Memory that shade_batch reads while it writes, with the span's name: per-point materials, a
+/// table's entries and its ids (a shared material is copied into lanes first).
 struct byte_range {
     const void* p = nullptr;
     std::size_t bytes = 0;
@@ -63,16 +62,11 @@ inline const char* overlap_message(const char* written, const char* read, bool i
     return buffer;
 }
 
-/// shade_batch's aliasing rule, checked in every build (O(1): at most 4 written and 16 read
-/// ranges): the memory it writes (the first n elements of each output channel, or of the
-/// interleaved colours) overlaps no memory it reads point by point (the first n coordinates of
-/// positions, normals and views, materials when per point, a table and its ids, front_facing
-/// flags, light masks), nor another output channel. Returns nullptr, or the message naming both
-/// spans. One exception: an SoA output channel may be exactly an SoA input coordinate span (same
-/// data(), whole length n), i.e. shading in place. That is safe because each step reads its
-/// points' coordinates (into lanes, or padded copies for the tail) before it stores their colours,
-/// and never stores to an element a later step reads. Lights, a shared material and the
-/// environment are copied into lanes before the first store: no constraint.
+/// shade_batch's aliasing rule, checked in every build (O(1)): what it writes overlaps nothing it
+/// reads point by point (coordinates, per-point materials, a table and its ids, flags, masks), nor
+/// another output. Exception: an SoA output channel may be exactly an SoA input coordinate span
+/// (shading in place: each step reads its points before it stores their colours). Returns nullptr,
+/// or the message naming both spans.
 template <int channels, class T, glm::qualifier Q, class Points, class Materials, class Output>
 const char* output_overlap(const Points& points, const Materials& materials, const Output& out, std::size_t n)
 {
@@ -121,9 +115,8 @@ const char* output_overlap(const Points& points, const Materials& materials, con
 }
 
 /// A memory-safety precondition of shade_batch (span lengths, overlap): O(1), checked in every
-/// build, NDEBUG included (as hardened standard libraries check std::span), through the
-/// precondition handler (default: print the message and abort). Returns ok: when a handler
-/// returns, shade_batch writes nothing.
+/// build (as hardened standard libraries check std::span) through the precondition handler. Returns
+/// ok: when a handler returns, shade_batch writes nothing.
 inline bool memory_safe(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
                         int line = PHONG_DETAIL_CALLER_LINE) noexcept
 {
@@ -137,16 +130,14 @@ inline bool memory_safe(bool ok, const char* message, const char* file = PHONG_D
     return ok;
 }
 
-/// Number of vectors in an SoA or AoS input (SoA: the three spans' common length, or a length
-/// no valid input has when they differ).
+/// Number of vectors in an SoA or AoS input (SoA spans of different lengths: a length no input has).
 template <class T> std::size_t vec3_count(const soa3<T>& v)
 {
     return v.y.size() == v.x.size() && v.z.size() == v.x.size() ? v.x.size() : std::size_t(-1);
 }
 template <class T, glm::qualifier Q> std::size_t vec3_count(std::span<const glm::vec<3, T, Q>> v) { return v.size(); }
 
-/// "shade_batch: <span>[<index>]: <message>", formatted into a per-thread buffer: the message of
-/// a failed precondition on one entry of a span names the entry (debug builds, on failure only;
+/// "shade_batch: <span>[<index>]: <message>" in a per-thread buffer (debug builds, on failure only;
 /// valid until the thread's next call).
 inline const char* entry_message(const char* span, std::size_t index, const char* message) noexcept
 {
@@ -155,12 +146,10 @@ inline const char* entry_message(const char* span, std::size_t index, const char
     return buffer;
 }
 
-/// shade_batch's preconditions, through the precondition handler. In every build: the span
-/// lengths (each message naming the span) and the aliasing rule (naming both spans), O(1) checks
-/// that keep memory safe; shade nothing when one fails (a handler that returns leads to no read or
-/// write past a span). Debug builds only: valid materials, lights and environment, a span's entry
-/// named by its index. Returns whether to shade: not after a failed memory check, nor, in every
-/// build, with an empty material table (nothing to read).
+/// shade_batch's preconditions through the precondition handler: in every build the span lengths and
+/// the aliasing rule (memory safety: a failure shades nothing); in debug builds valid materials,
+/// lights and environment (naming the entry). Returns whether to shade: not after a failed memory
+/// check, nor with an empty material table.
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
 bool check_batch_inputs(const Points& points, const Materials& materials, [[maybe_unused]] std::span<const light<T, Q>> lights,
                         const Output& out, [[maybe_unused]] const environment<T, Q>& env, std::size_t n)

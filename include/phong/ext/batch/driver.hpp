@@ -24,22 +24,18 @@
 
 namespace phong::detail {
 
-// g++ -O1 reports `in` below as maybe uninitialized when it passes the array to shade_lanes, which
-// reads in[k] only for k < steps, all loaded first: a false positive (found by CI's consumer build
-// with PHONG_NO_XSIMD -O1 -march=native). Silenced for this function only; with xsimd the region
-// opened before <xsimd/xsimd.hpp> covers it already.
+// g++ -O1 reports `in` below as maybe uninitialized (shade_lanes reads in[k] only for k < steps,
+// all loaded first): silenced here (with xsimd, backend.hpp's region covers it already).
 #if defined(__GNUC__) && !defined(__clang__)
 #  pragma GCC diagnostic push
 #  pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-/// Material lanes kept per call of shade_lanes for steps of mixed materials (per-point
-/// materials; a table's full steps are looked up in shade_lanes): a call ends at the step that
-/// would need one more.
+/// Material lanes kept per call of shade_lanes for steps of mixed materials (per-point materials, a
+/// table's tail): a call ends at the step that would need one more.
 inline constexpr std::size_t step_material_slots = 8;
 
-/// Points io's inputs at steps i, i + W, ... (steps of count points): full steps of
-/// points_in_place layouts where they are (SoA spans, stride W; AoS arrays, stride 3W), else
-/// copies of the lanes in in_block (at most B steps: the caller's steps <= B then).
+/// Points io's inputs at steps i, i + W, ...: full steps of points_in_place layouts where they are
+/// (stride W SoA, 3W AoS), else copies in in_block (at most B steps).
 template <features F, class V, class Points, class T, glm::qualifier Q, std::size_t B, std::size_t W>
 void stream_inputs(step_stream<V, T>& io, std::size_t i, std::size_t steps, std::size_t count, const Points& points,
                    T (&in_block)[B][9][W])
@@ -94,8 +90,7 @@ void stream_outputs(step_stream<V, T>& io, std::size_t i, std::size_t count, con
     io.out_stride = 4 * W;
 }
 
-/// The colours of steps i, i + W, ... from out_block to the output (where stream_outputs put them
-/// there).
+/// The colours of steps i, i + W, ... from out_block to the output (where stream_outputs put them).
 template <features F, class V, class T, glm::qualifier Q, class Output, std::size_t B, std::size_t W>
 void store_blocks(const step_stream<V, T>& io, std::size_t i, std::size_t steps, std::size_t count, const Output& out,
                   const T (&out_block)[B][4][W])
@@ -119,9 +114,8 @@ const std::uint64_t* step_masks(const Points& points, std::size_t i, std::size_t
     return tail_bits;
 }
 
-/// The material lanes of steps i, i + W, ... (per-point materials, or a table's tail): a pointer
-/// per step, to a table's lanes as they are or to one of the slots; returns the steps that got
-/// one (fewer than `steps` when the slots ran out: the next step might need one more).
+/// The material lanes of steps i, i + W, ... (per-point materials, or a table's tail), a pointer per
+/// step; returns the steps that got one (fewer than `steps` when the slots ran out).
 template <class V, glm::qualifier Q, class MaterialLanes, std::size_t Slots, std::size_t MaxSteps>
 std::size_t point_step_materials(const MaterialLanes& materials, std::size_t i, std::size_t steps, std::size_t count,
                                  const material<V, Q>* (&step_material)[MaxSteps], material_slot<V, Q> (&slots)[Slots])
@@ -135,15 +129,9 @@ std::size_t point_step_materials(const MaterialLanes& materials, std::size_t i, 
     return k < steps && used == Slots ? k : steps;
 }
 
-/// Up to call_steps batch steps from point i (steps full steps of W points, or one step of
-/// count < W points: a tail), through one call of shade_lanes; returns the steps shaded (fewer
-/// than `steps` when the call ran out of step_material_slots). Full SoA steps, full AoS steps
-/// (aos_in_registers) and light masks of full steps are read in place, full steps' SoA or
-/// interleaved rgb colours written in place. `materials` gives each step's material lanes
-/// (shared_lanes, per_point_lanes or table_lanes); materials that differ per step go in one call
-/// of several steps in the exact mode (a table's full steps: looked up by shade_lanes in its step
-/// loop; per-point materials and a table's tail: a pointer per step, to a table's lanes as they
-/// are or to a slot), one step per call in the others.
+/// Up to call_steps steps from point i (full steps, or one tail step) through one call of
+/// shade_lanes; returns the steps shaded (fewer when step_material_slots ran out). Per-step
+/// materials go several steps per call in the exact mode, one step per call otherwise.
 template <features F, class V, class Points, class T, glm::qualifier Q, class MaterialLanes, class Output>
 std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t count, const Points& points,
                                const MaterialLanes& materials, std::span<const light<V, Q>> lights,
@@ -164,8 +152,7 @@ std::size_t shade_points_steps(std::size_t i, std::size_t steps, std::size_t cou
     material_slot<V, Q> slots[materials_per_step ? step_material_slots : 1];
     if constexpr (materials_per_step)
         if (!look_up_in_loop) steps = point_step_materials(materials, i, steps, count, step_material, slots);
-    // Full steps in place are read and written where they are; the rest goes through these
-    // blocks (in place: only a tail, one step).
+    // Full steps in place are read and written where they are; the rest goes through these blocks.
     constexpr std::size_t block_steps = in_place_steps<F, Points, Output, V, T, Q> ? 1 : block_steps_per_call;
     alignas(64) T in_block[block_steps][9][W];
     alignas(64) T out_block[block_steps][4][W];
@@ -286,9 +273,8 @@ void shade_points_lanes(const Points& points, const Materials& materials, std::s
     }
 }
 
-/// shade_batch over soa_points or aos_points: preconditions checked (check_batch_inputs), then the
-/// lanes (shade_points_lanes), or point by point where the lanes would have no fused multiply-add
-/// (PHONG_LANES_WITHOUT_FMA: shade_points_one_by_one). Materials: material<T, Q> (one for all), a
+/// shade_batch over soa_points or aos_points: check_batch_inputs, then the lanes, or point by point
+/// without fused multiply-add (PHONG_LANES_WITHOUT_FMA). Materials: material<T, Q> (one for all), a
 /// span of N materials (one per point) or material_table<T, Q> (a table and N ids).
 template <features F, class T, glm::qualifier Q, class Points, class Materials, class Output>
 void shade_points_impl(const Points& points, const Materials& materials, std::span<const light<T, Q>> lights,

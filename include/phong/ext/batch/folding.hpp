@@ -23,8 +23,7 @@
 namespace phong::detail {
 
 /// The lights' ambient terms La_i f_i do not depend on the point (f_i = 1, or ambient not
-/// attenuated): shade_batch with one material and no masks adds their sum once per call (a
-/// per-light constant hoisted), not once per light per step.
+/// attenuated): with one material and no masks, shade_batch adds their sum once per call.
 template <features F>
 inline constexpr bool ambient_hoistable = F.light_ambient && (!F.attenuate_ambient || ((F.attenuation == attenuation_model::none ||
                                                                                        F.lights == light_kind::directional) &&
@@ -35,10 +34,8 @@ template <features F>
 inline constexpr features ambient_hoisted = F.with_light_ambient(false);
 
 /// Whether one material can be folded into the lights: every product La_i ka, Ld_i kd, Ls_i ks is
-/// 0 exactly (a zero factor) or a normal number. A product lost to underflow would drop a term
-/// that f_i (up to the attenuation cap, ~1e38 in float) may scale back to a visible size (found by
-/// tests/fuzz/fuzz_batch.cpp: kd 2e-19, Ld 1e-30, f 3e28); one that overflows would turn a
-/// finite colour into inf.
+/// 0 exactly or a normal number. An underflowed product would drop a term f_i (up to ~1e38 in float)
+/// may scale back to a visible size; an overflowed one would turn a finite colour into inf.
 template <class T, glm::qualifier Q>
 bool foldable(const material<T, Q>& m, std::span<const light<T, Q>> lights)
 {
@@ -67,9 +64,8 @@ std::vector<light<V, Q>> lane_lights_of(std::span<const light<T, Q>> lights, con
     return lanes;
 }
 
-/// The environment in lanes. With one material for all points, its ambient is the folded sums'
-/// start (shade_lanes): emission + ka La, and + ka sum_i La_i where the lights' ambient terms are
-/// hoisted (ambient_hoistable, no masks).
+/// The environment in lanes. With one material, its ambient is the folded sums' start: emission +
+/// ka La, + ka sum_i La_i where hoisted (ambient_hoistable, no masks).
 template <features F, class V, class T, glm::qualifier Q, class Materials>
 environment<V, Q> lane_environment(const environment<T, Q>& env, const Materials& materials, std::span<const light<T, Q>> lights,
                                    [[maybe_unused]] bool masks, [[maybe_unused]] bool fold)

@@ -25,8 +25,7 @@
 
 namespace phong::detail {
 
-/// Whether shade_batch runs F on lanes V through detail/simd/stable_lanes.hpp (the stable mode on
-/// float lanes of x86 and aarch64).
+/// Whether shade_batch runs F on lanes V through ext/simd/stable_lanes.hpp (float stable lanes).
 template <features F, class V> inline constexpr bool stable_lanes_route =
 #if PHONG_STABLE_LANES
     F.mode == evaluation::stable && stable_lanes::applies<V>;
@@ -40,14 +39,9 @@ template <features F, class V> inline constexpr bool stable_lanes_route =
 #  define PHONG_BATCH_NOINLINE
 #endif
 
-/// Steps per call of shade_lanes: the per-call work (entry, the hoisted constants, the return) is
-/// shared by that many steps, and the out-of-order core overlaps one step's long dependent chain
-/// (normalizations, the power's polynomial) and its loads from memory with the next step's, which
-/// a call per step kept apart. Steps read and written in place (SoA points or AoS points with
-/// the transposes in registers; SoA colours or interleaved rgb likewise) take 128 per call, steps
-/// through the call's blocks 8 (a block of 32 steps would be 26 KiB); the choice of those numbers
-/// is measured in docs/batch.md. The arrays per step of a call (per-step material pointers,
-/// facing masks) exist only where they are used.
+/// Steps per call of shade_lanes: the per-call work is shared, and the core overlaps one step's
+/// long chains and loads with the next step's. 128 for steps read and written in place, 8 for
+/// steps through the call's blocks (docs/batch.md). The per-step arrays exist only where used.
 inline constexpr std::size_t steps_per_call = 128;
 inline constexpr std::size_t block_steps_per_call = 8;
 /// Whether full steps of these points are read in place, and full steps' colours written in place.
@@ -63,9 +57,8 @@ template <features F, class Points, class Output, class V, class T, glm::qualifi
 inline constexpr std::size_t call_steps = in_place_steps<F, Points, Output, V, T, Q> ? steps_per_call : block_steps_per_call;
 
 #if PHONG_STABLE_LANES
-/// The stable mode's steps on float lanes (detail/simd/stable_lanes.hpp): the geometry of every
-/// pair in double lanes (wide_lights: the lights in double), the power and the sums in float;
-/// arguments as shade_lanes'.
+/// The stable mode's steps on float lanes (ext/simd/stable_lanes.hpp; wide_lights: the lights in
+/// double); arguments as shade_lanes'.
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
 PHONG_LANES_INLINE void shade_stable_steps(const step_stream<V, T>& io, std::size_t first, std::size_t steps, const material<V, Q>& mat,
                                            std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
@@ -96,28 +89,17 @@ PHONG_LANES_INLINE void shade_stable_steps(const step_stream<V, T>& io, std::siz
 }
 #endif
 
-/// The lanes' colours, step by step: prepare, every (visible) light, finish, for each of `steps`
-/// steps from step `first` of the stream (its step first + k in, its colour first + k out). The
-/// caller passes the stream it built, unchanged (a copy per call, offset to the step, costs time:
-/// docs/batch.md). Not inlined, on purpose: every layout (soa3, soa_points, aos_points; either
-/// output) calls this one compiled function, so the compiler's choices (FMA contraction above
-/// all) are the same for all of them and the layouts agree bit for bit (inlined, AoS and SoA
-/// differed by an ulp at -march=native). Flattened: every call inside (the light loop's
-/// add_light, the power, xsimd's kernels) is inlined into it, so the point's frame and sums stay
-/// in registers across the light loop.
-/// bits: W light masks per step (the k-th step from `first`: bits + k W; 0 past the tail), or
-/// null; count: the live lanes of each step (W, or a tail's count with steps = 1). Folded: the
-/// lights carry the material's ka, kd and ks (one material for all points, shade_points_impl):
-/// folded_sums, else light_sums. Folded, env.ambient is not the scene's ambient but the colour's
-/// point-independent part, emission + ka La, + ka sum_i La_i when hoisted (ambient_hoisted:
-/// without masks, the loop runs without the lights' ambient terms); the sums start from it.
-/// step_materials: null (mat for every step), or, not folded and in the exact mode only, the
-/// material lanes of each step (step k: *step_materials[k]; per-point materials or a table's
-/// tail). table: null, or (exact mode, not folded, full steps) a material table whose step k
-/// takes the ids of points table_first + k W .. + W - 1, looked up in the step loop
-/// (table_lanes::step; step_materials null). The fast mode's integer exponent and the stable
-/// mode's route are decided per call from mat: those modes take one step per call with
-/// per-step materials.
+/// The lanes' colours: prepare, every (visible) light, finish, for `steps` steps from step `first`
+/// of the caller's stream (passed unchanged: docs/batch.md). Not inlined, on purpose: every layout
+/// calls this one compiled function, so the compiler's choices (FMA contraction) are the same and
+/// the layouts agree bit for bit. Flattened, so the frame and sums stay in registers.
+/// bits: W light masks per step (bits + k W; 0 past the tail), or null; count: the live lanes of
+/// each step. Folded: the lights carry ka, kd, ks (one material, folded_sums); env.ambient is then
+/// the colour's point-independent part (emission + ka La, + ka sum_i La_i when ambient_hoisted),
+/// from which the sums start. step_materials: null (mat for every step) or, exact mode not folded,
+/// each step's material lanes. table: null, or (exact, not folded, full steps) a material table
+/// looked up per step (table_lanes::step). The fast and stable modes decide per call from mat: one
+/// step per call with per-step materials.
 template <features F, class V, class T, glm::qualifier Q, bool Folded>
 PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size_t first, std::size_t steps, const material<V, Q>& mat,
                                       std::span<const light<V, Q>> lights, std::span<const light<double, Q>> wide_lights,
@@ -138,9 +120,8 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
 #else
     (void)wide_lights;
 #endif
-    // The steps with masks or without: two loops, so that a call without masks tests nothing per step.
-    // Flags: the loop that tests io's layout flags per step (a loop of its own, so that SoA steps
-    // test nothing).
+    // Two loops, so a call without masks tests nothing per step; Flags: a loop of its own that tests
+    // io's layout flags per step, so SoA steps test nothing.
     const auto run_steps = [&]<bool Masks, bool Flags>(const auto& call_m) {
         // Step k's colour is stored after step k + 1's lanes are loaded: stored before, it held up
         // those loads where the spans share their offset in a page (docs/batch.md).
@@ -157,9 +138,8 @@ PHONG_BATCH_NOINLINE void shade_lanes(const step_stream<V, T>& stream, std::size
                 add_masked_lights<G, V, T, Q>(sums, s, lights, call_m, step_bits, count);
                 pending = finish<G>(sums, s, mat, env);
             } else if constexpr (!Folded && std::is_same_v<std::decay_t<decltype(call_m)>, exact::lane_shininess<V>>) {
-                // Per-step materials: the step's shininess tested for 0 here, as once per call otherwise.
-                // A table's step looks its ids up here, in the loop: their loads and, for mixed
-                // ids, the lanes' permutes overlap the shading of the steps around them.
+                // Per-step materials: the shininess tested for 0 here. A table's ids are looked up
+                // here, so their loads and permutes overlap the neighbouring steps' shading.
                 material_slot<V, Q> looked_up;
                 const material<V, Q>& step_mat = table            ? *table->step(table_first + k * W, W, looked_up.lanes)
                                                  : step_materials ? *step_materials[k]

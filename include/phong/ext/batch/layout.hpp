@@ -75,12 +75,9 @@ template <class V, class T> inline constexpr bool avx2_float_lanes =
 #endif
 
 #if PHONG_HAS_XSIMD && defined(__AVX2__)
-/// The 8 x 3 transpose with AVX2 (8 interleaved vec3 in three registers a, b, c of 8 floats).
-/// Component o of lane k is float s = 3k + o, in register s / 8 at position s % 8; for each o
-/// those positions are a permutation of 0..7 (3 is coprime to 8), so two blends gather the
-/// component's 8 floats into one register (position p from the register holding it) and one
-/// permute puts lane k at its place. Back (a colour to 8 interleaved vec3): block b's float j is
-/// component (8b + j) % 3 of point (8b + j) / 3: x, y, z permuted by point, blended by component.
+/// The 8 x 3 transpose with AVX2 (8 interleaved vec3 in registers a, b, c): component o of lane k
+/// is float 3k + o; as 3 is coprime to 8, two blends gather a component's 8 floats and one permute
+/// orders them. Back: block b's float j is component (8b + j) % 3 of point (8b + j) / 3.
 constexpr int aos8_blend(int o, int reg)
 {
     int bits = 0;
@@ -134,10 +131,8 @@ glm::vec<3, V, Q> load_vec3(const soa3<T>& in, std::size_t i, std::size_t count,
 }
 
 #if PHONG_HAS_XSIMD && defined(__AVX512F__)
-/// The 3 x W transpose of W interleaved vec3 (3 registers a, b, c of W scalars: x0 y0 z0 x1 ...)
-/// into x, y, z lanes, two two-source permutes per component: t = lanes from (a, b), then the
-/// lanes that come from c. The tables are the indices of permutex2var: component o of lane k is
-/// scalar 3k + o; below 2W it is in (a, b), else c's scalar 3k + o - 2W.
+/// The 3 x W transpose of W interleaved vec3 into x, y, z lanes: two permutex2var per component
+/// (component o of lane k is scalar 3k + o: in (a, b) below 2W, else c's 3k + o - 2W).
 template <std::size_t W> struct aos_permutes {
     alignas(64) std::int32_t ab[3][W]{}, with_c[3][W]{};  // 32-bit: the float table
     alignas(64) std::int64_t ab64[3][W]{}, with_c64[3][W]{}; // 64-bit: the double table
@@ -167,15 +162,13 @@ template <std::size_t W> struct aos_permutes {
 template <std::size_t W> inline constexpr aos_permutes<W> aos_permute_table{};
 #endif
 
-/// Whether full steps of W interleaved glm::vec3 (3W scalars in a row) are transposed to and
-/// from x, y, z lanes in registers (aos_lanes, interleave_lanes): AVX-512 (float or double) and
-/// AVX2 (float) with an unpadded vec3. Elsewhere they go through a small buffer.
+/// Whether full steps of W interleaved vec3 are transposed in registers (aos_lanes,
+/// interleave_lanes): AVX-512 (float, double), AVX2 (float), unpadded vec3; else via a buffer.
 template <class V, class T, glm::qualifier Q> inline constexpr bool aos_in_registers =
     sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T) && (avx512_lanes<V, T> || avx2_float_lanes<V, T>);
 
-/// The x, y, z lanes of W interleaved vec3 at s (3W scalars: x0 y0 z0 x1 ...), transposed in
-/// registers (aos_in_registers only): AVX-512, three loads and six two-source permutes; AVX2,
-/// three loads, six blends and three permutes.
+/// The x, y, z lanes of W interleaved vec3 at s, transposed in registers (aos_in_registers only):
+/// AVX-512, three loads and six two-source permutes; AVX2, three loads, six blends, three permutes.
 template <class V, glm::qualifier Q, class T>
 inline glm::vec<3, V, Q> aos_lanes([[maybe_unused]] const T* s)
 {
@@ -206,9 +199,8 @@ inline glm::vec<3, V, Q> aos_lanes([[maybe_unused]] const T* s)
     return r;
 }
 
-/// The same from an array of glm vectors (AoS): a W x 3 transpose (aos_lanes for a full step
-/// where aos_in_registers; else through a small buffer). The lanes are the same values as from
-/// SoA spans, so both layouts give the same bits.
+/// The same from an array of glm vectors (AoS): aos_lanes for a full step where aos_in_registers,
+/// else a small buffer; the same values as from SoA spans, so the same bits.
 template <class V, glm::qualifier Q, class T>
 glm::vec<3, V, Q> load_vec3(std::span<const glm::vec<3, T, Q>> in, std::size_t i, std::size_t count, const glm::vec<3, T, Q>& pad)
 {
@@ -256,8 +248,7 @@ inline void interleave_lanes([[maybe_unused]] const glm::vec<3, V, Q>& c, [[mayb
 #endif
 }
 
-/// Stores the lanes of a colour into count interleaved colours at out (rgb, a full step:
-/// interleave_lanes where aos_in_registers; else through a small buffer).
+/// Stores a colour's lanes into count interleaved rgb at out (interleave_lanes or a small buffer).
 template <class V, class T, int N, glm::qualifier Q>
 void store_interleaved(const glm::vec<N, V, Q>& c, glm::vec<N, T, Q>* out, std::size_t count)
 {
@@ -271,8 +262,7 @@ void store_interleaved(const glm::vec<N, V, Q>& c, glm::vec<N, T, Q>* out, std::
         for (int ch = 0; ch < N; ++ch) out[k][ch] = buf[ch][k];
 }
 
-/// The lanes of one batch step: W points' position, normal, view vector (set and read only with
-/// view_model::given) and front-facing flags.
+/// The lanes of one batch step: position, normal, view (view_model::given only), front-facing flags.
 template <class V, glm::qualifier Q> struct step_lanes {
     glm::vec<3, V, Q> position;
     glm::vec<3, V, Q> normal;
@@ -280,14 +270,11 @@ template <class V, glm::qualifier Q> struct step_lanes {
     mask_t<V> front;
 };
 
-/// Where shade_lanes reads its steps' lanes and writes their colours: one pointer per component
-/// (in: position x y z, normal x y z, view x y z; out: r g b a) and the elements from one step to
-/// the next. Full SoA steps point into the caller's spans (stride W: nothing copied); full AoS
-/// steps (aos_in) and interleaved rgb colours (interleaved_out) point into the caller's arrays
-/// too, transposed in registers (aos_in_registers; stride 3W); tails, and AoS or interleaved
-/// layouts without those transposes, point into a block of the call (stride: one block step).
-/// Every layout runs the same compiled shade_lanes through it (the layout is a run-time flag, not
-/// a template parameter), so their colours agree bit for bit.
+/// Where shade_lanes reads its steps' lanes and writes their colours: a pointer per component and
+/// the stride from one step to the next. Full SoA steps point into the caller's spans (stride W),
+/// full AoS steps and interleaved rgb into the caller's arrays (transposed in registers, stride 3W),
+/// the rest into a block of the call. The layout is a run-time flag, not a template parameter, so
+/// every layout runs the same compiled shade_lanes and their colours agree bit for bit.
 template <class V, class T> struct step_stream {
     const T* in[9];          ///< view x y z: read only with view_model::given; aos_in: in[0], in[3], in[6] only
     std::size_t in_stride;
@@ -336,10 +323,9 @@ template <class V, class T> mask_t<V> front_lanes(std::span<const bool> front_fa
     return load<V>(buf) > V(T(0));
 }
 
-/// Loads the position, normal and view lanes of one batch step over points of any layout
-/// (soa_points, aos_points): `count` <= W points starting at index i. Full steps load SoA spans
-/// directly and AoS through a transpose; tails go through padded copies (the pad: Q = (0, 0, -1),
-/// n = v = (0, 0, 1), facing the eye).
+/// Loads one step's position, normal and view lanes (count <= W points from i; soa_points or
+/// aos_points): full steps straight or through a transpose, tails through padded copies (pad:
+/// Q = (0, 0, -1), n = v = (0, 0, 1), facing the eye).
 template <features F, class V, class Points, class T, glm::qualifier Q>
 void load_step(std::size_t i, std::size_t count, const Points& points, step_lanes<V, Q>& lanes)
 {

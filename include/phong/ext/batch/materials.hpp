@@ -25,16 +25,14 @@ namespace phong::detail {
 template <class T, glm::qualifier Q> inline constexpr bool material_is_14_scalars =
     sizeof(glm::vec<3, T, Q>) == 3 * sizeof(T) && sizeof(material<T, Q>) == 14 * sizeof(T) && std::is_standard_layout_v<material<T, Q>>;
 
-/// The material whose 14 fields, in material's order (ka, kd, ks, emission, shininess, alpha),
-/// are field[0..13].
+/// The material whose 14 fields, in material's order, are field[0..13].
 template <class V, glm::qualifier Q> material<V, Q> material_of_fields(const V (&field)[14])
 {
     return {{field[0], field[1], field[2]}, {field[3], field[4], field[5]}, {field[6], field[7], field[8]},
             {field[9], field[10], field[11]}, field[12], field[13]};
 }
 
-/// Material m's 14 fields, in the same order, into column k of lane (lane[f][k]): the scalar
-/// transpose of a step's (or a table's) materials into field lanes.
+/// Material m's 14 fields into column k of the field lanes (lane[f][k]): a scalar transpose.
 template <class T, glm::qualifier Q, std::size_t W> void put_fields(T (&lane)[14][W], std::size_t k, const material<T, Q>& m)
 {
     for (int c = 0; c < 3; ++c) {
@@ -47,12 +45,10 @@ template <class T, glm::qualifier Q, std::size_t W> void put_fields(T (&lane)[14
     lane[13][k] = m.alpha;
 }
 
-/// One material of lanes: lane k takes base[element[k]] (k < W). The same values as splatting
-/// each material, so the same bits downstream. With gather_instructions (a material table: small,
-/// in cache) and AVX-512 or AVX2: one gather instruction per field (14); otherwise a scalar
-/// transpose through a small buffer. Per-point materials take the scalar transpose: they stream
-/// from memory, where sequential reads beat 14 gathers over the same 14 cache lines
-/// (docs/batch.md).
+/// One material of lanes: lane k takes base[element[k]] (the same values as splatting each
+/// material). With gather_instructions (a small table, in cache) and AVX-512 or AVX2: one gather
+/// per field; otherwise a scalar transpose through a small buffer (per-point materials stream from
+/// memory, where sequential reads beat the gathers: docs/batch.md).
 template <class V, bool gather_instructions, class T, glm::qualifier Q>
 material<V, Q> gather(const material<T, Q>* base, const std::uint32_t* element)
 {
@@ -87,8 +83,7 @@ material<V, Q> gather(const material<T, Q>* base, const std::uint32_t* element)
     return material_of_fields<V, Q>(field);
 }
 
-/// The element indices 0, 1, ..., count - 1, then count - 1 repeated (a tail's pad lanes take
-/// the last point's material): the per-point materials of one step.
+/// The element indices 0 .. count - 1, then count - 1 repeated (pad lanes: the last point's material).
 template <std::size_t W> struct consecutive_elements {
     alignas(64) std::uint32_t index[W]{};
     constexpr explicit consecutive_elements(std::size_t count)
@@ -98,26 +93,23 @@ template <std::size_t W> struct consecutive_elements {
 };
 template <std::size_t W> inline constexpr consecutive_elements<W> full_step_elements{W};
 
-/// Storage for one step's material lanes, left uninitialized (material's default member
-/// initializers would fill 14 vectors per slot per call: 8 KiB of stores per call of 32 steps);
-/// the step functions construct the lanes in it (std::construct_at) before any read.
+/// Storage for one step's material lanes, left uninitialized (default initializers would cost
+/// 8 KiB of stores per call); the step functions construct the lanes (std::construct_at) before any read.
 template <class V, glm::qualifier Q> union material_slot {
     material<V, Q> lanes;
     material_slot() {}
 };
 
-/// The lane material of one step from a material table: the table's lanes (splatted once per
-/// call) when every point of the step has the same id, else a gather of the table's entries.
-/// An id past the table takes its last entry (a debug build reports it before: shade_batch's
-/// precondition); pad lanes of a tail take the last point's id.
+/// The lane material of one step from a material table: the table's lanes (splatted once per call)
+/// when the step's points share one id, else a gather. An id past the table takes its last entry
+/// (debug builds report it first); pad lanes of a tail take the last point's id.
 template <class V, class T, glm::qualifier Q> struct table_lanes {
     std::span<const material<T, Q>> table;
     std::span<const std::uint32_t> ids;
     std::vector<material<V, Q>> splatted; ///< table[j] in every lane
-    /// A table of at most W entries (float lanes, AVX-512 or AVX2; empty otherwise): field f of
-    /// entry j in lane j (the last entry repeated past the table). A step of mixed ids then takes
-    /// each field with one in-register permute by id instead of a gather from memory (a scene's
-    /// few materials: 14 permutes against 14 gathers, the same values).
+    /// A table of at most W entries (float lanes, AVX-512 or AVX2; empty otherwise): field f of entry
+    /// j in lane j (the last entry repeated). A step of mixed ids then takes each field by one
+    /// in-register permute instead of a gather (the same values).
     std::vector<V> columns;
 
     /// The lanes of field f of table[id[k]] in lane k, from columns (ids: W clamped ids in a register).
@@ -208,8 +200,7 @@ template <class V, glm::qualifier Q> struct unfolded_shared_lanes {
     material<V, Q> lanes;
 };
 
-/// One material per point: the step's materials gathered into lanes (the tail's pad lanes take
-/// the last point's material).
+/// One material per point: the step's materials gathered into lanes (pad lanes: the last point's).
 template <class V, class T, glm::qualifier Q> struct per_point_lanes {
     std::span<const material<T, Q>> materials;
     /// The lanes of points i .. i + count - 1, in `scratch`.
@@ -232,8 +223,8 @@ template <class V> exact::lane_shininess<V> shininess_lanes(const V& m)
 {
     using S = typename math_traits<V>::scalar;
     const mask_t<V> zero = m == V(S(0));
-    // Float lanes: the cosines above least_base(m) have a power of at least the power floor
-    // (detail::ieee::power_floor_log2), the others get 0 (exact::add_specular's step_specular route).
+    // Float lanes: cosines above least_base(m) have a power of at least the power floor, the others
+    // get 0 (exact::add_specular's step_specular route).
     V least(S(0));
     if constexpr (std::is_same_v<S, float>) least = math_traits<V>::least_base(detail::select(zero, V(S(1)), m));
     return {m, zero, math_traits<V>::any(zero), detail::select(zero, V(-std::numeric_limits<S>::infinity()), least),

@@ -26,16 +26,14 @@ template <class T> struct soa_rgba {
     std::span<T> a; ///< alpha (F.alpha only; else may be empty)
 };
 
-/// The points of one shade_batch call, structure of arrays: a renderer's per-point inputs in
-/// one argument (designated initializers name the ones used). N = positions.x.size().
+/// The points of one shade_batch call, structure of arrays (designated initializers name the ones
+/// used); N = positions.x.size().
 ///   positions, normals: N points and their normals (any length; as shade<F> takes them);
-///   views: N view vectors (from each point toward its viewer, e.g. -ray.dir), read only and
-///          required with features::view = view_model::given; leave empty otherwise;
+///   views: N view vectors (toward the viewer, e.g. -ray.dir), read only and required with
+///          view_model::given; empty otherwise;
 ///   front_facing: N flags, read only for facing::flag; empty: all front-facing;
-///   light_masks: N masks, bit j set: light j is visible at that point (a shadow ray's result);
-///          a light whose bit is clear is skipped there exactly as if it were not in the list;
-///          empty: every light visible everywhere. Lights past the 64th are seen by no point
-///          when masks are given (as phong::masked).
+///   light_masks: N masks, bit j set: light j visible there (else skipped exactly as if absent);
+///          empty: every light visible. Lights past the 64th are seen by no point with masks.
 template <class T> struct soa_points {
     soa3<T> positions;                            ///< N points
     soa3<T> normals;                              ///< their N normals
@@ -44,9 +42,8 @@ template <class T> struct soa_points {
     std::span<const std::uint64_t> light_masks{}; ///< N light masks; empty: every light visible
 };
 
-/// The same, array of structures: a ray tracer's hit records as glm vectors
-/// (std::vector<glm::vec3> converts), loaded into lanes per step with a small transpose, so
-/// nothing needs repacking. Fields as soa_points; N = positions.size().
+/// The same, array of structures (a ray tracer's hit records as glm vectors, transposed into lanes
+/// per step: nothing repacked). Fields as soa_points; N = positions.size().
 template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
     std::span<const glm::vec<3, T, Q>> positions; ///< N points
     std::span<const glm::vec<3, T, Q>> normals;   ///< their N normals
@@ -55,19 +52,15 @@ template <class T, glm::qualifier Q = glm::defaultp> struct aos_points {
     std::span<const std::uint64_t> light_masks{}; ///< N light masks; empty: every light visible
 };
 
-/// Materials as a renderer keeps them: a table (a scene's materials) and one index into it per
-/// point (each hit's material id). shade_batch with a material_table shades point i with
-/// materials[ids[i]], bit for bit as the overloads that take one material per point would with
-/// that material, without copying a material per point: the table goes to SIMD lanes once per
-/// call; a step whose points all have one id (coherent primary hits: most steps) uses those
-/// lanes as they are, and a step of mixed ids takes each field from the table: with float lanes
-/// and at most batch_width<float> entries (16 with AVX-512, 8 with AVX2), one in-register
-/// permute per field; else one gather instruction per field (AVX-512 and AVX2).
+/// Materials as a renderer keeps them: a table and one index per point. shade_batch shades point i
+/// with materials[ids[i]], bit for bit as with one material per point, without copying one per
+/// point: the table goes to lanes once per call; a step whose points share one id uses those lanes,
+/// a step of mixed ids takes each field from the table (one permute per field for float lanes and
+/// at most batch_width<float> entries, else one gather per field).
 ///   materials: the table, validate() for each entry; not empty when there are points;
-///   ids: N indices (N = the number of points), each < materials.size().
-/// Pre (debug assertions through the precondition handler): ids N long, every id in the
-/// table. Edge: an id past the table takes its last entry (memory-safe in release builds);
-/// an empty table shades nothing (every build).
+///   ids: N indices, each < materials.size().
+/// Pre (debug assertions): ids N long, every id in the table. Edge: an id past the table takes its
+/// last entry (memory-safe in release builds); an empty table shades nothing (every build).
 template <class T, glm::qualifier Q = glm::defaultp> struct material_table {
     std::span<const material<T, Q>> materials; ///< the table
     std::span<const std::uint32_t> ids;        ///< one index into the table per point

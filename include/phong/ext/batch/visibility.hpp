@@ -119,26 +119,18 @@ template <template <class, glm::qualifier> class S, class V, glm::qualifier Q> s
 };
 template <class Sums> inline constexpr glm::qualifier Q_of = sums_qualifier<Sums>::value;
 
-/// Every light's terms added to the sums of one step, light j only in the lanes whose mask has
-/// bit j (bits: one mask per lane, 0 past the tail; null: every light in every lane). A light no
-/// lane sees is skipped; one that every point of the step sees is added as without masks; else
-/// it is added and the lanes that do not see it get their sums back (select: exactly nothing
-/// from it, its ambient term included). Lights past the 64th are seen by no point. One call site
-/// of add_light for every case, masks or none: a masked light, a removed one (the same call with
-/// the light left out) and a call without masks run the same compiled code (but for the fast
-/// mode's Phong with a power-of-two shininess without masks, add_masked_lights: the same bits).
-/// Which lanes see a light: one bit test of the W masks per light (AVX-512: two vector tests, the
-/// result a k-mask used as is; AVX2: a shift and a movemask per four lanes).
-/// each_visible_light calls add_light(sums, j) for every light j (light_count of them) by these
-/// rules; the frame and the route are the caller's (add_masked_lights: detail::add_light).
+/// Every light's terms added to the sums of one step, light j only in the lanes whose mask has bit j
+/// (bits: one mask per lane, 0 past the tail; null: every light everywhere; lights past the 64th
+/// are seen by no point). A light no lane sees is skipped; else the lanes that do not see it get
+/// their sums back (exactly nothing from it). One call site of add_light for every case, so masked,
+/// removed and unmasked lights run the same compiled code (the same bits).
 template <class V, class T, class Sums, class AddLight>
 PHONG_LANES_INLINE void each_visible_light(Sums& sums, std::size_t light_count, const std::uint64_t* bits, std::size_t count,
                                                   AddLight&& add_light)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
-    // Without masks every lane sees every light: the same loop (one call site of add_light, which
-    // the compiler then inlines; with a second loop for this case g++ 12 kept add_light out of
-    // line).
+    // Without masks every lane sees every light: the same loop, so add_light has one call site and
+    // is inlined (g++ 12 kept it out of line with a second loop).
     const std::uint32_t live = count >= W ? std::uint32_t((std::uint64_t(1) << W) - 1) : std::uint32_t((1u << count) - 1);
     const lane_visibility<V, T> visibility(bits);
     const std::size_t n = bits ? std::min<std::size_t>(light_count, 64) : light_count;
@@ -161,17 +153,15 @@ PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s,
         else add_lights<F>(sums, s, masked(lights, bits[0]), m);
         return;
     } else {
-        // Float lanes: the step's specular constants (exact::step_specular), made once per step; a
-        // pair's specular mask is then one compare. Else m as given.
+        // Float lanes: the step's specular constants, made once per step (one compare per pair).
         const auto step_m = [&] {
             if constexpr (std::is_same_v<Exponent, exact::lane_shininess<V>> && std::is_same_v<T, float> && exact::step_specular_route<F>)
                 return exact::step_specular_of(m, s.sees_viewer);
             else return m;
         }();
         if constexpr (std::is_same_v<Exponent, exact::integer_exponent<V>> && F.specular == specular_model::phong) {
-            // The fast mode's integer shininess n = 2^K (plan.chain = K + 1, K <= 6), no masks: the
-            // light loop with K known, its power K squarings with no jump per pair; the same bits.
-            // Phong only: Blinn keeps the general loop (docs/batch.md has the measurement).
+            // The fast mode's integer shininess n = 2^K (K <= 6), no masks: the light loop with K
+            // known, K squarings with no jump per pair; the same bits. Phong only (docs/batch.md).
             if (!bits) {
                 const auto each_light = [&](const auto& fixed) {
                     for (std::size_t j = 0; j < lights.size(); ++j) detail::add_light<F>(sums, s, lights[j], fixed);

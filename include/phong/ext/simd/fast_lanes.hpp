@@ -23,10 +23,8 @@ struct lanes<xsimd::batch<T, A>> {
     using bits_t = xsimd::batch<std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>, A>;
     static bits_t bits(const V& x) { return xsimd::bitwise_cast<bits_t>(x); }
     static V from_bits(const bits_t& u) { return xsimd::bitwise_cast<V>(u); }
-    /// a * b + c: the fused instruction where the target has one (x86 FMA3, AVX-512, every
-    /// aarch64: xsimd 8.1's fma is a separate multiply and add on AVX-512), else a multiply and an
-    /// add (not math_traits' exact fma: Dekker's split takes many operations where this takes one,
-    /// and the kernels do not need the single rounding).
+    /// a * b + c: the fused instruction where the target has one (xsimd 8.1's fma is unfused on
+    /// AVX-512), else a multiply and an add (these kernels need no single rounding).
     static V madd(const V& a, const V& b, const V& c)
     {
 #  if defined(__FMA__) || defined(__AVX512F__) || defined(__aarch64__)
@@ -36,9 +34,8 @@ struct lanes<xsimd::batch<T, A>> {
 #  endif
     }
     /// 1/sqrt(x), relative error fast::rsqrt_max_rel<T>. Float: math_traits' estimate + one Newton
-    /// step in correction form (AVX, AVX-512; 1/sqrt elsewhere). Double with AVX-512: rsqrt14
-    /// (2^-14) + two of the fast mode's product-form steps (detail::rsqrt_newton_product; below
-    /// 1e-15 after the roundings); elsewhere 1/sqrt. x = 0: inf, x = inf: 0.
+    /// step (AVX, AVX-512). Double with AVX-512: rsqrt14 + two rsqrt_newton_product steps. Elsewhere
+    /// 1/sqrt. x = 0: inf, x = inf: 0.
     static V rsqrt(const V& x)
     {
 #  if defined(__AVX512F__)

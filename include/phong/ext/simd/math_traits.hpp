@@ -1,5 +1,4 @@
-// phong: math_traits for xsimd batches: every kernel of math.hpp, lane-wise (the SIMD backend's
-// arithmetic; the primary template in math.hpp serves scalars).
+// phong: math_traits for xsimd batches: every kernel of math.hpp, lane-wise.
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -27,10 +26,9 @@
 
 namespace phong::detail {
 
-/// math_traits for xsimd batches: every kernel of math.hpp, lane-wise. exp, log and log1p are
-/// xsimd's (vectorized, within a few ulp); float rsqrt is the hardware estimate refined by one
-/// Newton step; fma is the fused instruction. pow is exp(y log x) restricted to x >= 0 with IEEE's
-/// pow(0, 0) = 1 (xsimd's own pow returns 0 there).
+/// math_traits for xsimd batches: every kernel of math.hpp, lane-wise. exp, log, log1p: xsimd's
+/// (within a few ulp); float rsqrt: hardware estimate + one Newton step; fma fused. pow is
+/// exp(y log x) for x >= 0 with pow(0, 0) = 1 (xsimd's own pow returns 0 there).
 template <class T, class A>
 struct math_traits<xsimd::batch<T, A>> {
     using V = xsimd::batch<T, A>;
@@ -53,9 +51,7 @@ struct math_traits<xsimd::batch<T, A>> {
         if constexpr (has_rsqrt_estimate) return rsqrt_newton_correction(x, rsqrt_estimate(x));
         else return V(T(1)) / xsimd::sqrt(x);
     }
-    /// x >= min and x <= max of T (x a positive normal number: the exact mode's test of a squared
-    /// length). AVX-512DQ: one vfpclass for every other class (zeros, subnormals, negatives,
-    /// infinities, NaN) in place of two compares.
+    /// x is a positive normal number (AVX-512DQ: one vfpclass, not two compares).
     PHONG_LANES_INLINE static mask positive_normal(const V& x)
     {
 #if defined(__AVX512DQ__)
@@ -88,20 +84,12 @@ struct math_traits<xsimd::batch<T, A>> {
 #endif
         return xsimd::all(a && b);
     }
-    /// e^x, lane-wise: xsimd::exp on the argument clamped to [minlog, maxlog] (xsimd's own
-    /// thresholds: -88.38 / 88.38 in float, -708.40 / 709.78 in double), NaN passed through.
-    /// Why: xsimd 8.1's exp converts round(x / ln 2) to an integer before it looks at the range,
-    /// and where the ISA has no vector conversion (double below AVX-512DQ: SSE2, AVX, AVX2) that
-    /// is a scalar static_cast, undefined (UBSan: float-cast-overflow) for |x| beyond 2^63 and for
-    /// NaN. Such x are in the model's domain: the stable mode's exp(m log1p(-x)) with m = 1e30 in
-    /// double, or pow(x, y) with y = 1e38 in float. The clamp cannot change a result: xsimd's exp
-    /// returns exactly 0 for every x <= minlog and +inf for every x >= maxlog (its final selects),
-    /// so exp(clamp(x)) == exp(x) for every non-NaN x; and exp(NaN) = NaN here as before.
-    /// -ffast-math on x86 (PHONG_FP_BARRIER): two of xsimd 8.1's rounding tricks have no barrier
-    /// that clang++ respects. Without SSE4.1, exp rounds x / ln 2 by (v + 2^52) - 2^52 behind a
-    /// volatile read back through a non-volatile cast, folded to v; below AVX-512DQ, double's log
-    /// and log1p convert their int64 exponent to double by magic-number sums, reassociated into a
-    /// wrong exponent. There these kernels run std:: lane by lane (in those builds only).
+    /// e^x, lane-wise: xsimd::exp on x clamped to [minlog, maxlog] (xsimd's thresholds), NaN passed
+    /// through. The clamp changes no result (xsimd's exp is exactly 0 / +inf beyond them) and keeps
+    /// xsimd 8.1's scalar float-to-int conversion defined for huge |x| and NaN (double below
+    /// AVX-512DQ), which the model reaches (exp(m log1p(-x)) with m = 1e30). -ffast-math on x86
+    /// (PHONG_FP_BARRIER): exp, log and log1p run std:: lane by lane, as xsimd's rounding tricks lack
+    /// a barrier clang++ respects (docs/compilers.md).
     template <class F> PHONG_LANES_INLINE static V lanewise(const V& x, F f)
     {
         alignas(A::alignment()) T lanes[V::size];
@@ -119,9 +107,8 @@ struct math_traits<xsimd::batch<T, A>> {
         return xsimd::select(x == x, xsimd::exp(clamped), x);
 #endif
     }
-    /// exp(y) for the powers (pow, pow_one_minus): 0 where y is below the log of the power floor
-    /// (detail::ieee::power_floor_log2: 2^-100 float, 2^-996 double), exp of the floor's log there,
-    /// so that no subnormal number is made, nor by the product with a light's coefficients. NaN: NaN.
+    /// exp(y) for the powers: 0 where y is below the log of the power floor (ieee::power_floor_log2),
+    /// so no subnormal is made, nor by the product with a light's coefficients. NaN: NaN.
     PHONG_LANES_INLINE static V power_exp(const V& y)
     {
         const V least(T(detail::ieee::power_floor_log2<T>) * T(0.6931471805599453));
@@ -143,45 +130,38 @@ struct math_traits<xsimd::batch<T, A>> {
 #endif
         return xsimd::log1p(x);
     }
-    /// x^y for x in [0, 1], y >= 0 (the lighting model's domain): exp(y log x) with xsimd's
-    /// kernels (power_exp: 0 below the power floor), pow(0, 0) = 1,
-    /// pow(0, y > 0) = 0 (xsimd's own pow returns 0 for pow(0, 0)).
+    /// x^y for x in [0, 1], y >= 0: exp(y log x) (power_exp: 0 below the power floor),
+    /// pow(0, 0) = 1 (xsimd's own pow gives 0), pow(0, y > 0) = 0.
     PHONG_LANES_INLINE static V pow(const V& x, const V& y)
     {
         const V p = power_exp(y * log(xsimd::select(x > V(T(0)), x, V(T(1)))));
         return xsimd::select(x > V(T(0)), p, detail::power_of_zero(y));
     }
-    /// x^m for x in [0, 1], m >= 0 (the specular and spot powers of the exact mode). Float lanes:
-    /// detail/simd/lanes_power.hpp's polynomial kernel, relative error <= (3.5 |m log2 x| + 2.5) u
-    /// (detail::lanes::pow_unit_lanes_error); double lanes: pow above.
+    /// x^m for x in [0, 1], m >= 0 (the exact mode's specular and spot powers). Float lanes:
+    /// lanes_power.hpp, relative error <= pow_unit_lanes_error(m log2 x); double lanes: pow above.
     PHONG_LANES_INLINE static V pow_unit(const V& x, const V& m)
     {
         if constexpr (float_lanes) return detail::lanes::pow_unit(x, m);
         else return pow(x, m);
     }
-    /// pow_unit with m_is_zero = (m == 0) given (computed once per call by shade_batch). Both
-    /// kinds of lanes give x <= 0 and NaN the power of 0 (0, or 1 for m = 0).
+    /// pow_unit with m_is_zero = (m == 0) given; x <= 0 and NaN give 0^m (0, or 1 for m = 0).
     PHONG_LANES_INLINE static V pow_unit(const V& x, const V& m, const mask& m_is_zero)
     {
         if constexpr (float_lanes) return detail::lanes::pow_unit(x, m, m_is_zero);
         else return pow(x, m);
     }
-    /// Float lanes: x^m for x in [0, 1] and 0 <= m <= 2^100 where x > 0 or m = 0; other lanes
-    /// unspecified (finite), for the caller to select away (detail/simd/lanes_power.hpp's pow_unit_positive).
+    /// Float lanes, x in [0, 1], 0 <= m <= 2^100: x^m where x > 0 or m = 0, else a finite value for
+    /// the caller to select away (lanes_power.hpp's pow_unit_positive).
     template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
     PHONG_LANES_INLINE static V pow_unit_positive(const V& x, const V& m) { return detail::lanes::pow_unit_positive(x, m); }
-    /// Float lanes: pow_unit_positive on the lanes of `kept` (x > least_base(m)), 0 on the others
-    /// (detail/simd/lanes_power.hpp's pow_unit_kept).
+    /// Float lanes: lanes_power.hpp's pow_unit_kept (pow_unit_positive on the kept lanes, else 0).
     template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
     PHONG_LANES_INLINE static V pow_unit_kept(const V& x, const V& m, const mask& kept) { return detail::lanes::pow_unit_kept(x, m, kept); }
-    /// Float lanes: a base below which x^m is under the power floor 2^-100 (m > 0; above it, x^m >=
-    /// 2^-101: detail/simd/lanes_power.hpp's least_base); 0 for m < 1.
+    /// Float lanes: lanes_power.hpp's least_base (x^m >= 2^-101 above it; 0 for m < 1).
     template <class U = T, std::enable_if_t<std::is_same_v<U, float>, int> = 0>
     PHONG_LANES_INLINE static V least_base(const V& m) { return detail::lanes::least_base(m); }
-    /// (1 - x)^m for x >= 0, m >= 0 (specular.hpp's pow_one_minus): exp(m log1p(-x)) with
-    /// xsimd's kernels (power_exp: 0 below the power floor); x >= 1 gives 0, and 1 for m = 0.
-    /// Float lanes: detail/simd/lanes_power.hpp's polynomial kernel (log2(1 - x) from t = -x itself near
-    /// x = 0), relative error <= (6.5 |m log2(1 - x)| + 2.5) u (pow_one_minus_lanes_error).
+    /// (1 - x)^m for x >= 0, m >= 0: exp(m log1p(-x)) (power_exp); x >= 1 gives 0 (1 for m = 0).
+    /// Float lanes: lanes_power.hpp, relative error <= pow_one_minus_lanes_error(m log2(1 - x)).
     PHONG_LANES_INLINE static V pow_one_minus(const V& x, const V& m)
     {
         if constexpr (float_lanes) return detail::lanes::pow_one_minus(xsimd::max(x, V(T(0))), m);
@@ -203,10 +183,8 @@ struct math_traits<xsimd::batch<T, A>> {
     static V min(const V& a, const V& b) { return xsimd::min(a, b); }
     static V max(const V& a, const V& b) { return xsimd::max(a, b); }
 
-    /// The power of two of math_traits<T>::inverse_pow2_scale, lane-wise: 2^(bias - e) has the
-    /// exponent field (2 bias) - (x's exponent field), one integer subtraction; x's above 2^bias
-    /// (where that would underflow) take 2^(1 - bias). Integer selects are avoided on purpose
-    /// (xsimd 8.1 does not compile them for AVX-512BW at -O0).
+    /// The power of two of inverse_pow2_scale, lane-wise: 2^(bias - e) by subtracting exponent fields
+    /// (x above 2^bias: 2^(1 - bias)); no integer selects (xsimd 8.1, AVX-512BW, -O0 cannot compile them).
     static V inverse_pow2_scale(const V& x)
     {
         using I = xsimd::as_integer_t<T>;
@@ -230,16 +208,10 @@ private:
         if constexpr (std::is_base_of_v<xsimd::avx512f, A>) return V(_mm512_rsqrt14_ps(x));
         else return V(_mm256_rsqrt_ps(x));
     }
-    /// One Newton step for 1/sqrt(x) from an estimate.
-    /// Correction form y0 + (y0 / 2)(1 - (x y0) y0) with fused multiply-adds: the step squares the
-    /// estimate's error (1.5 e0^2), and the roundings add about 1.5 u (x y0 rounded, halved by
-    /// y0 / 2; the last fma): 1.6 u with AVX-512's 2^-14 estimate, 4.9 u with AVX's 1.5 2^-12.
-    /// The exact mode's bounds count that 1.6 u (accuracy.hpp). Beside it, two other refinements
-    /// on purpose: the fast mode's product form r (3/2 - (x/2) r^2) (fast::detail::rsqrt_newton_product,
-    /// fast_math.hpp: about 2.5 u of roundings, and no fma needed for its scalar route) and the
-    /// stable lanes' fourth-order correction in double (stable_lanes::rsqrt_normal, for
-    /// double's accuracy in one step). Each rounds differently: one in place of another would
-    /// change that mode's bits or loosen its bound.
+    /// One Newton step for 1/sqrt(x) from an estimate: y0 + (y0 / 2)(1 - (x y0) y0) with fmas: 1.6 u
+    /// from AVX-512's 2^-14, 4.9 u from AVX's 1.5 2^-12 (counted in accuracy.hpp's exact bounds).
+    /// Apart from fast::detail::rsqrt_newton_product and the stable lanes' fourth-order correction
+    /// on purpose: each rounds differently (merging would change a mode's bits or its bound).
     PHONG_LANES_INLINE static V rsqrt_newton_correction(const V& x, const V& estimate)
     {
         const V residual = fma(-(x * estimate), estimate, V(T(1))); // 1 - x y0^2

@@ -1,24 +1,8 @@
-// phong: the stable mode on float SIMD lanes (shade_batch<F> with F.mode = evaluation::stable and
-// float points on x86 and aarch64): the geometry of every pair in double lanes, the power and the
-// sums in float.
+// phong: the stable mode on float SIMD lanes (shade_batch<F>, F.mode = stable, float points): the
+// geometry of every pair in double lanes (within a few 2^-53, below float's u^2), the power and the
+// sums in float; a step with m > max_shininess takes the twofold route (routes/stable.hpp).
+// Bounds: accuracy::bounds<stable, float, twofold>; why double suffices: docs/accuracy.md#float-stable-lanes
 // SPDX-License-Identifier: MIT
-//
-// Why double, and why only the geometry: float inputs fit double with room to spare. |d|^2 of a
-// float difference d lies in [2e-90, 1.4e78] (subnormal to largest float), far inside double's
-// normal range, so no vector needs rescaling; w Q (w = 0 or 1) and L.xyz - w Q are exact or
-// rounded once to 2^-53; and unit vectors, n.l, the specular cosine c (r.v or n.h) and its
-// complement x = 1 - c carry absolute errors of a few 2^-53 (about 10 at most for x, with |l + v|
-// of order 1), below float's u^2 = 2^-48 (what the twofold route of detail/stable.hpp reaches with
-// error-free transformations, with many more operations). Rounded to float once, n.l
-// and the weights f n.l are within u / 2 (u = 2^-24) of their exact values; x and c are each
-// rounded to float, within u / 2 relative plus that absolute part, which the power c^m
-// (lanes_power.hpp's pow_cosine: from x where c >= sqrt(1/2), from c below) amplifies by m:
-// m 10 2^-53 <= 0.02 u for m <= max_shininess = 2^20 near a highlight. Far from it both forms are
-// needed: 1 - x rounded to float would leave c an absolute error of u / 2 (at c = 1e-6 and m = 1,
-// 6e-3 relative, seen where a grazing light's diffuse term is too small to hide it). A step
-// with a larger m in any lane takes the twofold route (detail/stable.hpp): m is a material's, so
-// one branch per step. The terms are summed in float as in the twofold route. Bounds: the twofold
-// route's (accuracy::bounds<stable, float, twofold>), tests/batch_accuracy.test.cpp.
 #pragma once
 
 #include "backend.hpp"
@@ -65,8 +49,7 @@ template <class A> struct double_of<xsimd::batch<float, A>> {
 };
 template <class V> using double_t = typename double_of<V>::type;
 
-/// The lower lanes [0, W/2) and the upper lanes [W/2, W) of a float batch, as two double batches
-/// (exact): the two parts of the lanes that this route computes in double.
+/// The lower lanes [0, W/2) and the upper lanes [W/2, W) of a float batch as two double batches (exact).
 template <class V> struct lane_parts {
     double_t<V> lower, upper;
 };
@@ -129,16 +112,10 @@ template <class V> inline mask_t<V> join_mask(const xsimd::batch_bool<double, ty
     return join<V>(xsimd::select(lower, D(1.0), D(0.0)), xsimd::select(upper, D(1.0), D(0.0))) > V(0.0f);
 }
 
-/// 1/sqrt(x) for x a positive normal double (other x: unspecified). AVX-512: the estimate y
-/// (|rel err| < 2^-14) corrected once to fourth order: with r = 1 - x y^2 (|r| < 2^-12.9, one
-/// fma), 1/sqrt(x) = y (1 - r)^(-1/2) = y (1 + r/2 + 3 r^2/8 + 5 r^3/16 + 35 r^4/128 ...); the
-/// truncation 35 r^4/128 < 2^-53, the roundings about 2 u (u = 2^-53): |rel err| < 3 u. Elsewhere
-/// a division by the correctly rounded square root (two roundings: 1.5 u). Measured
-/// (tests/lanes_power.test.cpp, 20000 log-uniform x in [2^-298, 2^257]): 1.24 u (AVX-512), 1.47 u
-/// (SSE2). Why not a Newton step as the other lanes take (math_traits<xsimd::batch>::
-/// rsqrt_newton_correction for float, fast::detail::rsqrt_newton_product for the fast mode's
-/// double): one step from 2^-14 leaves 2^-27, and two take more instructions than this one
-/// correction for double's accuracy.
+/// 1/sqrt(x) for x a positive normal double (other x: unspecified). AVX-512: the 2^-14 estimate y
+/// corrected once to fourth order (r = 1 - x y^2, y (1 + r/2 + 3 r^2/8 + 5 r^3/16 + 35 r^4/128)):
+/// |rel err| < 3 u (u = 2^-53). Elsewhere 1 / sqrt (1.5 u). One correction, not Newton steps: one
+/// step from 2^-14 leaves 2^-27, and two cost more than this.
 template <class D> inline D rsqrt_normal(const D& x)
 {
 #  if defined(__AVX512F__)
@@ -152,23 +129,16 @@ template <class D> inline D rsqrt_normal(const D& x)
     return D(1.0) / xsimd::sqrt(x);
 }
 
-/// 1/|v| from dd = |v|^2: 0 unless dd is a positive normal double (a float-derived dd is, but for
-/// a zero vector, and NaN or inf from non-finite input).
+/// 1/|v| from dd = |v|^2: 0 unless dd is a positive normal double (zero vector, NaN, inf).
 template <class D> inline D inverse_length(const D& dd)
 {
     const auto normal = (dd >= D(std::numeric_limits<double>::min())) && (dd <= D(std::numeric_limits<double>::max()));
     return xsimd::select(normal, rsqrt_normal(xsimd::select(normal, dd, D(1.0))), D(0.0));
 }
-/// The same for dd = |d|^2 of a float-derived d (light minus point): dd is 0 (a light at the
-/// point) or in [2^-298, 2^257] (finite input; min and max of double are far outside), or NaN or
-/// inf (non-finite input: the lane is poisoned, its value does not matter). One test: dd > 0.
-/// Pre: d's components are differences of floats (or floats).
-/// Blinn's |l + v|^2 (part_light) takes it too: l = d / |d| and v = e / |e| rounded, with d and e
-/// float-derived, so a nonzero component of l or v is at least 2^-149 / 2^130 = 2^-279 (float's
-/// least step over the longest float vector) and a nonzero component of l + v at least an ulp of
-/// that, 2^-331: a nonzero |l + v|^2 is above 2^-662, far inside double's normal range, and at
-/// most 4, so 1/|l + v| is inverse_length's, bit for bit, with one test instead of two and no
-/// select of the input.
+/// The same for dd = |d|^2 of a float-derived d (Pre): dd is 0, in [2^-298, 2^257], or NaN or inf
+/// (a poisoned lane): one test, dd > 0. Blinn's |l + v|^2 takes it too: nonzero, it is above 2^-662
+/// (its components are at least float's least step over the longest float vector) and at most 4,
+/// so the result is inverse_length's, bit for bit.
 template <class D> inline D inverse_length_of_float_difference(const D& dd)
 {
     return xsimd::select(dd > D(0.0), rsqrt_normal(dd), D(0.0));
@@ -202,8 +172,8 @@ inline void widen3(const glm::vec<3, V, Q>& v, glm::vec<3, double_t<V>, Q>& lowe
     }
 }
 
-/// The frame of the stable mode (detail/stable.hpp's prepare) with n and v in double: the
-/// same view models, two-sided rules and poison.
+/// The stable mode's frame (routes/stable.hpp's prepare) with n and v in double: the same view
+/// models, two-sided rules and poison.
 template <features F, class V, glm::qualifier Q>
 inline surface_frame<V, Q> prepare(const glm::vec<3, V, Q>& position, const glm::vec<3, V, Q>& normal,
                                                const glm::vec<3, V, Q>& given_view, const environment<V, Q>& env,
@@ -261,8 +231,7 @@ template <features F>
 inline constexpr bool unit_factor = (F.attenuation == attenuation_model::none || F.lights == light_kind::directional) &&
                                     F.spot == spot_model::none;
 
-/// L: the light in double (exact: its float values widened). f as the wider route takes it:
-/// float's cap on the attenuation (light_factor with U = float).
+/// L: the light in double (exact); f as the wider route takes it (float's attenuation cap).
 template <features F, class D, glm::qualifier Q>
 inline part_terms<D> part_light(const part_frame<D, Q>& s, const light<double, Q>& L)
 {
@@ -271,20 +240,19 @@ inline part_terms<D> part_light(const part_frame<D, Q>& s, const light<double, Q
     const vec3 d = detail::homogeneous_difference<F.lights>(vec3(D(L.position.x), D(L.position.y), D(L.position.z)), w, s.position);
     const D dd = detail::dot(d, d);
     const D nd = detail::dot(s.normal, d);
-    // 1/|d|, 0 where the light is at Q (no direction). Gated with f = 1, nothing reads it off the
-    // lit lanes (their n.d > 0 implies dd > 0) but through the masks below: there it is taken as is
-    // (NaN for dd = 0, discarded), one compare and one select fewer.
+    // 1/|d|, 0 where the light is at Q. Gated with f = 1, only the masks below read it off the lit
+    // lanes (n.d > 0 implies dd > 0): NaN for dd = 0 is discarded, one compare and select fewer.
     D inv;
     if constexpr (gated<F> && unit_factor<F>) inv = rsqrt_normal(dd);
     else inv = inverse_length_of_float_difference(dd);
     // Rounded products: an fma contracted into Blinn's l + v would keep l = -v (d a power-of-two
-    // multiple of -Q, as v's e) from cancelling exactly (found by the blinn_opposite class, AVX-512).
+    // multiple of -Q, as v's e) from cancelling exactly.
     const vec3 l(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
     D distance(0.0);
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = dd * inv;
     const D f = light_factor<F, D, Q, light<double, Q>, unweighted, float>(L, distance, w, l, unweighted{});
-    // Lit: a defined normal, a light direction (inv > 0) and, where gated, n.l > 0. Gated, n.d > 0
-    // implies d != 0 and so inv > 0 (a nonzero float-derived dd is at least 2e-90): one compare.
+    // Lit: a defined normal, a light direction and, where gated, n.l > 0 (one compare: gated,
+    // n.d > 0 implies a nonzero float-derived dd >= 2e-90, so inv > 0).
     auto on = s.defined;
     if constexpr (gated<F>) on = on && (nd > D(0.0));
     else on = on && (inv > D(0.0));
@@ -306,18 +274,16 @@ inline part_terms<D> part_light(const part_frame<D, Q>& s, const light<double, Q
     return t;
 }
 
-/// The specular power c^m of a step in float lanes: x and c rounded to float apiece (each keeps its
-/// relative accuracy where the kernel reads it: x near a highlight, c far from it), then
-/// detail/simd/lanes_power.hpp's pow_cosine.
+/// The specular power c^m of a step in float lanes: x and c rounded to float apiece (each accurate
+/// where the kernel reads it), then pow_cosine (lanes_power.hpp).
 template <class V, class D> inline V power(const part_terms<D>& lower, const part_terms<D>& upper, const V& m)
 {
     return detail::lanes::pow_cosine(xsimd::max(join<V>(lower.x, upper.x), V(0.0f)), join<V>(lower.c, upper.c), m);
 }
 
-/// One light's terms added to the float sums of a step: the geometry of both parts in double,
-/// then the weights, x and c rounded to float once, the power c^m and the sums in float.
-/// L: the light's float lanes (its colours, with the material when folded); wide: the same light
-/// in double (position, attenuation, spot).
+/// One light's terms added to the float sums of a step: the geometry of both parts in double, the
+/// weights, x and c rounded to float once, power and sums in float. L: the light's float lanes
+/// (with the material when folded); wide: the same light in double (position, attenuation, spot).
 template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>
 inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const light<V, Q>& L,
                                   const light<double, Q>& wide, const V& m)
