@@ -16,6 +16,7 @@
 #include "support/wide.hpp"
 
 #include <phong/batch.hpp> // first: its pragmas cover the intrinsics headers (the SIMD rows)
+#include <phong/accuracy.hpp> // the fast kernels' bounds
 #include <phong/core/fast_math.hpp>
 #include <phong/core/math.hpp>
 

@@ -6,6 +6,7 @@
 // against the run-time path: tables evaluated at compile time, and detail::ce called directly.
 #include "support/numeric.hpp"
 
+#include <phong/accuracy.hpp> // the fast kernels' bounds
 #include <phong/core/fast_math.hpp>
 #include <phong/phong.hpp>
 

@@ -3,6 +3,7 @@
 // NaN or inf in the domain; scalars and SIMD batches (the batch test binary also builds this file
 // with -march=native: AVX-512 lanes).
 #include <phong/batch.hpp>
+#include <phong/accuracy.hpp> // the fast kernels' bounds
 #include <phong/core/fast_math.hpp>
 
 #include <doctest/doctest.h>

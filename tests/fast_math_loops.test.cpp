@@ -6,6 +6,7 @@
 // reassociated log2's exponent k with the polynomial (every base near 1 gave 1), and clang++ at SSE2
 // saw through xsimd's rounding tricks (docs/compilers.md, "-ffast-math").
 #include <phong/batch.hpp>
+#include <phong/accuracy.hpp> // the fast kernels' bounds
 #include <phong/core/fast_math.hpp>
 
 #include <doctest/doctest.h>

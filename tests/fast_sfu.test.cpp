@@ -4,6 +4,7 @@
 // on a GPU, with the instructions themselves.
 #include <doctest/doctest.h>
 
+#include <phong/accuracy.hpp> // the fast kernels' bounds
 #include <phong/core/fast_math.hpp>
 
 #include <algorithm>

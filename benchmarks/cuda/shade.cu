@@ -13,6 +13,7 @@
 //   ./shade_bench [repetitions = 21] [points = 4194304]
 // CI compiles it (.ci/steps/50-cuda.sh) and counts the PTX instructions per light of the kernels
 // count_* below (benchmarks/cuda/ptx_per_light.awk), with and without --use_fast_math.
+#include <phong/accuracy.hpp> // fast::pow_unit_sfu_max_rel, rsqrt_sfu_max_rel
 #include <phong/phong.hpp>
 
 #include <cuda_runtime.h>

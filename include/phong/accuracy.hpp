@@ -32,6 +32,7 @@
 // bounds (tests/batch_accuracy.test.cpp).
 #pragma once
 
+#include "core/fast_math.hpp"
 #include "inputs/features.hpp"
 
 #include <array>
@@ -290,3 +291,17 @@ PHONG_HD constexpr bound of(input_class c)
 }
 
 } // namespace phong::accuracy
+
+namespace phong::fast {
+/// The fast kernels' error bounds, derived beside the kernels (phong/core/fast_math.hpp,
+/// fast_sfu.hpp) and entering the fast tables above:
+///  * pow_unit_max_rel (8e-6): fast::pow_unit's relative error where the exact x^m >= 2^-24,
+///    absolute 2^-24 pow_unit_max_rel below;
+///  * rsqrt_max_rel<T> (4e-7 float, 4e-16 double): fast::rsqrt's, for a positive normal x;
+///  * pow_unit_sfu_max_rel(m), rsqrt_sfu_max_rel (2^-22): the same in float CUDA device code,
+///    where the special-function units compute them (+inf, no bound, for m beyond about 6e6).
+using detail::pow_unit_max_rel;
+using detail::pow_unit_sfu_max_rel;
+using detail::rsqrt_max_rel;
+using detail::rsqrt_sfu_max_rel;
+} // namespace phong::fast

@@ -140,8 +140,6 @@ PHONG_INLINE constexpr V exp2_estrin(V y)
     return phong::detail::select(y >= V(floor), scale * e, V(S(0)));
 }
 
-} // namespace detail
-
 /// Relative error bound of fast::pow_unit where the exact x^m >= 2^-24 (|m log2 x| <= 24); below
 /// that its absolute error is at most 2^-24 pow_unit_max_rel. Derived: E's 2.1e-7 and the float
 /// rounding of E, plus ln 2 |m log2 x| times the absolute error of m log2 x (P's 2.1e-7 relative,
@@ -149,6 +147,8 @@ PHONG_INLINE constexpr V exp2_estrin(V y)
 /// float, 3.3e-6 in double (tests/fast_math.test.cpp; SSE2, AVX2 and AVX-512 lanes alike), published
 /// with a margin.
 inline constexpr double pow_unit_max_rel = 8e-6;
+
+} // namespace detail
 
 /// Fast x^m for a base x in [0, 1] and an exponent m >= 0, finite (the specular power):
 ///   x^m = 2^(m log2 x), log2 by a degree-7 polynomial on the mantissa, 2^y by a degree-5 one.
@@ -272,6 +272,8 @@ PHONG_INLINE constexpr V reciprocal_normal(V x)
 }
 } // namespace detail
 
+namespace detail {
+
 /// Relative error bound of fast::rsqrt for a positive normal x: an estimate with relative error
 /// e0 <= 1.5 2^-12 (SSE rsqrtss/rsqrtps, the coarsest used) refined by one Newton step has
 /// 1.5 e0^2 = 2.0e-7, plus the step's roundings (<= 2.5 2^-24 = 1.5e-7): 3.5e-7, published 4e-7.
@@ -279,8 +281,6 @@ PHONG_INLINE constexpr V reciprocal_normal(V x)
 /// Double: the exact 1/sqrt, or with AVX-512 lanes rsqrt14 (2^-14) refined by two Newton steps
 /// (1.5 (1.5 2^-28)^2 plus the roundings, 2.5 2^-53): 3.3e-16, published 4e-16; measured 2.7e-16.
 template <class T> inline constexpr double rsqrt_max_rel = sizeof(T) == 4 ? 4e-7 : 4e-16;
-
-namespace detail {
 
 /// One Newton step for 1/sqrt(x) in product form, r (3/2 - (x/2) r^2), from an estimate r and
 /// half_x = x/2: the fast mode's step at every width (float scalars after rsqrtss, double AVX-512

@@ -32,8 +32,6 @@ inline constexpr double sfu_log2_abs = 0x1p-22;
 inline constexpr double sfu_exp2_rel = 0x1p-22;
 /// The documented relative error of rsqrt.approx.f32 (rsqrtf): 2 ulp, at most 2^-22.
 inline constexpr double sfu_rsqrt_rel = 0x1p-22;
-} // namespace detail
-
 /// Relative error bound of fast::pow_unit in float CUDA device code, x^m = 2^(m lg2(x)), where the
 /// exact x^m >= 2^-24 (|m log2 x| <= 24); below that its absolute error is at most 2^-24 times it.
 /// Derived: y = fl(m lg2(x)) differs from m log2 x by
@@ -51,15 +49,17 @@ PHONG_INLINE constexpr double pow_unit_sfu_max_rel(double m)
 {
     const double u = 0x1p-24;
     const double ln2 = 0.6931471805599453;
-    const double D = (1 + u) * detail::sfu_log2_abs * (m > 24 ? m : 24.0) + 24 * u;
+    const double D = (1 + u) * sfu_log2_abs * (m > 24 ? m : 24.0) + 24 * u;
     const double t = D * ln2;
     if (!(t <= 1)) return std::numeric_limits<double>::infinity();
-    return detail::sfu_exp2_rel + (1 + detail::sfu_exp2_rel) * (t + t * t);
+    return sfu_exp2_rel + (1 + sfu_exp2_rel) * (t + t * t);
 }
 
 /// fast::rsqrt's bound in float CUDA device code: rsqrtf's sfu_rsqrt_rel, within the CPU's
 /// rsqrt_max_rel<float> (4e-7), so the fast mode's 1/|d| terms of phong/accuracy.hpp hold unchanged.
-inline constexpr double rsqrt_sfu_max_rel = detail::sfu_rsqrt_rel;
+inline constexpr double rsqrt_sfu_max_rel = sfu_rsqrt_rel;
+
+} // namespace detail
 
 #if defined(__CUDA_ARCH__)
 namespace detail {

@@ -399,7 +399,7 @@ template <evaluation M, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T route_inverse_halfway_length(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& v)
 {
     if constexpr (M == evaluation::fast) {
-        constexpr double er = fast::rsqrt_max_rel<scalar_t<T>>;
+        constexpr double er = fast::detail::rsqrt_max_rel<scalar_t<T>>;
         return inverse_length_at_least<M>(l + v, T(scalar_t<T>(16 * er * er)));
     } else if constexpr (!std::is_same_v<mask_t<T>, bool>) {
         // SIMD lanes: lit lanes have |l + v|^2 <= 4, so only l = -v needs a test.
@@ -437,7 +437,7 @@ PHONG_INLINE constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Li
     const glm::vec<3, T, Q> h(math_traits<T>::fma(d.x, inv, s.view.x), math_traits<T>::fma(d.y, inv, s.view.y),
                               math_traits<T>::fma(d.z, inv, s.view.z));
     const T hh = detail::dot(h, h);
-    constexpr double er = fast::rsqrt_max_rel<S>;
+    constexpr double er = fast::detail::rsqrt_max_rel<S>;
     const mask_t<T> defined = math_traits<T>::both(positive, hh >= T(S(16 * er * er)));
     T power;
     if (m.is_even()) power = m.half_power(detail::select(defined, (numerator * numerator) * fast::detail::reciprocal_normal(hh), T(0)));
