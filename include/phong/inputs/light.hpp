@@ -90,7 +90,7 @@ struct light {
 ///                                      as light::position; U, Q are read from it, else from diffuse's
 ///   diffuse(L), specular(L) -> glm::vec<3, U, Q>  required: Ld, Ls
 ///   ambient(L) -> glm::vec<3, U, Q>   optional, default 0
-///   attenuation(L) -> falloff<U>, spot(L) -> spot_cone<U, Q>  optional, defaults: none
+///   attenuation(L) -> `falloff<U>`, spot(L) -> spot_cone<U, Q>  optional, defaults: none
 /// Each is called at most once per light per point, for the terms F has. Example:
 ///   template <> struct phong::light_traits<my_light> {
 ///       static glm::vec4 position(const my_light& L) { return glm::vec4(L.position, 1.0f); }
