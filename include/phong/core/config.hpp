@@ -21,18 +21,11 @@
 #  define PHONG_HD
 #endif
 
-/// PHONG_INLINE marks every function on shade<F>'s per-point and per-light path (and the small
-/// public term functions): the compiler is told to inline it into the caller, so that a user's
-/// shading loop is one function at every optimization level, rather than leaving the decision to
-/// the inliner's size heuristics (which differ between compilers and between -O2 and -O3).
-/// It includes PHONG_HD. g++ and clang++: inline __attribute__((always_inline)) when optimizing
-/// (-O1 and up: __OPTIMIZE__; at -O0, where nothing is fast anyway, plain inline, so that debug
-/// builds compile as quickly as without it; and under AddressSanitizer, whose checks multiply
-/// with every inlined copy of the shading loop: measurements in docs/compilers.md, "Inlining");
-/// MSVC: __forceinline; CUDA: __host__ __device__ __forceinline__. Define PHONG_NO_FORCE_INLINE to get
-/// plain `inline` (e.g. to step through phong in a debugger), or define PHONG_INLINE yourself
-/// before including any phong header. always_inline and constexpr combine: constant evaluation
-/// is unaffected. A renderer's light_traits functions may use it too.
+/// PHONG_INLINE marks every function on shade<F>'s per-point and per-light path, so a shading loop
+/// is one function whatever the inliner's heuristics (includes PHONG_HD). g++/clang++ when
+/// optimizing: always_inline (plain inline at -O0 and under AddressSanitizer; docs/compilers.md,
+/// "Inlining"); MSVC: __forceinline; CUDA: __forceinline__. PHONG_NO_FORCE_INLINE gives plain
+/// `inline`; or define PHONG_INLINE yourself before any phong header.
 #if defined(__SANITIZE_ADDRESS__) // g++
 #  define PHONG_DETAIL_ASAN 1
 #elif defined(__has_feature)
@@ -54,10 +47,7 @@
 #  endif
 #endif
 
-/// PHONG_DETAIL_LAMBDA_INLINE: PHONG_INLINE's decision for a lambda (after its parameter list),
-/// so that a light loop's body passed as a lambda (detail::each_listed_light) is inlined as the
-/// loop's own steps are. g++ and clang++ when optimizing (not under AddressSanitizer, nor with
-/// PHONG_NO_FORCE_INLINE); empty elsewhere.
+/// PHONG_DETAIL_LAMBDA_INLINE: PHONG_INLINE's decision for a lambda (after its parameter list).
 #if !defined(PHONG_NO_FORCE_INLINE) && !defined(PHONG_DETAIL_ASAN) && !defined(__CUDACC__) && (defined(__GNUC__) || defined(__clang__)) && \
     defined(__OPTIMIZE__)
 #  define PHONG_DETAIL_LAMBDA_INLINE __attribute__((always_inline))
@@ -67,9 +57,8 @@
 
 namespace phong {
 
-/// A precondition handler: called with the failed check's message (validate's, naming the field
-/// and the reason, e.g. "material.kd: negative, NaN or inf"; or shade_batch's), and the file and
-/// line of the check. See set_precondition_handler.
+/// A precondition handler: called with the failed check's message (e.g. "material.kd: negative,
+/// NaN or inf"), file and line. See set_precondition_handler.
 using precondition_handler = void (*)(const char* message, const char* file, int line);
 
 #if !defined(__CUDA_ARCH__)
@@ -84,9 +73,7 @@ namespace detail {
     std::abort();
 }
 
-// The installed handler, read and written atomically. g++ and clang++: their __atomic builtins on a
-// plain pointer (what std::atomic<T*> runs, without <atomic> in every translation unit, which
-// costs a header of GLM's size); other compilers: std::atomic.
+// The installed handler, atomic: g++/clang++ __atomic builtins (no <atomic> in every translation unit).
 #if defined(__GNUC__) || defined(__clang__)
 inline precondition_handler current_precondition_handler = &default_precondition_handler;
 inline precondition_handler exchange_handler(precondition_handler h) noexcept
@@ -102,18 +89,11 @@ inline precondition_handler load_handler() noexcept { return current_preconditio
 
 } // namespace detail
 
-/// Installs the handler that precondition checks (PHONG_ASSERT in debug builds: shade's validate()
-/// of every parameter; in every build: shade_batch's span-length and overlap checks, which keep
-/// memory safe) call when they fail, and returns the previous
-/// one; nullptr restores the default (print "phong: precondition failed: <message> (file:line)" to
-/// stderr, then std::abort()). Thread-safe (an atomic pointer); process-wide.
-/// A handler may return (e.g. a test recording the message; throwing terminates, the checks are in
-/// noexcept functions): the call then goes on as an NDEBUG
-/// build would, with the result unspecified but no undefined behaviour (shade on out-of-domain
-/// parameters gives some value, possibly NaN; shade_batch with spans of wrong lengths writes
-/// nothing). Not consulted in constant evaluation (a compile error instead) nor in CUDA device
-/// code (plain assert there), nor under NDEBUG for the value checks (shade_batch's memory checks
-/// call it in every build).
+/// Installs the handler failed precondition checks call (debug builds: validate() of every
+/// parameter; every build: shade_batch's span checks) and returns the previous one; nullptr restores
+/// the default. Thread-safe, process-wide. A handler may return (throwing terminates: noexcept
+/// callers): the call goes on as under NDEBUG, result unspecified but no undefined behaviour.
+/// Not consulted in constant evaluation (a compile error) nor in CUDA device code (assert).
 inline precondition_handler set_precondition_handler(precondition_handler handler) noexcept
 {
     return detail::exchange_handler(handler ? handler : &detail::default_precondition_handler);
@@ -136,13 +116,9 @@ inline void precondition_failed(const char* message, const char* file, int line)
 
 } // namespace phong
 
-/// PHONG_ASSERT(cond, msg): a debug-build check of a precondition. Under NDEBUG nothing is
-/// evaluated. Otherwise a false cond calls the precondition handler with msg (a const char*, may
-/// be computed at run time, e.g. validate(x).message()) and __FILE__, __LINE__; see
-/// phong::set_precondition_handler (default: print "phong: precondition failed: <msg> (file:line)"
-/// and abort). In CUDA device code it is the plain assert((cond) && (msg)). Define PHONG_ASSERT
-/// yourself before including any phong header to replace it altogether (detail::require then
-/// uses it too).
+/// PHONG_ASSERT(cond, msg): a debug-build precondition check (nothing evaluated under NDEBUG); a
+/// false cond calls the precondition handler with msg, __FILE__, __LINE__ (CUDA device code: assert).
+/// Define it yourself before any phong header to replace it.
 #if defined(PHONG_ASSERT)
 #  define PHONG_DETAIL_ASSERT_AT(cond, msg, file, line) PHONG_ASSERT(cond, msg)
 #else
@@ -157,8 +133,7 @@ inline void precondition_failed(const char* message, const char* file, int line)
 #  define PHONG_ASSERT(cond, msg) PHONG_DETAIL_ASSERT_AT(cond, msg, __FILE__, __LINE__)
 #endif
 
-/// The file and line of the caller, as default arguments (g++ and clang builtins; std::source_location
-/// needs clang 15): detail::require reports its caller's location, not its own.
+/// The caller's file and line, as default arguments, for detail::require.
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDACC__)
 #  define PHONG_DETAIL_CALLER_FILE __builtin_FILE()
 #  define PHONG_DETAIL_CALLER_LINE __builtin_LINE()
@@ -169,22 +144,16 @@ inline void precondition_failed(const char* message, const char* file, int line)
 
 namespace phong::detail {
 
-/// Called only when a precondition fails during constant evaluation, and never a constant
-/// expression then: it orders the message's address against a local's, a comparison whose result
-/// is unspecified ([expr.const]: not a core constant expression). So the evaluation is rejected,
-/// the compiler names this function, and both g++ 12 and clang 14 print the message literal (g++
-/// in the failed comparison, clang in the call), which names the field (checked by
-/// tests/nan_policy/checks.cmake). A null message would be a constant expression: require never
-/// passes one.
+/// Called only when a precondition fails in constant evaluation: ordering the message's address
+/// against a local's is not a core constant expression ([expr.const]), so the compiler rejects it
+/// and prints the message literal. A null message would be constant: require never passes one.
 PHONG_INLINE constexpr void precondition_failed_see_phong_validate(const char* message) noexcept
 {
     const char unrelated = 0;
     if (message != nullptr && message < &unrelated) return;
 }
 
-/// Checks `ok`: a compile error in constant evaluation (naming the message), PHONG_ASSERT at run
-/// time (the precondition handler in debug builds, with the caller's file and line; nothing under
-/// NDEBUG or in CUDA device code).
+/// Checks `ok`: a compile error in constant evaluation, PHONG_ASSERT at run time.
 PHONG_INLINE constexpr void require(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
                                 int line = PHONG_DETAIL_CALLER_LINE) noexcept
 {
@@ -201,11 +170,8 @@ PHONG_INLINE constexpr void require(bool ok, const char* message, const char* fi
     }
 }
 
-/// Whether the debug-only value checks run here: always in constant evaluation (a failed check is
-/// a compile error), at run time only without NDEBUG. Under NDEBUG at run time false, so a check
-/// written `if (value_checks_on()) { ... }` is not even evaluated. Every debug-only check of a
-/// parameter (validate() of the material, environment, lights and weights, unit_inputs' unit
-/// vectors, an incident's direction) takes this one test.
+/// Whether the debug-only value checks run: always in constant evaluation, at run time only
+/// without NDEBUG. Every debug-only parameter check is written `if (value_checks_on()) { ... }`.
 PHONG_INLINE constexpr bool value_checks_on() noexcept
 {
 #if defined(NDEBUG)
@@ -215,10 +181,7 @@ PHONG_INLINE constexpr bool value_checks_on() noexcept
 #endif
 }
 
-/// ok, reported where it is false as require() reports it (a compile error in constant
-/// evaluation, the precondition handler in debug builds), for a bound the caller keeps in every
-/// build: where ok is false it skips the read past a range. Release builds pay a compare there,
-/// not the handler's call (shade_batch's span checks, once per call, use memory_safe instead).
+/// ok, reported where false as require() does, for a bound the caller keeps in every build.
 PHONG_INLINE constexpr bool within_bounds(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
                                       int line = PHONG_DETAIL_CALLER_LINE) noexcept
 {

@@ -1,9 +1,6 @@
-// phong: the constant-evaluation kernels (sqrt, exp, log, log1p, pow in long double), used by
-// math.hpp under std::is_constant_evaluated() and to build detail/power.hpp's tables.
+// phong: the constant-evaluation kernels (sqrt, exp, log, log1p, pow in long double) for math.hpp
+// and power.hpp's tables: special values first, then range reduction, then a capped series.
 // SPDX-License-Identifier: MIT
-//
-// GLM 0.9.9.8 and the C++20 library have no constexpr sqrt/exp/log: these are capped iterative
-// kernels (special values first, then range reduction, then a series; gcem's recipe).
 #pragma once
 
 #include "config.hpp"
@@ -11,8 +8,7 @@
 #include <limits>
 
 #if defined(__NVCC__)
-// nvcc treats long double as double in device code and warns (#20208) at every use; these kernels
-// serve constant evaluation, where double precision is enough for float.
+// nvcc warns (#20208) at long double in device code; double is enough here.
 #  pragma nv_diagnostic push
 #  pragma nv_diag_suppress 20208
 #endif

@@ -1,13 +1,7 @@
-// phong: scalar kernels (sqrt, exp, expm1, log, log1p, pow, fma, min/max/clamp, select).
+// phong: scalar kernels (sqrt, exp, expm1, log, log1p, pow, fma, min/max/clamp, select) that every
+// formula calls instead of std::, so constant evaluation (constexpr_math.hpp) and SIMD batches
+// (math_traits<V>, specialized by phong/batch.hpp) run the same templates.
 // SPDX-License-Identifier: MIT
-//
-// Every formula in phong calls these, never std:: directly, for two reasons:
-//  * constant evaluation: GLM 0.9.9.8 and the C++20 library have no constexpr sqrt/exp/log, so
-//    under std::is_constant_evaluated() a capped iterative path in long double runs instead
-//    (special values first, then range reduction, then a series; gcem's recipe). Its results
-//    agree with the run-time std:: path within `constexpr_tolerance_ulp` ulp (tested).
-//  * SIMD: the same templates run on SIMD batches; `math_traits<V>` is the customization point
-//    that phong/batch.hpp specializes for xsimd batches.
 #pragma once
 
 #include "config.hpp"
@@ -28,9 +22,8 @@
 #include <type_traits>
 
 #if defined(__NVCC__)
-// nvcc treats long double as double in device code and warns (#20208) at every use. Here long
-// double serves only the constant-evaluation kernels (detail::ce) and cos_degrees (run once per
-// light set-up): in device code they are as accurate as double allows, enough for float.
+// nvcc warns (#20208) at every long double in device code; here it serves only detail::ce and
+// cos_degrees, for which double is enough.
 #  pragma nv_diagnostic push
 #  pragma nv_diag_suppress 20208
 #endif
@@ -44,9 +37,8 @@ inline constexpr int constexpr_tolerance_ulp = 2;
 
 
 
-/// The error e of the product p = fl(a * b): a * b = p + e exactly (Veltkamp's split of a and b
-/// into halves of (digits + 1) / 2 bits, Dekker's product), for |a|, |b| below max / 2^((digits +
-/// 3) / 2) (the split overflows above) and e not subnormal. S is the lane type of V.
+/// e with a * b = fl(a * b) + e exactly (Veltkamp split, Dekker's product), for |a|, |b| below
+/// max / 2^((digits + 3) / 2) and e not subnormal. S is the lane type of V.
 template <class V, class S = V>
 PHONG_INLINE constexpr V dekker_product_error(const V& a, const V& b, const V& p)
 {
@@ -57,9 +49,7 @@ PHONG_INLINE constexpr V dekker_product_error(const V& a, const V& b, const V& p
     return ieee::ordered_sum(ah * bh - p, ah * bl, al * bh, al * bl);
 }
 
-/// a*b + c with the product exact (Veltkamp split, Dekker's product), then two additions: exact
-/// whenever c = -fl(a*b) (the error-free products phong relies on), else within 1 ulp. For
-/// constant evaluation and for SIMD targets without an FMA instruction. S is the lane type of V.
+/// a*b + c with the product exact: exact when c = -fl(a*b), else within 1 ulp (no FMA instruction).
 template <class V, class S = V>
 PHONG_INLINE constexpr V dekker_fma(const V& a, const V& b, const V& c)
 {
@@ -67,18 +57,14 @@ PHONG_INLINE constexpr V dekker_fma(const V& a, const V& b, const V& c)
     return ieee::opaque(p + c) + dekker_product_error<V, S>(a, b, p);
 }
 
-/// hi + lo = a + b exactly (Knuth's TwoSum); returns lo for hi = fl(a + b). Any rounding to
-/// nearest, no condition on |a| and |b|; under -fassociative-math too (ieee::two_sum_error keeps
-/// the additions in order).
+/// lo with hi + lo = a + b exactly, hi = fl(a + b) (Knuth's TwoSum; ieee::two_sum_error).
 template <class T> PHONG_INLINE constexpr T two_sum_error(T a, T b, T hi)
 {
     return ieee::two_sum_error(a, b, hi);
 }
 
 
-/// Customization point: how phong evaluates its scalar kernels on the number type V.
-/// The primary template serves float, double and long double (constexpr path + std:: path).
-/// phong/batch.hpp specializes it for SIMD batches.
+/// Customization point: phong's scalar kernels on V (float, double, long double here; SIMD in batch.hpp).
 template <class V, class Enable = void>
 struct math_traits {
     static_assert(std::is_floating_point_v<V>, "phong: no math_traits for this number type");
@@ -90,10 +76,7 @@ struct math_traits {
     {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::sqrt(x));
 #if PHONG_X86_SQRT
-        // The instruction itself: IEEE's correctly rounded square root, the value std::sqrt gives.
-        // std::sqrt must set errno for x < 0, so compilers guard it with a compare and a libm call
-        // on a cold path, whose clobbered registers cost moves in every light loop (intrinsics
-        // add an instruction to clear the upper lanes).
+        // std::sqrt's value without its errno path (a libm call whose clobbers cost moves in the loop).
         if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
             V r;
 #  if defined(__AVX__) // three operands: the upper lanes come from x itself, no false dependency
@@ -112,8 +95,7 @@ struct math_traits {
     /// 1/sqrt(x), correctly rounded twice (a division of a square root).
     PHONG_INLINE static constexpr V rsqrt(V x)
     {
-        // 1/0 is not a constant expression: give rsqrt(0) = inf explicitly, so that the guarded
-        // select(dd > 0, rsqrt(dd), 0) of normalize(0) etc. stays constexpr.
+        // 1/0 is not a constant expression: rsqrt(0) = inf explicitly.
         if (std::is_constant_evaluated() && x == V(0)) return std::numeric_limits<V>::infinity();
         return V(1) / sqrt(x);
     }
@@ -147,8 +129,7 @@ struct math_traits {
         if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::pow(x, y));
         return std::pow(x, y);
     }
-    /// x^m for x in [0, 1], m >= 0: float and double through detail/power.hpp (inline, no libm
-    /// call, constexpr too); long double through pow; CUDA device code through CUDA's pow.
+    /// x^m for x in [0, 1], m >= 0: float and double by power.hpp; else (and CUDA) pow.
     PHONG_INLINE static constexpr V pow_unit(V x, V m)
     {
         if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
@@ -188,10 +169,8 @@ struct math_traits {
     /// The larger of a and b (b where a < b: a NaN in a is returned, one in b is not).
     PHONG_INLINE static constexpr V max(V a, V b) { return a < b ? b : a; }
 
-    /// A power of two 2^-e such that |x| * 2^-e lies in [1, 2) for normal x, clamped to stay a
-    /// normal number. Multiplying by it is exact, so a vector
-    /// scaled by it keeps its direction bit for bit while its squares neither overflow nor
-    /// underflow. x must be finite and >= 0. (Subnormal x lands in [2^-22, 2) for float.)
+    /// 2^-e with |x| 2^-e in [1, 2) for normal x (clamped to a normal number), x finite >= 0: an
+    /// exact scale that keeps a vector's direction while its squares neither overflow nor underflow.
     PHONG_INLINE static constexpr V inverse_pow2_scale(V x)
     {
         using bits_t = std::conditional_t<sizeof(V) == 4, std::uint32_t, std::uint64_t>;
@@ -205,7 +184,6 @@ struct math_traits {
             if (scale_biased > max_biased) scale_biased = max_biased;
             return std::bit_cast<V>(scale_biased << mant);
         } else {
-            // long double: by powers of two (used only by references and tests).
             if (x == 0) return V(1);
             int k = 0;
             (void)detail::ce::reduce_pow2(static_cast<detail::ce::wide>(x), k);
@@ -222,16 +200,11 @@ template <class V> using scalar_t = typename math_traits<V>::scalar;
 /// The largest finite value of V's scalar type, as a V (std::numeric_limits<batch> is not specialized).
 template <class V> PHONG_INLINE constexpr V largest() { return V(std::numeric_limits<scalar_t<V>>::max()); }
 
-/// sqrt(x). Domain x >= 0; sqrt(-0) = -0, x < 0 gives NaN, sqrt(inf) = inf. Float and double at
-/// run time on x86-64 (g++, clang++): the sqrtss/sqrtsd instruction, the same correctly rounded
-/// value as std::sqrt without its errno side effect (PHONG_NO_X86_SQRT turns that off).
+/// sqrt(x), correctly rounded, x >= 0; sqrt(-0) = -0, x < 0 gives NaN (PHONG_NO_X86_SQRT: std::sqrt).
 template <class V> PHONG_INLINE constexpr V sqrt(V x) { return math_traits<V>::sqrt(x); }
-/// 1/sqrt(x) for x >= 0: rsqrt(0) = inf, rsqrt(inf) = 0; x < 0 or NaN gives NaN. Scalars:
-/// 1 / sqrt(x) (< 1 ulp); SIMD float lanes: a hardware estimate refined by one Newton step
-/// (< 2 ulp), see batch.hpp.
+/// 1/sqrt(x), x >= 0: < 1 ulp (SIMD float lanes < 2); rsqrt(0) = inf, rsqrt(inf) = 0, x < 0 or NaN: NaN.
 template <class V> PHONG_INLINE constexpr V rsqrt(V x) { return math_traits<V>::rsqrt(x); }
-/// 1/sqrt(x) for x a positive normal number (the caller has checked, or selects the lanes
-/// where it is not away): SIMD float lanes skip rsqrt's guards for 0 and inf; elsewhere rsqrt.
+/// rsqrt for a positive normal x: SIMD float lanes skip the guards for 0 and inf.
 template <class V> PHONG_INLINE constexpr V rsqrt_normal(V x)
 {
     if constexpr (requires { math_traits<V>::rsqrt_normal(x); }) return math_traits<V>::rsqrt_normal(x);
@@ -243,29 +216,19 @@ template <class V> PHONG_INLINE constexpr V exp(V x) { return math_traits<V>::ex
 template <class V> PHONG_INLINE constexpr V log(V x) { return math_traits<V>::log(x); }
 /// ln(1 + x), accurate for small |x|. log1p(-1) = -inf, x < -1 gives NaN.
 template <class V> PHONG_INLINE constexpr V log1p(V x) { return math_traits<V>::log1p(x); }
-/// e^x - 1, accurate for small |x|. expm1(-inf) = -1, expm1(+inf) = inf. Scalars only (the SIMD
-/// math_traits have no expm1).
+/// e^x - 1, accurate for small |x|. expm1(-inf) = -1, expm1(+inf) = inf. Scalars only.
 template <class V> PHONG_INLINE constexpr V expm1(V x) { return math_traits<V>::expm1(x); }
 /// x^y (IEEE pow: pow(0, 0) = 1, pow(0, y > 0) = 0).
 template <class V> PHONG_INLINE constexpr V pow(V x, V y) { return math_traits<V>::pow(x, y); }
-/// x^m for a base x in [0, 1] and an exponent m >= 0: the specular and spot powers.
-/// pow_unit(0, 0) = 1, pow_unit(0, m > 0) = 0. Float and double: an inline kernel in double
-/// arithmetic (detail/power.hpp), also in constant evaluation. Double: relative error below
-/// 3 (|m log2 x| + m + 4) 2^-53, results below 2^-1022 flushed to 0. Float: shorter polynomials,
-/// within 1 ulp, correctly rounded but for near-ties (99.99 % of tests/power.test.cpp's inputs).
-/// Outside the domain: x > 1 with m < 0 runs the same kernel; otherwise (x > 1 with m > 0, x < 0,
-/// NaN, inf) IEEE pow's value.
-/// SIMD batches: their pow (batch.hpp).
+/// x^m for x in [0, 1], m >= 0 (the specular and spot powers): power.hpp's kernel (bounds there).
+/// pow_unit(0, 0) = 1, pow_unit(0, m > 0) = 0; other x or m: IEEE pow's value.
 template <class V> PHONG_INLINE constexpr V pow_unit(V x, V m)
 {
     if constexpr (requires { math_traits<V>::pow_unit(x, m); }) return math_traits<V>::pow_unit(x, m);
     else return math_traits<V>::pow(x, m);
 }
-/// pow_unit for x in [0, 1] and a finite m >= 0 only (NaN outside but for 1^m = 1), without pow_unit's libm
-/// fallback (detail/power.hpp): the shading loop's power, whose m validate() has checked.
-/// AtMostOne: x <= 1 holds by construction (cosine_power's base, clamped to 1), so the kernel
-/// leaves out its test of y = m log2 x <= 0 (power::pow_unit_at_most_one); x > 1 then gives a
-/// meaningless value.
+/// pow_unit without its libm fallback, x in [0, 1], m >= 0 finite (else NaN but for 1^m = 1).
+/// AtMostOne: x <= 1 by construction, so the test of m log2 x <= 0 is left out.
 template <bool AtMostOne = false, class V> PHONG_INLINE constexpr V pow_unit_in_domain(V x, V m)
 {
 #if !defined(__CUDA_ARCH__)
@@ -278,8 +241,7 @@ template <bool AtMostOne = false, class V> PHONG_INLINE constexpr V pow_unit_in_
 }
 /// pow_unit_in_domain<true>: the power of a base at most 1 by construction.
 template <class V> PHONG_INLINE constexpr V pow_unit_at_most_one(V x, V m) { return pow_unit_in_domain<true>(x, m); }
-/// a * b + c rounded once (std::fma). Constant evaluation: exact when c = -fl(a b) (the
-/// error-free products phong uses), else within 1 ulp (float: formed in long double, rounded twice).
+/// a * b + c rounded once; constant evaluation: exact when c = -fl(a b), else within 1 ulp.
 template <class V> PHONG_INLINE constexpr V fma(V a, V b, V c) { return math_traits<V>::fma(a, b, c); }
 /// |x|.
 template <class V> PHONG_INLINE constexpr V abs(V x) { return math_traits<V>::abs(x); }
@@ -292,9 +254,7 @@ template <class V> PHONG_INLINE constexpr V clamp(V x, V lo, V hi) { return min(
 /// m ? a : b, lane-wise for SIMD (both sides are evaluated: keep them finite).
 template <class V> PHONG_INLINE constexpr V select(mask_t<V> m, V a, V b) { return math_traits<V>::select(m, a, b); }
 
-/// x^N for a compile-time integer N >= 0 by repeated squaring: no exp/log, exact pattern of
-/// roundings (at most 2 log2 N multiplications; squaring doubles the relative error already present,
-/// so the error is at most (N - 1) u relative, u = eps / 2, i.e. < N ulp). pow<0>(x) = 1 for every x.
+/// x^N for a compile-time N >= 0 by repeated squaring: relative error <= (N - 1) u. pow<0>(x) = 1.
 template <unsigned N, class V> PHONG_INLINE constexpr V pow(V x)
 {
     if constexpr (N == 0) {
@@ -308,10 +268,8 @@ template <unsigned N, class V> PHONG_INLINE constexpr V pow(V x)
     }
 }
 
-/// cos(deg * pi / 180) for deg in [0, 180], exact at 0, 90 and 180 (used to convert OpenGL spot
-/// cutoffs, which are given in degrees, once when a light is made). A 40-term Taylor series in
-/// long double: accurate for |deg| <= 720, then it loses digits, and from about 2000 degrees it
-/// returns garbage (-inf in float from about 1e4): reduce the angle first. NaN gives NaN.
+/// cos(deg pi / 180), exact at 0, 90 and 180; a Taylor series in long double, accurate for
+/// |deg| <= 720 (beyond: reduce the angle first). NaN gives NaN.
 template <class V> PHONG_INLINE constexpr V cos_degrees(V degrees)
 {
     using W = detail::ce::wide;

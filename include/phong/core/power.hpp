@@ -1,25 +1,11 @@
-// phong: x^m for a base in [0, 1] and an exponent m >= 0, in double arithmetic, inline.
-// SPDX-License-Identifier: MIT
-//
-// The specular and spot powers are the one transcendental every lit pair needs. Why not libm's
-// pow: across a call every vector register is caller-saved, so a light loop must keep its sums
-// and unit vectors in memory (docs/design.md). This kernel is straight-line code with two small
-// tables (2 KiB + 512 B), usable in constant evaluation:
-//   x = 2^k z, z in [0.6875, 1.375)  (offset so that x near 1 has k = 0: no cancellation with k)
+// phong: x^m for a base in [0, 1] and an exponent m >= 0, in double arithmetic, inline (no libm
+// call in the light loop), constexpr too:
+//   x = 2^k z, z in [0.6875, 1.375)  (x near 1 has k = 0: no cancellation with k)
 //   log2 x = k + log2(c_i) + log2(1 + r),  r = z / c_i - 1,  |r| <= 2^-7,  c_i: 128 table points
 //   2^y = 2^(n/64) 2^t,  n = round(64 y),  |t| <= 2^-7,  2^(j/64): 64 table entries
-// with Taylor polynomials of degree 7 and 5 (truncation below 1e-17). The tables are literals,
-// generated from the long-double kernels of constexpr_math.hpp and checked against them (below).
-//
-// Accuracy (tests/power.test.cpp, against __float128): double relative error below
-// 3 (|y| + m + 4) 2^-53 with y = m log2 x (measured worst 2.0 times (|y| + m + 4) 2^-53, near
-// |y| = 512; the m term is the rounding of r = z / c_i - 1, which is not exact for x just below 1):
-// 1e-14 for m <= 100, 1e-11 at m = 1e5. Float: 99.99 % correctly rounded, worst 0.5005 ulp.
-// Constant evaluation and run time give the same bits unless the compiler contracts the
-// polynomials' multiply-adds into FMA instructions (g++ and clang do on x86-64 with -march=native:
-// then they differ by rounding, within the same bound). On aarch64, where FMA is always on and both
-// compilers contract by default, every product is kept unfused (mul below, ieee::unfused_product):
-// the same bits as constant evaluation, and as x86-64 without FMA.
+// Double: relative error below 3 (|y| + m + 4) 2^-53, y = m log2 x; float: within 1 ulp, correctly
+// rounded but for near-ties. Design and error analysis: docs/accuracy.md#the-scalar-power-kernel.
+// SPDX-License-Identifier: MIT
 #pragma once
 
 #include "config.hpp"
@@ -34,23 +20,16 @@
 #include <type_traits>
 
 #if defined(__NVCC__)
-// The tables are built in long double on the host; nvcc warns (#20208) that device code would see
-// double. Device code does not use them (math.hpp calls CUDA's pow there).
+// nvcc warns (#20208) at the long double tables; device code does not use them.
 #  pragma nv_diagnostic push
 #  pragma nv_diag_suppress 20208
 #endif
 
 namespace phong::detail {
 
-/// 0^m for an exponent m >= 0: 1 for m = 0, 0 for m > 0. Every power of the lighting model (the
-/// specular factor, the spot cone's exponent; pow_unit, fast::pow_unit, the SIMD lanes' powers)
-/// takes this value at the base 0, the convention pow(0, 0) = 1 of IEEE pow: a shininess or spot
-/// exponent of 0 gives the factor 1 wherever its term is on, the cosine's sign included (the limit
-/// of x^0 as x -> 0). Scalars and SIMD lanes alike (lanes: their select, found by argument-dependent
-/// lookup). The same test is written out in the scalar power kernels below (through the call g++
-/// lays out the routes that inline them differently) and where the edge shares one select or
-/// branch with the base's test: the lanes' kernels (x > 0 || m == 0, detail/simd/lanes_power.hpp),
-/// the SFU power (fast_sfu.hpp) and the scalar add_specular (detail/exact.hpp).
+/// 0^m for m >= 0: 1 for m = 0, 0 for m > 0 (IEEE pow(0, 0) = 1), the value of every power of the
+/// model at the base 0. Written out again where it shares a select with the base's test (the kernels
+/// below, ext/simd/lanes_power.hpp, fast_sfu.hpp).
 template <class M>
 PHONG_INLINE constexpr M power_of_zero(M m)
 {
@@ -74,15 +53,10 @@ struct log2_point {
 };
 
 #if !defined(__CUDA_ARCH__) // device code uses CUDA's pow (math.hpp)
-// The tables and the Taylor coefficients: log2(1 + r) = sum_n (-1)^(n+1) r^n / (n ln 2) (a1..a7),
-// 2^t = sum_n (t ln 2)^n / n! (b1..b5). log2_table[i]: inv_c = 1 / c_i rounded to double, c_i the
-// midpoint of the z whose bits lie in [log_offset + i 2^45, + (i + 1) 2^45) (exactly 1 for the
-// interval that holds 1), log2_c = log2(1 / inv_c) to within half an ulp. exp2_table[j]:
-// bits(2^(j/64)) - (j << 46), 2^(j/64) to within half an ulp (adding round(64 y) << 46 then gives
-// 2^(round(64 y)/64)). Computed in long double by constant evaluation
-// (tests/support/power_tables.hpp, with detail/constexpr_math.hpp's kernels), printed by
-// tests/tools/print_tables.cpp; tests/tables.test.cpp checks every entry against that evaluation
-// bit for bit.
+// Taylor coefficients: log2(1 + r) = sum_n (-1)^(n+1) r^n / (n ln 2) (a1..a7), 2^t = sum_n
+// (t ln 2)^n / n! (b1..b5). log2_table[i]: inv_c = 1 / c_i, c_i the midpoint of the z whose bits lie
+// in [log_offset + i 2^45, + (i + 1) 2^45) (exactly 1 for the interval holding 1), log2_c =
+// log2(1 / inv_c). exp2_table[j]: bits(2^(j/64)) - (j << 46). All to within half an ulp.
 // clang-format off
 // BEGIN power: generated by tests/tools/print_tables.cpp (phong_print_tables power)
 inline constexpr std::array<log2_point, (1 << log_table_bits)> log2_table{{
@@ -176,13 +150,11 @@ inline constexpr double b1 = 0x1.62e42fefa39efp-1, b2 = 0x1.ebfbdff82c58fp-3, b3
 // END power
 // clang-format on
 
-/// a * b, never fused with a later addition (ieee::unfused_product): the kernels below round each
-/// product on its own as constant evaluation does, so both give the same bits on every target.
+/// a * b, never fused with a later addition: the same bits as constant evaluation on every target.
 PHONG_INLINE constexpr double mul(double a, double b) { return ieee::unfused_product(a, b); }
 
-/// log2 x for a positive normal double x (absolute error about 2^-53 (|log2 c_i| + 1)). Short:
-/// float's degree-5 polynomial (truncation below r^6/6 < 2^-50 absolute, which only matters times
-/// m where m |log2 x| < 150, else the float result is 0) instead of degree 7.
+/// log2 x for a positive normal double x (absolute error about 2^-53 (|log2 c_i| + 1)).
+/// Short: float's degree-5 polynomial (truncation < 2^-50 absolute) instead of degree 7.
 template <bool Short = false>
 PHONG_INLINE constexpr double log2_normal(double x)
 {
@@ -199,13 +171,9 @@ PHONG_INLINE constexpr double log2_normal(double x)
     return (k + log2_table[i].log2_c) + p;
 }
 
-/// 2^y for y in [-1022, 0] (a normal result), from the 64-entry table and a short polynomial in
-/// double. Short: float's degree-3 polynomial (truncation below 4e-11 relative) instead of degree 5.
-/// One of three exp2 kernels, each for its own accuracy: this one is the scalar exact and stable
-/// modes' (pow_unit, whose error the header states: float nearly always correctly rounded);
-/// fast::detail::exp2_estrin (fast_math.hpp) is the fast mode's float-accurate polynomial at every
-/// width; lanes::exp2_horner (detail/simd/lanes_power.hpp) is the exact mode's float SIMD lanes',
-/// with no table (a table lookup per lane would be a gather).
+/// 2^y for y in [-1022, 0] from the 64-entry table and a polynomial of degree 5 (Short: float's
+/// degree 3, truncation < 4e-11 relative). Kept apart from fast::detail::exp2_estrin (float-accurate)
+/// and lanes::exp2_horner (no table: a per-lane lookup would be a gather).
 template <bool Short = false>
 PHONG_INLINE constexpr double exp2_tabulated(double y)
 {
@@ -222,8 +190,7 @@ PHONG_INLINE constexpr double exp2_tabulated(double y)
     }
 }
 
-/// The kernels' value outside their domain: IEEE pow's (Ieee: std::pow at run time, the
-/// long-double kernel in constant evaluation), or NaN without any call to libm.
+/// The value outside the domain: IEEE pow's (Ieee), or NaN with no libm call.
 template <bool Ieee, class F>
 PHONG_INLINE constexpr F outside_domain(F x, F m)
 {
@@ -235,12 +202,9 @@ PHONG_INLINE constexpr F outside_domain(F x, F m)
     }
 }
 
-/// float's kernel: the same tables with the short polynomials, enough for a float result.
-/// AtMostOne: x <= 1 is given (a clamped cosine), so y = m log2 x <= 0 is not tested (log2_normal
-/// is <= 0 for every x <= 1: exactly 0 at 1, whose interval has c = 1 and r = x - 1 <= 0).
-/// Ieee (detail::pow_unit): results below 2^-1022 in double are 0, float's subnormal results kept;
-/// else (the shading's entry points) results below the power floor 2^-100 are 0
-/// (ieee::power_floor_log2: no subnormal result, none from its product by ks Ls f).
+/// float's kernel: the tables with the short polynomials. AtMostOne: x <= 1 given, y <= 0 not
+/// tested (log2_normal <= 0 for x <= 1). Ieee: float's subnormal results kept; else results
+/// below the power floor 2^-100 are 0 (ieee::power_floor_log2).
 template <bool Ieee, bool AtMostOne = false>
 PHONG_INLINE constexpr float pow_unit_kernel(float xf, float mf)
 {
@@ -272,28 +236,20 @@ PHONG_INLINE constexpr double pow_unit_kernel(double x, double m)
     return outside_domain<Ieee>(x, m);
 }
 
-/// x^m for x in [0, 1] and m >= 0 (the kernel of detail::pow_unit). Edges: pow_unit(0, 0) = 1,
-/// pow_unit(+-0, m > 0) = +0, results below 2^-1022 are 0 (y = m log2 x < -1022). Outside the
-/// domain: x > 1 with m < 0 (a result <= 1) runs the same kernel, with the same accuracy and flush;
-/// everything else (x > 1 with m > 0, x < 0, NaN, inf) returns IEEE pow's value (std::pow at run
-/// time, the long-double kernel in constant evaluation).
+/// x^m for x in [0, 1], m >= 0 (detail::pow_unit's kernel). pow_unit(0, 0) = 1, pow_unit(+-0, m > 0)
+/// = +0, results below 2^-1022 are 0. x > 1 with m < 0 runs the same kernel; other x or m (x > 1
+/// with m > 0, x < 0, NaN, inf): IEEE pow's value.
 PHONG_INLINE constexpr float pow_unit(float x, float m) { return pow_unit_kernel<true>(x, m); }
 PHONG_INLINE constexpr double pow_unit(double x, double m) { return pow_unit_kernel<true>(x, m); }
 
-/// x^m for x in [0, 1] and a finite m >= 0 (a validated shininess): pow_unit's value there, but
-/// for results below the power floor (2^-100 float, 2^-996 double: ieee::power_floor_log2), which
-/// are 0, and with no fallback to libm's pow outside that domain. NaN x, NaN m, x < 0, x > 1 with m > 0, or m < 0
-/// with x < 1: NaN (x = 1 gives 1 for every finite m, the exact value). m = +inf: 0 for x < 1,
-/// NaN for x = 1. Why a second entry point: the mere
-/// presence of a call (all vector registers caller-saved) made g++ keep a light loop's sums in
-/// memory in every iteration, and the shading loop never needs the fallback.
+/// pow_unit for x in [0, 1], m >= 0 finite, results below the power floor 0, and no libm fallback
+/// (a call in the light loop would spill its registers). NaN x or m, x < 0, x > 1 with m > 0, or
+/// m < 0 with x < 1: NaN; x = 1 gives 1 for finite m. m = +inf: 0 for x < 1, NaN for x = 1.
 PHONG_INLINE constexpr float pow_unit_in_domain(float x, float m) { return pow_unit_kernel<false>(x, m); }
 PHONG_INLINE constexpr double pow_unit_in_domain(double x, double m) { return pow_unit_kernel<false>(x, m); }
 
-/// pow_unit_in_domain for a base that is at most 1 by construction (the specular cosine clamped
-/// to 1: cosine_power): the same value for x in [0, 1] (the power floor too), with one test fewer
-/// (y <= 0 holds there).
-/// x > 1 is not tested: a meaningless value (finite or not), with every table read in bounds.
+/// pow_unit_in_domain for a base at most 1 by construction, with the test y <= 0 left out
+/// (x > 1: a meaningless value, every table read in bounds).
 PHONG_INLINE constexpr float pow_unit_at_most_one(float x, float m) { return pow_unit_kernel<false, true>(x, m); }
 PHONG_INLINE constexpr double pow_unit_at_most_one(double x, double m) { return pow_unit_kernel<false, true>(x, m); }
 #endif

@@ -1,32 +1,17 @@
-// phong: twofold ("double-word") arithmetic for the stable evaluation mode.
+// phong: twofold ("double-word") arithmetic for the stable mode: hi + lo, |lo| <~ eps |hi|, so unit
+// vectors, n.l and the chords r - v, n - h are known to ~eps^2, removing the sqrt(m) eps error of
+// the highlight (docs/accuracy.md). Branch-free and constexpr on a scalar-like T (SIMD batches too).
+// Requirement: detail::fma must round once (a math_traits whose fma is a*b + c, as xsimd 8.1's
+// generic one, zeroes every error term; emulate it with Dekker's product).
 // SPDX-License-Identifier: MIT
-//
-// A value carried as hi + lo, |lo| <~ eps |hi|, built from error-free transformations (TwoSum,
-// TwoProd through fma), so unit vectors, n.l and the chords r - v and n - h are known to about
-// eps^2 instead of eps. Why: near the highlight 1 - r.v ~ theta^2 / 2 with theta ~ 1/sqrt(m), and
-// an error of eps in any unit vector moves 1 - r.v by ~ theta eps, i.e. the specular factor by
-// ~ m theta eps = sqrt(m) eps relative. Carrying the vectors twofold removes that term; what is
-// left is a few eps from the final roundings, log1p and exp (bounds in phong/accuracy.hpp).
-// Everything is branch-free (select), constexpr, and written on a scalar-like T so that the same
-// code runs on SIMD batches (it needs only +, -, *, /, detail::sqrt, detail::fma and select).
-// Requirement: detail::fma(a, b, c) must round once (math.hpp's contract), so fma(a, b, -a*b) is
-// the exact error of the product. A math_traits whose fma is a*b + c (Debian's xsimd 8.1: its
-// generic fma, used for every arch but fma3<sse>, AVX-512 included) silently turns every error
-// term into 0 and the stable mode back into a ~sqrt(m) eps method; such a type must emulate fma
-// exactly (Dekker's product, as math_traits::dekker_fma does for constant evaluation).
 #pragma once
 
 #include "vector.hpp"
 
 namespace phong::detail {
 
-/// fl(a b), as a value the compiler cannot fuse into a later addition. With FMA instructions
-/// enabled (-mfma, -march=native) and GCC's default -ffp-contract=fast (GNU dialects), a product
-/// feeding a sum may become one fma, and then the error-free transformations below, which need
-/// the rounded product, silently lose their error terms (measured: 1e-5 instead of 8e-7 at
-/// m = 1e3 in float). An fma result is never contracted again, and fma(a, b, +0) = fl(a b) (up to
-/// the sign of a zero), at the cost of one instruction like a multiplication. Without FMA
-/// instructions nothing can be fused, and the plain product is kept.
+/// fl(a b), never contracted into a later addition (the error-free transformations need the
+/// rounded product): fma(a, b, +0) where FMA instructions are on, else a * b.
 template <class T> PHONG_INLINE constexpr T rounded_product(T a, T b)
 {
 #if defined(__FP_FAST_FMA) || defined(__FP_FAST_FMAF)
@@ -36,8 +21,7 @@ template <class T> PHONG_INLINE constexpr T rounded_product(T a, T b)
 #endif
 }
 
-/// The twofold route's TwoSum (math.hpp's two_sum_error), refused at compile time where the
-/// compiler may reassociate additions.
+/// The twofold route's TwoSum, refused at compile time where the compiler may reassociate.
 template <class T> PHONG_INLINE constexpr T twofold_sum_error(T a, T b, T hi)
 {
     static_assert(ieee::twofold_allowed<T>,
@@ -63,21 +47,16 @@ struct unit_twofold {
     T length;             ///< |d| rounded (inf only if |d| exceeds the range of T)
 };
 
-/// The unit vector along the exact vector d + dlo (dlo: the rounding error of d, or 0).
-/// d is first rescaled by a power of two (exact), so the result is accurate for every finite
-/// nonzero d, subnormal or huge. Then with S = |d|^2 as a twofold sum and r ~ 1/sqrt(S) rounded,
-/// one Newton step on the residual e = 1 - S r^2 (computed exactly enough: 1 - fl(S r^2) is exact
-/// by Sterbenz) gives 1/|d| = r (1 + e/2) to O(eps^2), and the unit vector is d r + d r e/2 + dlo r.
-/// Edge: d = 0 gives 0 (and inv_scaled = 0, length = 0). A d that overflowed (an inf component,
-/// e.g. L.xyz - w Q with |w Q| > max although L, w and Q are finite) gives 0, inv_scaled = 0 and
-/// length = inf, never NaN: like a light at infinity with no direction.
+/// The unit vector along the exact d + dlo (dlo: d's rounding error, or 0): d rescaled by a power
+/// of two, S = |d|^2 twofold, r ~ 1/sqrt(S), one Newton step on e = 1 - S r^2 (exact by Sterbenz):
+/// d r + d r e/2 + dlo r, to O(eps^2). Edge: d = 0 gives 0 (length 0); an inf component gives 0,
+/// inv_scaled = 0, length = inf, never NaN.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr unit_twofold<T, Q> unit_twofold_of(const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& dlo)
 {
     using vec3 = glm::vec<3, T, Q>;
-    // Renormalize d + dlo first (then |dlo| <= ulp(d) / 2): where d cancels, as L.xyz - w Q does
-    // with an inexact w Q, the caller's dlo can be a sizeable fraction of d, and the O(dlo^2)
-    // terms dropped below would leave |hi + lo| off 1 by that much (a 4% bright diffuse term).
+    // Renormalize d + dlo first: where d cancels, dlo can be a sizeable fraction of d, and the
+    // O(dlo^2) terms dropped below would then leave |hi + lo| off 1.
     vec3 dh(T(0)), dl(T(0));
     for (int k = 0; k < 3; ++k) {
         dh[k] = d[k] + dlo[k];
@@ -141,19 +120,15 @@ PHONG_INLINE constexpr void dot_twofold(const glm::vec<3, T, Q>& ah, const glm::
     lo = err - (hi - p);
 }
 
-/// A specular cosine c (r.v or n.h) as its complement x = 1 - c and as c itself, both rounded once
-/// from the same twofold value: x keeps its relative accuracy where c is near 1 (a highlight), c
-/// where c is small (far from it: 1 - x rounded would leave c an absolute error of eps / 2, i.e.
-/// eps / (2 c) relative, and c^m m times that; 6e-3 at c = 1e-6, m = 1 in float).
+/// A specular cosine c as x = 1 - c and as c, each rounded once from the same twofold value: x
+/// accurate near the highlight, c where small (1 - x would give c an absolute error of eps / 2).
 template <class T>
 struct cosine_complement {
     T complement; ///< x = 1 - c = |chord|^2 / 2, rounded once
     T cosine;     ///< c, rounded once where x >= 1/2 (there 1 - x is exact); elsewhere within eps of it
 };
 
-/// |c + c_lo|^2 / 2 and 1 minus it, each rounded once (products exact by fma; the c_lo^2 terms are
-/// below eps^2): the sum hi + lo is renormalized (Fast2Sum, |lo| <= |hi|), halved exactly, and the
-/// cosine is (1 - x) - x_lo, whose first difference is exact for x in [1/2, 2] (Sterbenz).
+/// |c + c_lo|^2 / 2 and 1 minus it, each rounded once ((1 - x) exact for x in [1/2, 2]: Sterbenz).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>& c, const glm::vec<3, T, Q>& c_lo)
 {
@@ -171,10 +146,8 @@ PHONG_INLINE constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>&
     return {x, (T(1) - x) - x_lo};
 }
 
-/// 1 - r.v = |r - v|^2 / 2 for Phong's r = 2 (n.l) n - l, from twofold n, l, v and n.l: the chord
-/// and its square are formed to O(eps^2) and rounded once, so the complement has a relative error
-/// of about 1 eps however close r is to v, and the cosine r.v too however close it is to 0
-/// (down to a few eps^2). Pre: n, l, v unit (or 0).
+/// 1 - r.v = |r - v|^2 / 2 and r.v for r = 2 (n.l) n - l, from twofold n, l, v and n.l: about
+/// 1 eps relative however close r is to v. Pre: n, l, v unit (or 0).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo, T nl_hi,
                                                     T nl_lo, const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
@@ -211,9 +184,8 @@ PHONG_INLINE constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>
     return half_square(c, c_lo);
 }
 
-/// 1 - n.h = |n - h|^2 / 2 for h = normalize(l + v), from twofold n, l and v: the sum l + v is
-/// formed twofold and renormalized, h = unit_twofold_of(sum) twofold, then one_minus_nh.
-/// Pre: n, l, v unit (or 0). Edge: l = -v (no halfway vector) gives 1 and n.h = 0.
+/// 1 - n.h for h = normalize(l + v), from twofold n, l and v. Pre: n, l, v unit (or 0).
+/// Edge: l = -v (no halfway vector) gives 1 and n.h = 0.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, T, Q>& nh, const glm::vec<3, T, Q>& nlo,
                                                          const glm::vec<3, T, Q>& lh, const glm::vec<3, T, Q>& llo,
@@ -223,8 +195,7 @@ PHONG_INLINE constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, 
     for (int k = 0; k < 3; ++k) {
         sum[k] = lh[k] + vh[k];
         sum_lo[k] = twofold_sum_error(lh[k], vh[k], sum[k]) + (llo[k] + vlo[k]);
-        // Renormalized: where l and v cancel in the high parts, lo can exceed hi, and unit_twofold_of
-        // (which scales by the high parts) would then overflow lo to inf.
+        // Renormalized: where l and v cancel, lo could exceed hi and overflow in unit_twofold_of.
         const T t = sum[k] + sum_lo[k];
         sum_lo[k] = twofold_sum_error(sum[k], sum_lo[k], t);
         sum[k] = t;

@@ -1,9 +1,6 @@
-// phong: constexpr vector kernels on glm::vec<L, T, Q>: dot, length, normalize, reflect.
+// phong: constexpr vector kernels on glm::vec<L, T, Q> (dot, length, normalize, reflect), for any
+// qualifier and any T with math_traits; unlike GLM's, safe for v = 0 and huge or tiny v.
 // SPDX-License-Identifier: MIT
-//
-// GLM 0.9.9.8's dot/length/normalize/reflect are not usable in constant evaluation, and its
-// normalize overflows for |v|^2 > max and returns NaN for v = 0. These are constexpr, work for
-// any qualifier and any number type with math_traits (float, double, long double, SIMD).
 #pragma once
 
 #include "math.hpp"
@@ -18,12 +15,8 @@
 namespace phong {
 namespace detail {
 
-/// In constant evaluation, for float and double finite inputs: the value dot(a, b) takes at run
-/// time when a product or a partial sum (in index order, as dot sums) rounds to +-inf in T (+-inf,
-/// or NaN for inf - inf), else 0. g++ rejects a finite operation whose result overflows as not a
-/// constant expression, and clang inf - inf; dot returns this value instead. Evaluated in long
-/// double, whose range and precision hold every such product and the overflow threshold (the
-/// largest T plus half its ulp: from there on, round to nearest gives inf).
+/// Constant evaluation only: the +-inf (or NaN) dot(a, b) gives at run time where a product or
+/// partial sum overflows T, else 0 (compilers reject the overflow itself); in long double.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
@@ -56,18 +49,14 @@ PHONG_INLINE constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const
 #endif
 }
 
-/// Dot product: dot(a, b) = sum_k a_k b_k, summed in index order (GLSL `dot`).
-/// Edge: overflows to inf when a product exceeds the range of T (in constant evaluation too);
-/// NaN propagates.
+/// dot(a, b) = sum_k a_k b_k in index order (GLSL `dot`). Edge: overflow gives inf; NaN propagates.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
         if (std::is_constant_evaluated())
             if (const T overflow = detail::constant_dot_overflow(a, b); overflow != T(0)) return overflow;
-    // Named components, not v[k] in a loop from k = 1: GLM's operator[] is a switch, and g++ 12
-    // drops the probability of the case it prunes (k = 0), so every loop around a dot product is
-    // then laid out as cold code (docs/design.md).
+    // Named components, not v[k]: GLM's operator[] is a switch that misleads g++'s block layout.
     T sum = a.x * b.x;
     if constexpr (L > 1) sum += a.y * b.y;
     if constexpr (L > 2) sum += a.z * b.z;
@@ -75,10 +64,8 @@ PHONG_INLINE constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>
     return sum;
 }
 
-/// Compensated dot product (Ogita, Rump and Oishi's Dot2): the result is as accurate as if
-/// computed in twice the working precision, then rounded: |error| <= eps |dot| + L^2 eps^2
-/// sum |a_k b_k|. Used where cancellation matters (n.l near grazing incidence).
-/// Pre: every product a_k b_k finite (an overflowing one gives NaN, where dot gives inf).
+/// Compensated dot product (Ogita-Rump-Oishi Dot2): |error| <= eps |dot| + L^2 eps^2 sum |a_k b_k|.
+/// Pre: every product finite (an overflowing one gives NaN).
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T dot_compensated(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
@@ -106,19 +93,16 @@ PHONG_INLINE constexpr T max_abs(const glm::vec<L, T, Q>& v)
     return m;
 }
 
-/// v * 2^-e, an exact power-of-two rescaling that brings the largest component into [1, 2):
-/// the direction is kept bit for bit and squares of the result neither overflow nor underflow.
-/// Edge: the zero vector stays zero; NaN or inf components stay NaN or inf (the rest is scaled).
+/// v * 2^-e, exact, the largest component in [1, 2): squares neither overflow nor underflow.
+/// Edge: zero stays zero; NaN or inf components stay NaN or inf.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<L, T, Q> rescaled(const glm::vec<L, T, Q>& v)
 {
     return v * math_traits<T>::inverse_pow2_scale(detail::max_abs(v));
 }
 
-/// Euclidean length |v| = sqrt(dot(v, v)), computed on the rescaled vector so that it is
-/// accurate (< 2 ulp) over the whole finite range: huge components do not overflow, tiny and
-/// subnormal ones do not underflow. Edge: length(0) = 0; the result is inf only when the true
-/// length exceeds the largest finite T (or a component is inf); a NaN component gives NaN.
+/// |v| = sqrt(dot(v, v)) on the rescaled vector: < 2 ulp over the whole finite range.
+/// Edge: length(0) = 0; inf only when |v| exceeds T's range or a component is inf; NaN gives NaN.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T length(const glm::vec<L, T, Q>& v)
 {
@@ -127,10 +111,8 @@ PHONG_INLINE constexpr T length(const glm::vec<L, T, Q>& v)
     return detail::sqrt(detail::dot(w, w)) / s;
 }
 
-/// Unit vector along v: v / |v|. Scaled first (see `rescaled`), so every finite nonzero v gives
-/// a unit vector (error < 2 eps per component, i.e. < 3 ulp of the component; tests/vector.test.cpp), including |v| ~ 1e-40 or 1e30 in float.
-/// Edge: normalize(0) = 0 (zero in, zero out; GLM gives NaN). A NaN component stays NaN, the
-/// others become 0 (the NaN length takes the zero branch); an inf component gives NaN there.
+/// v / |v|, rescaled first: a unit vector (< 2 eps per component) for every finite nonzero v.
+/// Edge: normalize(0) = 0; a NaN component stays NaN, the others 0; an inf component gives NaN.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
 {
@@ -139,9 +121,8 @@ PHONG_INLINE constexpr glm::vec<L, T, Q> normalize(const glm::vec<L, T, Q>& v)
     return w * detail::select(dd > T(0), detail::rsqrt(dd), T(0));
 }
 
-/// v / |v| without rescaling: the fastest form, as GLSL writes it, guarded for zero only.
-/// Pre: |v|^2 representable (about 1e-19 < |v| < 1e19 in float). Edge: normalize_unscaled(0) = 0;
-/// when |v|^2 overflows the result is 0, when it underflows to 0 the result is 0 (never NaN).
+/// v / |v| without rescaling (GLSL's form). Pre: |v|^2 representable. Edge: 0 for v = 0 and where
+/// |v|^2 overflows or underflows to 0 (never NaN).
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<L, T, Q> normalize_unscaled(const glm::vec<L, T, Q>& v)
 {
@@ -150,14 +131,11 @@ PHONG_INLINE constexpr glm::vec<L, T, Q> normalize_unscaled(const glm::vec<L, T,
 }
 
 
-/// The exact mode's threshold on a squared length: the smallest normal number of T. Below it
-/// |v|^2 has lost bits to underflow and v / |v| would not be a unit vector (a light 1e-22 from Q
-/// in float gave n.l and r.v off by factors), so such a vector counts as zero: its terms give 0
-/// (a relative error of at most 1), never garbage or NaN.
+/// The exact mode's threshold on a squared length, T's smallest normal: below it v / |v| is not a
+/// unit vector, so such a vector counts as zero (its terms give 0, never garbage or NaN).
 template <class T> PHONG_INLINE constexpr T exact_min_square() { return T(std::numeric_limits<scalar_t<T>>::min()); }
 
-/// dd is a positive normal number (exact_min_square <= dd <= largest): the exact mode's test of a
-/// squared length (SIMD lanes: math_traits' positive_normal where it has one, e.g. one vfpclass).
+/// dd is a positive normal number: the exact mode's test of a squared length.
 template <class T>
 PHONG_INLINE constexpr mask_t<T> normal_square(T dd)
 {
@@ -188,9 +166,8 @@ PHONG_INLINE constexpr T exact_inverse_length(T dd)
 
 
 
-/// Cross product a x b = (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x) (GLM's is
-/// constexpr-unfriendly in some configurations). Edge: a zero vector gives 0, parallel ones 0 up
-/// to rounding; products beyond T's range give inf (or NaN from inf - inf).
+/// a x b = (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x). Edge: zero or parallel
+/// vectors give 0 (up to rounding); overflow gives inf (or NaN from inf - inf).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<3, T, Q> cross(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b)
 {
@@ -199,9 +176,8 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> cross(const glm::vec<3, T, Q>& a, const
 
 } // namespace detail
 
-/// GLSL reflect: reflect(i, n) = i - 2 dot(n, i) n, the mirror image of the incident direction
-/// i about the plane with unit normal n. Pre: n unit length (else the result is not a mirror
-/// image). It keeps |i| and is an involution (up to rounding) for unit n. Edge: n = 0 returns i.
+/// GLSL reflect(i, n) = i - 2 dot(n, i) n, i mirrored about the plane of unit normal n (keeps
+/// |i|). Pre: n unit length. Edge: n = 0 returns i.
 template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<L, T, Q> reflect(const glm::vec<L, T, Q>& i, const glm::vec<L, T, Q>& n)
 {

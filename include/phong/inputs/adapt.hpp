@@ -1,6 +1,4 @@
-// phong: a renderer's own 3-vector type as the glm::vec<3, T> that phong takes (vec3_of), and
-// phong's colours and vectors back as the renderer's type (from_vec3), through one specialization
-// point like light_traits.
+// phong: a renderer's own 3-vector type to and from glm::vec<3, T> (vec3_of, from_vec3).
 // SPDX-License-Identifier: MIT
 #pragma once
 
@@ -14,11 +12,8 @@
 
 namespace phong {
 
-/// How vec3_of reads a renderer's vector type V and from_vec3 makes one: specialize with
-///   static T x(const V&), y(const V&), z(const V&)   (T: float or double), read by vec3_of;
-///   static V make(T x, T y, T z)                      (optional), used by from_vec3;
-/// for a type that has neither members x, y, z nor operator[] (those are read without one), or
-/// that is not made by V{x, y, z}.
+/// How vec3_of reads V and from_vec3 makes one, for a V without members x, y, z or operator[],
+/// or not made by V{x, y, z}: static T x(const V&), y(const V&), z(const V&); optional static V make(T, T, T).
 template <class V> struct vector_traits {};
 
 namespace detail {
@@ -42,10 +37,8 @@ concept has_make = requires(T t) {
 };
 } // namespace detail
 
-/// v as a glm::vec<3, T>: (vector_traits<V>::x(v), ::y(v), ::z(v)) where specialized, else
-/// (v.x, v.y, v.z), else (v[0], v[1], v[2]); T is the components' type (float, double; no
-/// conversion). The copy is inlined (PHONG_INLINE): the components stay in the registers they are
-/// in, so the call costs nothing in optimized code. Pre: V has three components.
+/// v as a glm::vec<3, T> (T the components' type): vector_traits<V> where specialized, else
+/// (v.x, v.y, v.z), else (v[0], v[1], v[2]). Pre: V has three components.
 template <class V>
 PHONG_INLINE constexpr auto vec3_of(const V& v)
 {
@@ -62,12 +55,8 @@ PHONG_INLINE constexpr auto vec3_of(const V& v)
     }
 }
 
-/// The way back: c (a colour or vector phong returned) as the renderer's type V:
-/// vector_traits<V>::make(c.x, c.y, c.z) where specialized, else V{c.x, c.y, c.z} (an aggregate
-/// such as struct { float x, y, z; } or float[3]-like types, or a constructor from three
-/// components). The components are converted to V's as brace initialization allows (no narrowing:
-/// a double colour into a float vector needs make). An rgba colour (features::alpha) passes its
-/// xyz; take .a apart. Inlined as vec3_of.
+/// c (a colour or vector phong returned) as V: vector_traits<V>::make(c.x, c.y, c.z) where
+/// specialized, else V{c.x, c.y, c.z} (no narrowing). An rgba colour passes its xyz.
 template <class V, glm::length_t L, class T, glm::qualifier Q>
     requires(L >= 3)
 PHONG_INLINE constexpr V from_vec3(const glm::vec<L, T, Q>& c)

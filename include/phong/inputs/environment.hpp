@@ -13,10 +13,8 @@ namespace phong {
 template <class T, glm::qualifier Q = glm::defaultp>
 struct environment {
     glm::vec<3, T, Q> ambient{T(0)}; ///< La (classic Phong) = GlobalAmbient (ray tracer model), >= 0; read when features::scene_ambient
-    /// The eye as a homogeneous point: read for view_model::eye_point (w = 1: a point such as the ray tracer model
-    /// 's ray start; w = 0: a direction) and view_model::fixed_direction (xyz: toward the viewer).
-    /// eye_from_projection(projection) gives it from a projection matrix. w >= 0 (w < 0 would turn v
-    /// away from the viewer); NaN or inf is an input, not a parameter error: every channel is NaN.
+    /// The homogeneous eye, read by view_model::eye_point (w = 1 a point, w = 0 a direction) and
+    /// fixed_direction (xyz); eye_from_projection() makes it. w >= 0; NaN or inf gives NaN channels.
     glm::vec<4, T, Q> eye{T(0), T(0), T(0), T(1)};
 };
 

@@ -22,10 +22,8 @@ struct falloff {
     T range = std::numeric_limits<T>::infinity(); ///< windowed model: f = 0 from here on; > 0
 };
 
-/// A spot cone: the axis the light points along and its parametrizations, OpenGL's (exponent and
-/// cutoff) and the inner/outer cone (read by the smooth and the linear edge). The default is no
-/// spot. A zero axis is no cone either (every spot model gives 1): a light whose spot fields are
-/// all left at zero, as GLSL and HLSL uniforms are, is lit, not dark.
+/// A spot cone: its axis, OpenGL's exponent and cutoff, and the inner/outer cone (smooth and
+/// linear edges). Default: no spot. A zero axis is no cone (spot = 1), so zeroed uniforms light.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct spot_cone {
     glm::vec<3, T, Q> direction{T(0), T(0), T(-1)}; ///< unit axis s, from the light outward; zero: no cone
@@ -35,10 +33,7 @@ struct spot_cone {
     T cos_outer = T(-1);   ///< smooth and linear models: zero where cos(angle) <= cos_outer; cos_outer <= cos_inner
 
     /// OpenGL spot: axis (normalized here), exponent, cutoff in degrees (0..90, or 180 = no spot).
-    /// Edge: a zero axis stores direction 0, no cone (spot = 1). A cutoff outside that range
-    /// (negative, above 90 other than 180, NaN) makes a cone validate(light) rejects, naming
-    /// light.spot.cos_cutoff (the cosine alone cannot tell -10 from 10 degrees, so such a cutoff
-    /// stores cos_cutoff = 2).
+    /// Edge: a zero axis gives no cone; another cutoff (or NaN) stores cos_cutoff = 2, which validate rejects.
     PHONG_INLINE static constexpr spot_cone opengl(const glm::vec<3, T, Q>& axis, T exponent, T cutoff_degrees)
     {
         spot_cone s;
@@ -48,12 +43,9 @@ struct spot_cone {
         s.cos_cutoff = in_range ? detail::cos_degrees(cutoff_degrees) : T(2);
         return s;
     }
-    /// Smooth or linear spot (the same fields; features::spot picks the edge): full strength
-    /// inside inner_degrees, none outside outer_degrees
-    /// (0 <= inner <= outer <= 180). Edge: a zero axis stores direction 0, no cone (spot = 1);
-    /// an angle outside [0, 180] (or NaN) or inner > outer makes a cone validate(light) rejects
-    /// (light.spot.cos_inner or light.spot.cos_outer, stored as 2 for an angle out of range;
-    /// light.spot.cos_outer for inner > outer); inner = outer: a hard edge.
+    /// Smooth or linear spot (features::spot picks the edge): full strength inside inner_degrees,
+    /// none outside outer_degrees, 0 <= inner <= outer <= 180 (equal: a hard edge). Edge: a zero
+    /// axis gives no cone; an angle out of range (stored as cosine 2) or inner > outer: validate rejects.
     PHONG_INLINE static constexpr spot_cone smooth(const glm::vec<3, T, Q>& axis, T inner_degrees, T outer_degrees)
     {
         spot_cone s;
@@ -65,16 +57,12 @@ struct spot_cone {
     }
 };
 
-/// One light source, in the coordinates the surface is shaded in (eye coordinates for classic Phong
-/// and 003, world coordinates for the ray tracer model's ray tracer).
-/// classic Phong's single strength L_i is diffuse = specular = L_i (use light::with_strength); the ray tracer model's
-/// lightamb / lightdiff / lightspec and the GLSL ADS shader's La / Ld / Ls map one to one.
+/// One light source, in the shading coordinates. Classic Phong's L_i is diffuse = specular
+/// (light::with_strength); the ray tracer's lightamb/diff/spec and GLSL's La/Ld/Ls map one to one.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct light {
-    /// Homogeneous position: w = 1 positional (xyz is the light's point), w = 0 directional (xyz
-    /// points from the surface toward the light). No other w: validate rejects it, since
-    /// light_kind::positional and ::directional do not read w (a point with w != 1 would be shaded
-    /// at xyz there, at xyz / w with light_kind::any). Divide xyz by w yourself for other w > 0.
+    /// w = 1 positional (xyz the point), w = 0 directional (xyz toward the light); validate
+    /// rejects other w (light_kind::positional/directional do not read it): divide by w yourself.
     glm::vec<4, T, Q> position{T(0), T(0), T(1), T(0)};
     glm::vec<3, T, Q> ambient{T(0)};  ///< per-light ambient strength (the ray tracer model lightamb, the GLSL ADS shader La)
     glm::vec<3, T, Q> diffuse{T(1)};  ///< diffuse strength (the ray tracer model lightdiff, the GLSL ADS shader Ld, classic Phong L_i)
@@ -82,8 +70,7 @@ struct light {
     falloff<T> attenuation{};         ///< read when features::attenuation is not none (positional lights only)
     spot_cone<T, Q> spot{};           ///< read when features::spot is not none
 
-    /// A light with one strength for diffuse and specular and no ambient term (source document
-    /// 000's L_i): homogeneous position (w = 1 positional, w = 0 directional), strength, falloff.
+    /// A light with diffuse = specular = strength and no ambient (document 000's L_i).
     PHONG_INLINE static constexpr light with_strength(const glm::vec<4, T, Q>& position, const glm::vec<3, T, Q>& strength,
                                                   falloff<T> attenuation = {})
     {
@@ -97,31 +84,20 @@ struct light {
     }
 };
 
-/// How shade<F> reads a light of type L: the specialization point for a renderer's own light type
-/// (an adaptor), so that its light list goes to shade<F> as it is, nothing copied into
-/// a light<T> per point. light<T, Q> has one (below); any other type has none: shade<F> then
-/// stops with a static_assert that names light_traits. A specialization has static functions
-/// (PHONG_HD ones for CUDA device code), each returning a value or a reference:
-///   position(L) -> glm::vec<4, U, Q>  required by shade<F> (shade_incident<F> reads it only with
-///                                      light_kind::any, for w): the homogeneous position, as
-///                                      light::position (w = 1 positional, w = 0 directional; U, Q:
-///                                      the light's scalar type and qualifier, read from this
-///                                      function's return type, else from diffuse's);
-///   diffuse(L)  -> glm::vec<3, U, Q>  required: Ld (the ray tracer model lightdiff);
-///   specular(L) -> glm::vec<3, U, Q>  required: Ls (the ray tracer model lightspec);
-///   ambient(L)  -> glm::vec<3, U, Q>  optional, default 0: La (the ray tracer model lightamb);
-///   attenuation(L) -> `falloff<U>`    optional, default `falloff<U>{}` (f = 1): read with attenuation;
-///   spot(L)     -> spot_cone<U, Q>    optional, default spot_cone<U, Q>{} (no cone): read with a spot.
-/// Each function is called where the model reads that field (inlined: the same code as for the
-/// member of a light<T>), at most once per light per point, and only for the terms F has. A point
-/// light with one colour, for instance:
+/// How shade<F> reads a renderer's own light type L (no copy into a light<T>); unspecialized, shade
+/// stops with a static_assert naming light_traits. Static functions, each returning a value or reference:
+///   position(L) -> glm::vec<4, U, Q>  required by shade<F> (shade_incident: only for light_kind::any),
+///                                      as light::position; U, Q are read from it, else from diffuse's
+///   diffuse(L), specular(L) -> glm::vec<3, U, Q>  required: Ld, Ls
+///   ambient(L) -> glm::vec<3, U, Q>   optional, default 0
+///   attenuation(L) -> `falloff<U>`, spot(L) -> spot_cone<U, Q>  optional, defaults: none
+/// Each is called at most once per light per point, for the terms F has. Example:
 ///   template <> struct phong::light_traits<my_light> {
 ///       static glm::vec4 position(const my_light& L) { return glm::vec4(L.position, 1.0f); }
 ///       static const glm::vec3& diffuse(const my_light& L) { return L.colour; }
 ///       static const glm::vec3& specular(const my_light& L) { return L.colour; }
 ///   };
-/// Pre: the values returned are those validate() accepts in a light<U, Q> (checked in debug builds
-/// and in constant evaluation, through to_light).
+/// Pre: values validate() accepts in a light<U, Q> (checked in debug builds, through to_light).
 template <class L> struct light_traits {};
 
 /// light<T, Q>'s own fields, by reference.
@@ -157,16 +133,13 @@ template <class L>
 using light_diffuse_t = std::remove_cvref_t<decltype(light_traits<L>::diffuse(std::declval<const L&>()))>;
 template <class L>
 concept traits_with_position = requires(const L& l) { light_traits<L>::position(l); };
-/// A light's scalar type and qualifier: from position's glm::vec<4, U, Q> where the traits have
-/// one, else from diffuse's glm::vec<3, U, Q> (a light that only shade_incident reads).
+/// A light's scalar type and qualifier: from position's type, else diffuse's.
 template <class L> struct light_fields : colour_of<light_diffuse_t<L>> {};
 template <traits_with_position L> struct light_fields<L> : homogeneous_position_of<light_position_t<L>> {};
 } // namespace detail
 
 namespace detail {
-/// A type shade_incident<F> takes as a light: light_traits<L> gives diffuse and specular (a
-/// glm::vec<3, U, Q>; cv and references ignored); position is optional (shade_incident reads the
-/// light's direction from its incident, and w only with light_kind::any).
+/// A type shade_incident<F> takes as a light: light_traits<L> gives diffuse and specular.
 template <class L>
 concept incident_light_source = requires(const std::remove_cvref_t<L>& l) {
     light_traits<std::remove_cvref_t<L>>::diffuse(l);
@@ -183,9 +156,7 @@ concept light_source = detail::incident_light_source<L> && requires(const std::r
 };
 
 namespace detail {
-/// The scalar type U (light_scalar_t) and qualifier (light_qualifier_v) of a light's fields, read
-/// from light_traits<L>::position's return type glm::vec<4, U, Q> (from diffuse's glm::vec<3, U, Q>
-/// for a light without a position).
+/// The scalar type and qualifier of a light's fields (light_fields).
 template <incident_light_source L>
 using light_scalar_t = typename detail::light_fields<std::remove_cvref_t<L>>::scalar;
 template <incident_light_source L>
@@ -193,8 +164,7 @@ inline constexpr glm::qualifier light_qualifier_v = detail::light_fields<std::re
 } // namespace detail
 
 namespace detail {
-/// The fields of a light_source as shade<F> reads them: light_traits' function, or the default
-/// of light<U, Q> where the traits leave an optional field out. References stay references.
+/// A light's fields through light_traits, or light<U, Q>'s defaults for those it leaves out.
 template <class L> PHONG_INLINE constexpr decltype(auto) position_of(const L& l) { return light_traits<L>::position(l); }
 template <class L> PHONG_INLINE constexpr decltype(auto) diffuse_of(const L& l) { return light_traits<L>::diffuse(l); }
 template <class L> PHONG_INLINE constexpr decltype(auto) specular_of(const L& l) { return light_traits<L>::specular(l); }
@@ -215,10 +185,8 @@ template <class L> PHONG_INLINE constexpr decltype(auto) spot_of([[maybe_unused]
 }
 } // namespace detail
 
-/// The light<U, Q> a light_source stands for: every field read through light_traits (defaults
-/// where the traits leave one out; light<U, Q>'s default position for an incident_light_source
-/// without one). For what needs a light<T> itself: validate(), and shade_batch, which takes a span
-/// of light<T> (convert the list once per call, not per point).
+/// The light<U, Q> a light source stands for (defaults for fields light_traits leaves out), for
+/// validate() and shade_batch's span of light<T> (convert once per call, not per point).
 template <detail::incident_light_source L>
 PHONG_INLINE constexpr light<detail::light_scalar_t<L>, detail::light_qualifier_v<L>> to_light(const L& l)
 {
@@ -232,14 +200,11 @@ PHONG_INLINE constexpr light<detail::light_scalar_t<L>, detail::light_qualifier_
     return out;
 }
 
-/// Checks a light against the model's domain. Rejected: a non-finite position or a w other than
-/// 0 or 1 (-0 counts as 0); NaN,
-/// inf or negative strengths; attenuation coefficients that are negative, non-finite or all
-/// zero; range <= 0 or NaN; a spot exponent that is negative or non-finite; a cutoff cosine
-/// outside [0, 1] other than -1 (180 degrees); smooth cone cosines outside [-1, 1] or with
-/// cos_outer > cos_inner; a spot axis that is neither unit length (within 1e-3) nor zero.
-/// Accepted although degenerate (shade gives a defined result): a directional light with
-/// xyz = 0 (no direction: contributes its ambient only); a zero spot axis (no cone).
+/// Checks a light against the model's domain. Rejected: a non-finite position or w not 0 or 1;
+/// NaN, inf or negative strengths; attenuation negative, non-finite or all zero; range <= 0 or NaN;
+/// a bad spot exponent; cos_cutoff outside [0, 1] but -1; cone cosines outside [-1, 1] or
+/// cos_outer > cos_inner; a spot axis neither unit (within 1e-3) nor zero. Accepted: a directional
+/// light with xyz = 0 (ambient only); a zero spot axis (no cone).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr validation validate(const light<T, Q>& L)
 {

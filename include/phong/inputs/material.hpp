@@ -6,9 +6,8 @@
 
 namespace phong {
 
-/// A surface material: the reflection coefficients of classic Phong (ka, kd, ks, m), 001
-/// (materialamb, materialdiff, materialspec, f) and 003 (Ka, Kd, Ks, Shininess), plus emission
-/// and the alpha appended to the colour (classic Phong).
+/// A surface material: classic Phong's ka, kd, ks, m (001's materialamb/diff/spec, f; 003's Ka,
+/// Kd, Ks, Shininess), emission, and the alpha appended to the colour.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct material {
     glm::vec<3, T, Q> ka{T(0.1)};      ///< ambient reflectivity (often ka = kd)
@@ -21,7 +20,6 @@ struct material {
 
 /// Checks a material against the model's domain. Rejected: negative, NaN or inf coefficients
 /// (ka, kd, ks, emission); a shininess that is negative, NaN or inf; alpha outside [0, 1] or NaN.
-/// Shininess above 200 (the ray tracer model's range) is accepted: the stable mode is accurate to 1e5 and more.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr validation validate(const material<T, Q>& m)
 {

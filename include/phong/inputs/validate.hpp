@@ -26,16 +26,13 @@ struct validation {
 
 namespace detail {
 
-// Comparisons only: inf - inf (the usual x - x == 0 test) is not a constant expression, so that
-// test made validate() unusable in constant evaluation for infinite parameters. NaN compares false.
-// float and double by bits (ieee::is_finite), which -ffinite-math-only cannot fold to true.
+// Comparisons (x - x == 0 is not constant for inf) or, for float and double, bits (not folded by -ffinite-math-only).
 template <class T> PHONG_INLINE constexpr bool finite(T x)
 {
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) return ieee::is_finite(x);
     else return x >= std::numeric_limits<T>::lowest() && x <= std::numeric_limits<T>::max();
 }
-// The sign by bits too: with subnormals read as zero (DAZ, set by -ffast-math's link), x >= 0
-// holds for a negative subnormal x.
+// The sign by bits too: under DAZ, x >= 0 holds for a negative subnormal x.
 template <class T> PHONG_INLINE constexpr bool finite_non_negative(T x)
 {
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>) {

@@ -27,27 +27,19 @@ struct weighted_lights {
 };
 } // namespace detail
 
-/// The lights whose bit is set in `visible` (bit i for the i-th light), for shade<F>: a light
-/// whose bit is clear is skipped entirely, exactly as if it were not in the list (its ambient
-/// term too). Nothing is copied: an lvalue list is held by reference (use the result within the
-/// list's lifetime, as in shade<F>(..., masked(lights, bits), ...)), an rvalue one (a view) is moved in.
-/// Pre: at most 64 lights (bits past the list are ignored; lights past bit 63 are not seen).
+/// The lights whose bit is set in `visible` (bit i: light i), for shade<F>; a clear bit skips the
+/// light entirely (ambient too). An lvalue list is held by reference (use it within the list's
+/// lifetime), an rvalue moved in. Pre: at most 64 lights (lights past bit 63 are not seen).
 template <class Lights>
 PHONG_INLINE constexpr detail::masked_lights<Lights> masked(Lights&& lights, std::uint64_t visible)
 {
     return {static_cast<Lights&&>(lights), visible};
 }
 
-/// The lights weighted by `weights` (weights[i] for the i-th light), for shade<F>: light i's
-/// f_i (attenuation times spot) is multiplied by weights[i] (soft shadows, partial occluders), so
-/// every term of that light, its ambient term included, scales by it; a weight 0 skips the light
-/// (the same as removing it), 1 leaves it as it is.
-/// Pre: weights.size() >= the number of lights (debug builds report a shorter span, "phong::weighted:
-/// fewer weights than lights"; in every build nothing is read past it: no light is shaded then, or
-/// for a light range without a size the lights past the weights are not); each weight finite and >= 0 (checked in debug builds,
-/// the message naming weights[i]). Weights in
-/// [0, 1] are visibilities; one above 1 brightens the light, as a stronger light would.
-/// Held as masked() holds it.
+/// The lights weighted by `weights`, for shade<F>: light i's f_i, so each of its terms (ambient
+/// too), is multiplied by weights[i] (soft shadows); 0 skips the light. Held as masked() holds it.
+/// Pre: weights.size() >= the number of lights (never read past: debug builds report it, and no
+/// light is shaded); each weight finite and >= 0 (debug-checked).
 template <class Lights, class T>
 PHONG_INLINE constexpr detail::weighted_lights<Lights, T> weighted(Lights&& lights, std::span<const T> weights)
 {

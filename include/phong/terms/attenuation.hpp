@@ -10,9 +10,7 @@
 namespace phong {
 
 namespace detail {
-/// Smallest denominator an attenuation divides by: sqrt(smallest normal T), about 1.1e-19 in
-/// float and 1.5e-154 in double. It caps f at 1 / attenuation_denominator_min<T> (9.2e18 in float)
-/// when c0 = 0 and d -> 0, so a light at the surface point gives a large finite value, never inf.
+/// Smallest denominator an attenuation divides by, sqrt(smallest normal T): f stays finite at d = 0.
 template <class T>
 inline constexpr T attenuation_denominator_min = T(1.0842021724855044e-19L); // 2^-63, float's sqrt(min)
 template <>
@@ -24,11 +22,9 @@ inline constexpr long double attenuation_denominator_min<long double> = 1.491668
 /// Polynomial attenuation (classic Phong's f_i(Q), OpenGL):
 ///   f = 1 / max(c0 + c1 d + c2 d^2, attenuation_denominator_min<Floor>)
 /// evaluated as c0 + d (c1 + c2 d), so c2 = 0 with a huge d gives no 0 * inf.
-/// Pre: c0, c1, c2 >= 0 and finite, d >= 0. Edge: d = 0 with c0 = 0 gives the cap
-/// 1 / attenuation_denominator_min<T>; d = inf is taken as the largest finite T, which gives 0
-/// when c2 > 0 and at most 1 / (c1 max) (2.9e-39 in float) when only c1 > 0; NaN d gives NaN.
-/// Floor: the type whose attenuation_denominator_min applies (T's scalar; float lights evaluated
-/// in double pass float, so the result is float's formula evaluated in double).
+/// Pre: c0, c1, c2 >= 0 finite, d >= 0. Edge: d = 0 with c0 = 0 gives the cap
+/// 1 / attenuation_denominator_min<Floor>; d = inf is taken as T's largest (0 when c2 > 0); NaN
+/// gives NaN. Floor: the type whose cap applies (float for float lights evaluated in double).
 template <class T, class Floor = detail::scalar_t<T>>
 PHONG_INLINE constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 {
@@ -40,9 +36,8 @@ PHONG_INLINE constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 /// Windowed inverse square (Filament, three.js "physically based" falloff):
 ///   f = clamp(1 - (d / range)^4, 0, 1)^2 / max(d^2, attenuation_denominator_min<Floor>)
 /// Reaches exactly 0 at d >= range and stays finite at d = 0 (cap 1/attenuation_denominator_min).
-/// Pre: range > 0 (inf allowed: pure inverse square), d >= 0. Edge: d = inf gives 0.
-/// Floor: as for attenuation_polynomial. The floor bounds d^2 before the window multiplies, so
-/// capping the quotient afterwards would differ (by up to 1/window^2) where d^2 < the floor.
+/// Pre: range > 0 (inf: pure inverse square), d >= 0. Edge: d = inf gives 0. Floor: as
+/// attenuation_polynomial's, applied to d^2 before the window multiplies.
 template <class T, class Floor = detail::scalar_t<T>>
 PHONG_INLINE constexpr T attenuation_windowed(T d, T range)
 {
@@ -54,12 +49,9 @@ PHONG_INLINE constexpr T attenuation_windowed(T d, T range)
 
 /// OpenGL spot factor for the unit light direction l (from Q toward the light) and unit axis s:
 ///   c = dot(-l, s);  spot = c >= cos_cutoff ? clamp(c, 0, 1)^e : 0;  cos_cutoff = -1 (180 deg) gives 1.
-/// Pre: l, s unit; e >= 0. Edge: l = 0 (light at Q) gives c = 0: inside only for a 90 degree
-/// cutoff, then 0^e (1 for e = 0). e = 0 gives a hard-edged cone of strength 1. spot <= 1: the
-/// base is clamped at 1, since rounding (or an axis accepted by validate within 1e-3 of unit
-/// length) can give c slightly above 1, and (1 + eps)^e overflows for large e. A factor below the
-/// power floor (2^-100 float, 2^-996 double: detail::ieee::power_floor_log2) is 0, as the
-/// specular power: no subnormal number is made.
+/// Pre: l, s unit; e >= 0. Edge: l = 0 gives c = 0 (inside only for a 90 degree cutoff: 0^e);
+/// e = 0 gives a hard-edged cone of strength 1. The base is clamped at 1 (rounding can give c a
+/// little above 1, and (1 + eps)^e overflows for large e). Below the power floor: 0.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T spot_opengl(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T exponent, T cos_cutoff)
 {
@@ -84,15 +76,12 @@ PHONG_INLINE constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<
     return detail::select(width > T(0), t * t * (T(3) - T(2) * t), hard);
 }
 
-/// Linear spot factor, the edge most tutorials and engines write (LearnOpenGL's flashlight,
-/// Unity's and Godot's spot lights): a straight ramp in the cosine between the two cones,
+/// Linear spot factor (LearnOpenGL, Unity, Godot): a straight ramp in the cosine,
 ///   spot = clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1),  c = dot(-l, s)
 ///   (TeX: \mathrm{clamp}\big(\frac{c - \cos\theta_o}{\cos\theta_i - \cos\theta_o}, 0, 1\big)).
 /// Pre: l, s unit; -1 <= cos_outer <= cos_inner <= 1. Edge: cos_inner == cos_outer gives a hard
-/// edge (1 where c >= cos_outer, else 0), no division by zero; cos_inner = cos_outer = -1 gives 1
-/// (no cone); l = 0 (light at Q) gives c = 0. Bound: spot in [0, 1]; its slope in c is
-/// 1 / (cos_inner - cos_outer), so an error E in the cone cosine moves spot by at most
-/// E / (cos_inner - cos_outer) (against smoothstep's 1.5 E / (cos_inner - cos_outer)).
+/// edge (no division by zero); both -1 give 1; l = 0 gives c = 0. Bound: spot in [0, 1]; an
+/// error E in c moves it by at most E / (cos_inner - cos_outer).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T spot_linear(const glm::vec<3, T, Q>& l, const glm::vec<3, T, Q>& s, T cos_inner, T cos_outer)
 {

@@ -12,8 +12,7 @@
 namespace phong {
 
 namespace detail {
-/// The sign that faces n toward the viewer: -1 where n.v < 0, else 1 (face_viewer, and
-/// shade<F>'s facing::view).
+/// The sign that faces n toward the viewer: -1 where n.v < 0, else 1.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T viewer_facing_sign(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& v)
 {
@@ -41,14 +40,9 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> face_flag(const glm::vec<3, T, Q>& n, b
 } // namespace detail
 
 namespace detail {
-/// The cofactor matrix of the linear map M (the adjugate transposed): cof(M) = det(M) M^{-T},
-/// columns (b x c, c x a, a x b) for M's columns a, b, c.
-/// Carries normals: n' = cof(M) n is normal to the transformed surface M x for every M, even a
-/// singular one (det = 0: a sphere squashed to a disk still gets the disk's normal; where the
-/// surface collapses to a curve or a point, n' = 0). Orientation: det > 0 keeps outward normals
-/// outward; a mirror (det < 0) flips them inward, so use it where only the normal's line matters
-/// (two-sided shading, face_viewer) or multiply by sign(det); for outward normals under mirrors
-/// use normal_matrix_inverse_transpose. Scale is det-dependent; normalize afterwards.
+/// The cofactor matrix cof(M) = det(M) M^{-T}, columns (b x c, c x a, a x b) for M's columns a, b, c:
+/// cof(M) n is normal to the surface M x for every M, even singular (collapsed: 0). A mirror
+/// (det < 0) flips outward normals inward (use normal_matrix_inverse_transpose); normalize after.
 /// Pre: the products of two entries of M finite (else inf - inf gives NaN).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix_cofactor(const glm::mat<3, 3, T, Q>& M)
@@ -57,16 +51,10 @@ PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix_cofactor(const glm::ma
     return glm::mat<3, 3, T, Q>(detail::cross(b, c), detail::cross(c, a), detail::cross(a, b));
 }
 
-/// The classic normal matrix (GLSL's NormalMatrix): (M^{-1})^T = cof(M) / det(M).
-/// Right for every invertible M, mirrors included (outward normals stay outward): for a surface
-/// point x with outward normal n, (M^{-T} n) . (M y) = n . y for every vector y, so tangents stay
-/// orthogonal and the outward side stays positive. the ray tracer model's "m = M m'" is right only with this
-/// matrix for its M; the object's transform itself (M m') tilts normals under non-uniform scale.
-/// Pre: as normal_matrix_cofactor. Edge: det(M) = 0 (or a det that underflows to 0) has no
-/// inverse; the cofactor is returned instead (the right direction up to sign, finite). When
-/// 1 / det overflows (|det| below about 1 / max, e.g. diag(1e-20, 1e-20, 1) in float),
-/// cof(M) sign(det) is returned: the direction and orientation of M^{-T} n, not its scale.
-/// Never NaN for finite M within the precondition.
+/// The classic normal matrix (GLSL's NormalMatrix): (M^{-1})^T = cof(M) / det(M), right for every
+/// invertible M, mirrors included ((M^{-T} n) . (M y) = n . y).
+/// Pre: as normal_matrix_cofactor. Edge: det(M) = 0 gives the cofactor; where 1 / det overflows,
+/// cof(M) sign(det) (direction and orientation, not scale). Never NaN for finite M.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix_inverse_transpose(const glm::mat<3, 3, T, Q>& M)
 {
@@ -79,9 +67,8 @@ PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix_inverse_transpose(cons
 }
 } // namespace detail
 
-/// GLSL's NormalMatrix for a model-view matrix: the inverse transpose of its upper 3x3
-/// (translation ignored). Pre and edges: those of normal_matrix_inverse_transpose (a singular
-/// upper 3x3 gives its cofactor matrix; never NaN for finite entries whose pairwise products are finite).
+/// GLSL's NormalMatrix for a model-view matrix: normal_matrix_inverse_transpose of its upper 3x3
+/// (translation ignored; same pre and edges).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T, Q>& model_view)
 {
@@ -90,12 +77,9 @@ PHONG_INLINE constexpr glm::mat<3, 3, T, Q> normal_matrix(const glm::mat<4, 4, T
     return detail::normal_matrix_inverse_transpose(upper);
 }
 
-/// n' = normalize(N n): a normal carried by a normal matrix N (the ray tracer model's m = M m' with M the
-/// transpose of the inverse transform, the GLSL ADS shader's tnorm = normalize(NormalMatrix * VertexNormal)).
-/// N should come from normal_matrix / normal_matrix_inverse_transpose (or the cofactor, see
-/// there), not be the model matrix itself. Edge: a zero result stays 0 (never NaN for finite
-/// input); where N n overflows, N and n are first scaled by powers of two (exact: the same
-/// direction). NaN or inf in N or n: NaN components.
+/// n' = normalize(N n), N a normal matrix (normal_matrix, not the model matrix; GLSL's
+/// tnorm = normalize(NormalMatrix * VertexNormal)). Edge: a zero result stays 0; overflow is
+/// avoided by exact rescaling; NaN or inf in N or n: NaN components.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<3, T, Q> transform_normal(const glm::mat<3, 3, T, Q>& N, const glm::vec<3, T, Q>& n)
 {

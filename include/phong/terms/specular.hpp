@@ -9,15 +9,10 @@
 namespace phong {
 
 namespace detail {
-/// (1 - x)^m for x in [0, 1], m >= 0, without the rounding amplification of pow(1 - x, m):
-///   exp(m * log1p(-x)), with m = 0 giving exactly 1 (pow(0, 0) = 1; m * log1p(-1) is never
-///   formed as 0 * -inf, and no finite product overflows, so it is a constant expression too).
-/// For unit vectors a, b: 1 - a.b = |a - b|^2 / 2, so with x = |a - b|^2 / 2 the relative error
-/// of the result is about (|m log1p(-x)| + 2) eps plus m times the absolute error of x (x from
-/// twofold unit vectors, as shade's stable mode does, makes that last term about m x eps).
-/// Edge: x >= 1 gives 0 for m > 0 and 1 for m = 0 (pow(0, 0) = 1); x = 0 gives 1. Results below
-/// the power floor (2^-100 float, 2^-996 double: detail::ieee::power_floor_log2) are 0: no
-/// subnormal number is made, nor by the product with a light's coefficients.
+/// (1 - x)^m = exp(m log1p(-x)) for x in [0, 1], m >= 0, without pow(1 - x, m)'s amplified
+/// rounding: relative error about (|m log1p(-x)| + 2) eps plus m times x's absolute error.
+/// Edge: m = 0 gives 1 (never 0 * -inf); x >= 1 gives 0 for m > 0; x = 0 gives 1; results below
+/// the power floor are 0.
 template <class T>
 PHONG_INLINE constexpr T pow_one_minus(T x, T m)
 {
@@ -34,18 +29,14 @@ PHONG_INLINE constexpr T pow_one_minus(T x, T m)
 
 namespace detail {
 
-// The specular steps, shared by the public factors below and by every evaluation route of
-// shade<F> (detail/exact.hpp, detail/stable.hpp): each formula and its edges are written once.
+// The specular steps, shared by the public factors below and every route of shade<F>.
 
-/// Phong's cosine r.v times a length: for l = d / |d| and r = reflect(-l, n) = 2 (n.l) n - l,
-///   |d| (r.v) = 2 (n.d)(n.v) - d.v.
-/// With a unit d it is r.v itself. Written on d so that the sign is known before 1/|d|.
+/// |d| (r.v) = 2 (n.d)(n.v) - d.v for l = d / |d|, r = reflect(-l, n): the sign before 1/|d|.
 /// Pre: n, v unit (or 0). Edge: v = 0 gives 0.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T reflection_cosine_scaled(T nd, T nv, const glm::vec<3, T, Q>& d, const glm::vec<3, T, Q>& v)
 {
-    // SIMD lanes: nd (2 nv), the same bits as (2 nd) nv, with 2 nv once per point (shade_batch's
-    // light loop); scalars keep (2 nd) nv (one instruction fewer per pair in shade's loop)
+    // nd (2 nv) and (2 nd) nv are the same bits; lanes hoist 2 nv per point, scalars do not.
     if constexpr (std::is_floating_point_v<T>) return T(2) * nd * nv - detail::dot(d, v);
     else return nd * (T(2) * nv) - detail::dot(d, v);
 }
@@ -59,9 +50,7 @@ PHONG_INLINE constexpr T inverse_halfway_length(const glm::vec<3, T, Q>& l, cons
     return detail::exact_inverse_length(detail::dot(sum, sum));
 }
 
-/// The specular power of the cosine c = x * scale: min(max(c, 0), 1)^m, pow(0, 0) = 1.
-/// Pre: scale >= 0 finite; m >= 0 finite (validate). x is the cosine times a positive length, so
-/// its sign is c's. Scalars test the sign of x first (no power where it is 0); SIMD lanes clamp.
+/// min(max(c, 0), 1)^m for c = x * scale (x has c's sign), pow(0, 0) = 1. Pre: scale, m >= 0 finite.
 template <class T>
 PHONG_INLINE constexpr T cosine_power(T x, T scale, T m)
 {
@@ -73,9 +62,7 @@ PHONG_INLINE constexpr T cosine_power(T x, T scale, T m)
     }
 }
 
-/// 1 - r.v = |r - v|^2 / 2 for unit r, v, from the chord r - v = 2 (n.l) n - l - v, each
-/// component rounded once (detail/twofold.hpp's one_minus_rv carries it twofold).
-/// Pre: n, l, v unit, nl = n.l.
+/// 1 - r.v = |r - v|^2 / 2, chord r - v = 2 (n.l) n - l - v rounded once. Pre: n, l, v unit, nl = n.l.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T one_minus_reflection_cosine(const glm::vec<3, T, Q>& n, T nl, const glm::vec<3, T, Q>& l,
                                                  const glm::vec<3, T, Q>& v)
@@ -100,11 +87,9 @@ PHONG_INLINE constexpr T one_minus_halfway_cosine(const glm::vec<3, T, Q>& n, co
 
 /// Phong's reflection-based specular factor (classic Phong, the GLSL ADS shader):
 ///   r = reflect(-l, n) = 2 (n.l) n - l,   s = [n.l > 0] max(r.v, 0)^m   (base clamped to [0, 1])
-/// (TeX: s = [\hat n\cdot\hat l > 0]\,\max(\hat r\cdot\hat v, 0)^m), with r.v = 2 (n.l)(n.v) - l.v.
-/// Pre: n, l, v unit length (or 0); m >= 0 finite. Edge: 0 when n.l <= 0 (the gate of the GLSL ADS shader);
-/// m = 0 gives 1 where lit (pow(0, 0) = 1); l = 0 or v = 0 give 0 (m > 0).
-/// Accuracy: the exact mode's (phong/accuracy.hpp): the power amplifies the rounding of r.v by m
-/// (see specular_reflection_stable). The same steps as shade<F>'s exact mode.
+/// (TeX: s = [\hat n\cdot\hat l > 0]\,\max(\hat r\cdot\hat v, 0)^m). Pre: n, l, v unit (or 0);
+/// m >= 0 finite. Edge: 0 when n.l <= 0; m = 0 gives 1 where lit; l = 0 or v = 0 give 0 (m > 0).
+/// Accuracy: the exact mode's (phong/accuracy.hpp; m amplifies r.v's rounding).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T specular_reflection(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                          const glm::vec<3, T, Q>& v, T m)
@@ -118,7 +103,6 @@ PHONG_INLINE constexpr T specular_reflection(const glm::vec<3, T, Q>& n, const g
 ///   h = normalize(l + v),   s = [n.l > 0] max(n.h, 0)^m   (base clamped to [0, 1])
 /// with n.h = (n.l + n.v) / |l + v|. Pre: n, l, v unit length (or 0); m >= 0 finite. Edge: l = -v
 /// (no halfway vector) takes n.h = 0: s = 0 for m > 0 and 1 for m = 0 (never NaN); 0 when n.l <= 0.
-/// The same steps as shade<F>'s exact mode.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T specular_halfway(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                       const glm::vec<3, T, Q>& v, T m)
@@ -132,7 +116,6 @@ namespace detail {
 /// The reflection-based factor, evaluated stably for high m near the highlight:
 ///   s = [n.l > 0] (1 - x)^m,  x = min(|r - v|^2 / 2, 1) = 1 - r.v for unit r, v.
 /// Same domain and edges as specular_reflection; the rounding of r.v is no longer amplified by m.
-/// The same steps as shade<F>'s stable mode for pairs it rounds once (features::stable_twofold_above).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T specular_reflection_stable(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
                                                 const glm::vec<3, T, Q>& v, T m)
