@@ -1,18 +1,7 @@
-// phong: batch shading, shade_batch<F>. The same templates as the scalar path (detail::prepare,
-// add_lights in detail/route.hpp, finish in shading_terms.hpp), instantiated on a SIMD batch type,
-// over structure-of-arrays or array-of-structures points.
+// phong: batch shading, shade_batch<F>: shade<F>'s own templates instantiated on SIMD batches, over
+// structure-of-arrays or array-of-structures points. The machinery is in ext/batch/ (set-up, the
+// kernel, checks, loads and stores) and ext/simd/ (the lanes); docs/batch.md draws it.
 // SPDX-License-Identifier: MIT
-//
-// The layers, each including only the ones below it (docs/batch.md, "Source layout"):
-//   batch.hpp              shade_batch, two templates (this header)
-//   batch_types.hpp        the argument types: soa3, soa_rgba, soa_points, aos_points, material_table
-//   detail/batch/          the machinery: driver.hpp (the call's set-up and runs of steps),
-//                          kernel.hpp (shade_lanes), checks.hpp (preconditions), folding.hpp,
-//                          visibility.hpp (light masks), materials.hpp, layout.hpp (loads, stores,
-//                          transposes)
-//   detail/simd/           the lanes: backend.hpp (xsimd, simd_batch), math_traits.hpp,
-//                          lanes_power.hpp, fast_lanes.hpp, stable_lanes.hpp
-//   shade.hpp and below    the scalar model, whose templates every layer above instantiates
 #pragma once
 
 #include "ext/batch/types.hpp"
@@ -102,18 +91,14 @@ decltype(auto) batch_output_arg(O&& out)
 /// neither the inputs read per point (the N coordinates and views, the N materials when per point
 /// or a table and its ids, front_facing, light masks) nor each other, except that
 /// an SoA output channel may be exactly one of the coordinate spans (same data(), in-place
-/// shading: each point is read before its colour is stored). An output shifted against an input
-/// would otherwise overwrite points before they are read. Lights, a shared material and env are
-/// copied before the first store and may alias anything. A table: ids N long, every id in the
+/// shading: each point is read before its colour is stored). Lights, a shared material and env
+/// are copied before the first store and may alias anything. A table: ids N long, every id in the
 /// table (an id past the table takes its last entry, memory-safe in release builds; an empty
 /// table shades nothing, every build).
-/// Edges and NaN policy: those of shade<F>, point by point.
-/// Lights: a span of light<T> (they go to SIMD lanes once per call). A renderer's own light type
-/// (light_traits, light.hpp): convert the list once per call with to_light, not per point.
-/// Accuracy: within the published bound of F.mode (phong/accuracy.hpp), tested against the
-/// __float128 reference; against the scalar shade<F> the results differ by the SIMD rsqrt
-/// estimate (< 2 ulp, float lanes) and the exp/log implementations, amplified by the exponent m in
-/// exact mode (by about sqrt(m) in stable mode).
+/// Edges and NaN policy: those of shade<F>, point by point. A renderer's own light type: convert
+/// the list once per call with to_light. Accuracy: the published bound of F.mode
+/// (phong/accuracy.hpp); against shade<F>, differences of the lanes' rsqrt and exp/log (< 2 ulp in
+/// float lanes) amplified by m in exact mode (by about sqrt(m) in stable mode).
 template <features F, class T, class Materials, glm::qualifier Q = detail::materials_qualifier_v<Materials>, class Output = soa_rgba<T>>
     requires detail::batch_materials<Materials, T, Q> && detail::batch_output<Output, F, T, Q>
 void shade_batch(const soa3<T>& positions, const soa3<T>& normals, const Materials& materials,

@@ -6,8 +6,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$here/../.."
 mapfile -t headers < <(find "$root/include/phong" -name '*.hpp' | sort)
-lines=$(cat "${headers[@]}" | wc -l)
-comments=$(cat "${headers[@]}" | grep -cE '^\s*(//|/\*|\*)' || true)
+read -r lines comments < <(python3 "$here/comment_lines.py" "${headers[@]}") # comment lines: comment and no code
 echo "C++ header lines: $lines in ${#headers[@]} headers; comment lines: $comments ($((100 * comments / lines)) %)"
 python3 "$here/public_names.py" phong/phong.hpp | tail -1
 python3 "$here/long_functions.py" 80 | tail -1
