@@ -162,6 +162,12 @@ TEST_CASE_TEMPLATE("validate(light): each documented rejection", T, float, doubl
     // A zero axis is no cone (spot_cone's convention): accepted.
     L.spot.direction = vec3<T>(0);
     CHECK(static_cast<bool>(phong::validate(L)));
+    L.spot.direction = vec3<T>(T(-0.0), 0, T(-0.0));
+    CHECK(static_cast<bool>(phong::validate(L)));
+    // A tiny axis is not zero, though its squared length underflows in T (the wider route would
+    // read it as a cone along x): rejected, naming the field.
+    L.spot.direction = vec3<T>(std::numeric_limits<T>::denorm_min(), 0, 0);
+    CHECK(rejected(L, "light.spot.direction"));
 }
 
 TEST_CASE_TEMPLATE("validate(material): valid materials are accepted", T, float, double)

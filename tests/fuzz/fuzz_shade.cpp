@@ -193,7 +193,7 @@ enum class verdict { reject, accept, either };
 /// light.hpp: position finite with w = 0 or w = 1 (-0 is 0); strengths finite and >= 0; c0, c1, c2 finite, >= 0 and
 /// not all zero; range > 0 (inf allowed); spot exponent finite and >= 0; cos_cutoff -1 or in
 /// [0, 1]; cos_inner, cos_outer in [-1, 1] with cos_outer <= cos_inner; |axis| = 1 "within 1e-3",
-/// read as |axis|^2 in (0.998, 1.002). Within 1e-6 (relative) of those two ends either answer is
+/// read as |axis|^2 in (0.998, 1.002), or the zero axis (no cone). Within 1e-6 (relative) of those two ends either answer is
 /// accepted: that is where rounding of |axis|^2 in T decides.
 template <class T> verdict light_in_domain(const phong::light<T>& L)
 {
@@ -210,7 +210,8 @@ template <class T> verdict light_in_domain(const phong::light<T>& L)
                     static_cast<wide>(s.cos_outer) <= static_cast<wide>(s.cos_inner);
     if (!ok) return verdict::reject;
     const wide x = s.direction.x, y = s.direction.y, z = s.direction.z;
-    const wide a2 = x * x + y * y + z * z;
+    const wide a2 = x * x + y * y + z * z; // no underflow in long double for float or double components
+    if (a2 == 0) return verdict::accept;  // a zero axis: no cone
     const auto near = [&](wide edge) { return std::fabs(a2 - edge) <= 1e-6L * edge; };
     if (near(0.998L) || near(1.002L)) return verdict::either;
     return (a2 > 0.998L && a2 < 1.002L) ? verdict::accept : verdict::reject;

@@ -230,8 +230,11 @@ PHONG_INLINE constexpr validation validate(const light<T, Q>& L)
     if (!(finite(s.cos_inner) && s.cos_inner >= T(-1) && s.cos_inner <= T(1))) return {"light.spot.cos_inner: must be in [-1, 1] (inner angle in [0, 180] degrees)"};
     if (!(finite(s.cos_outer) && s.cos_outer >= T(-1) && s.cos_outer <= T(1))) return {"light.spot.cos_outer: must be in [-1, 1] (outer angle in [0, 180] degrees)"};
     if (s.cos_outer > s.cos_inner) return {"light.spot.cos_outer: must be <= cos_inner (outer cone narrower than inner)"};
+    // Zero: every component 0 (a tiny axis whose square underflows is not zero: no cone in T, a
+    // cone in the wider route's double).
+    const bool zero_axis = s.direction.x == T(0) && s.direction.y == T(0) && s.direction.z == T(0);
     const T axis2 = s.direction.x * s.direction.x + s.direction.y * s.direction.y + s.direction.z * s.direction.z;
-    if (!(finite(axis2) && ((axis2 > T(0.998) && axis2 < T(1.002)) || axis2 == T(0))))
+    if (!(zero_axis || (finite(axis2) && axis2 > T(0.998) && axis2 < T(1.002))))
         return {"light.spot.direction: must be unit length (or zero: no cone)"};
     return {};
 }
