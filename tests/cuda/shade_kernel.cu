@@ -60,9 +60,9 @@ __global__ void scalar_api(const glm::dvec3* points, double* out, int count)
     const glm::dmat3 N = normal_matrix(glm::dmat4(2.0));
     r += phong::detail::dot(transform_normal(N, n), face_viewer(n, v)) + phong::detail::dot(phong::detail::face_flag(n, false), phong::reflect(-l, n));
     r += phong::detail::dot(view_vector(eye_from_projection(glm::dmat4(1.0)), q), phong::detail::view_orthographic(glm::dmat4(1.0)));
-    r += phong::detail::dot(phong::faceforward(n, -v, n), normalize_unscaled(q)) + dot_compensated(n, l) + phong::detail::pow<5>(0.5);
+    r += phong::detail::dot(phong::faceforward(n, -v, n), phong::detail::normalize_unscaled(q)) + phong::detail::dot_compensated(n, l) + phong::detail::pow<5>(0.5);
     r += phong::detail::sqrt(2.0) + phong::detail::exp(0.5) + phong::detail::log(2.0) + phong::detail::log1p(1e-9) + phong::detail::pow(2.0, 0.5);
-    r += phong::detail::fma(1.0, 2.0, 3.0) + phong::detail::clamp(r, 0.0, 1e9) + phong::detail::pow_one_minus(0.25, 3.0) + cos_degrees(30.0);
+    r += phong::detail::fma(1.0, 2.0, 3.0) + phong::detail::clamp(r, 0.0, 1e9) + phong::detail::pow_one_minus(0.25, 3.0) + phong::detail::cos_degrees(30.0);
     r += phong::detail::dot(sphere_normal(q), cube_normal(q)) + tapered_cylinder_wall_normal(q, 0.5).z;
     r += ray_sphere(glm::dvec3(0, 0, 5), glm::dvec3(0, 0, -1)).t + ray_tapered_cylinder(glm::dvec3(0, 0, 5), glm::dvec3(0, 0, -1), 0.5).t;
     r += ray_cube(glm::dvec3(0, 0, 5), glm::dvec3(0, 0, -1)).t + accuracy::of<evaluation::stable, double>(accuracy::input_class::well_conditioned).p99_ulp;
