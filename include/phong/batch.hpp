@@ -84,7 +84,7 @@ decltype(auto) batch_output_arg(O&& out)
 ///   front_facing: N flags, read only for facing::flag; empty means all front-facing.
 /// Per-point view vectors (view_model::given: a compile error here), per-point light masks and
 /// AoS glm::vec3 inputs: the soa_points / aos_points form below.
-/// Pre (checked through the precondition handler, detail/config.hpp; the span lengths and the
+/// Pre (checked through the precondition handler, core/config.hpp; the span lengths and the
 /// aliasing rule in every build, NDEBUG included, and nothing is shaded when one fails; the values
 /// in debug builds): spans of length N (out may be longer; only its first N elements are
 /// written); validate(material) and validate(L); no aliasing: the N output elements overlap

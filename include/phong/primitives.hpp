@@ -4,7 +4,7 @@
 //
 // A ray tracer transforms the ray by an object's inverse transform, hits the generic primitive
 // at P' = S' + t c', takes the generic normal m' there and carries it to world space with the
-// normal matrix (phong/normal.hpp: m = (M^{-1})^T m', not M m'). The hit time t is the same for
+// normal matrix (phong/terms/normal.hpp: m = (M^{-1})^T m', not M m'). The hit time t is the same for
 // the world ray and the transformed ray, so P = S + t c. The normals here are not normalized:
 // the normal matrix changes their length anyway, so normalize once, after transforming.
 //
