@@ -1,35 +1,9 @@
 // phong: the published accuracy of each evaluation mode, per input class and number type.
 // SPDX-License-Identifier: MIT
 //
-// One table per (mode, type): `accuracy::bounds<M, T, P>`, indexed by `input_class`, read through
-// `accuracy::of<M, T, P>(c)`. The doc comments, the tests (tests/accuracy.test.cpp asserts every class
-// stays within its bound) and the benchmark counters all read these.
-//
-// Exact and fast modes: derived, not measured. The error analysis (docs/accuracy.md and
-// docs/exact_bound.md step by step; the functions in tests/support/accuracy_analysis.hpp, used by
-// tests only) bounds the relative error of every colour channel from the conditioning of each light
-// at the point (n.l, the specular cosine with the shininess, T's range); a class's max_rel is that
-// bound at the class's limits, a promise for every scene of the class, not a statistic. The tables
-// below are its values, printed by tests/tools/print_tables.cpp and checked bit for bit against the
-// analysis by tests/tables.test.cpp. It holds with and without FMA contraction, at any optimization
-// level (tests/bounds_matrix.sh).
-//
-// Stable mode: measured per colour channel against the whole model evaluated in __float128 from
-// the exact input values (tests/support/reference.hpp), over the seeded scene generators of
-// tests/support/stiff_classes.hpp, with the feature set `accuracy::measured_features(M, S)` for
-// both specular models S (the bound is the larger of the two). Reproduce the table with
-//   cmake --preset gcc-release && cmake --build build/gcc-release --target phong_accuracy_table
-//   build/gcc-release/tests/phong_accuracy_table 200000 7 --bounds
-// The constants are upper bounds with a margin over that run (see README.md, "Accuracy"); CI
-// step 35 checks them on other seeds, with and without FMA instructions.
-// Summary, stable mode: float (evaluated in double) correctly rounded but for near-ties, within
-// 1 ulp in every class; with twofold precision (double, SIMD batches, or float on request) every
-// class within a few ulp (p99 <= 5, max <= 12 measured), m up to 1e5 near the peak and n.l ~ 1e-6
-// included, but for grazing_specular: a specular term far from its peak that outweighs a diffuse
-// term at n.l ~ 1e-6 carries the power's own error, about |m log2 c| u (c: its cosine), measured
-// p99 <= 9.3 and max <= 40 ulp (bound 20 / 90 ulp, 6e-6 in float). Float SIMD batches on x86
-// run the geometry in double lanes (detail/simd/stable_lanes.hpp) and are held to the same twofold
-// bounds (tests/batch_accuracy.test.cpp).
+// accuracy::of<M, T, P>(c) reads one table per (mode, type). Exact and fast modes: the error
+// analysis's bound at each class's limits, a promise for every scene of the class. Stable mode:
+// measured against the model in __float128, with a margin. Derivation and reproduction: docs/accuracy.md.
 #pragma once
 
 #include "inputs/features.hpp"
@@ -40,12 +14,11 @@
 
 namespace phong::accuracy {
 
-/// The input classes the bounds are stated for. The generators (tests/support/stiff_classes.hpp)
-/// define each one precisely; in short:
+/// The input classes the bounds are stated for (each defined precisely in docs/accuracy.md):
 enum class input_class : unsigned char {
     well_conditioned,    ///< random scene: Q in a box in front of the eye, 1-3 lights (positional or directional), m in [1, 200]
-    shininess_1e3,       ///< m = 1e3 near the highlight peak (near_peak_limits): angle(r, v) < 3 / sqrt(m), so (r.v)^m > exp(-4.5),
-                         ///< with n.v >= 0.5 (then (n.h)^m > exp(-4.5) too) and n.l > 0.05; one light, specular only
+    shininess_1e3,       ///< m = 1e3 near the highlight peak: angle(r, v) < 3 / sqrt(m), n.v >= 0.5, n.l > 0.05;
+                         ///< one light, specular only
     shininess_1e4,       ///< the same with m = 1e4
     shininess_1e5,       ///< the same with m = 1e5
     grazing,             ///< n.l in [2.5e-7, 4e-6]: light nearly in the tangent plane, diffuse only
@@ -58,9 +31,8 @@ enum class input_class : unsigned char {
     blinn_opposite,      ///< l = -v exactly (light behind the surface, on the line from the eye through Q)
     denormal,            ///< subnormal normal vector, subnormal directional light xyz, subnormal c1 and c2
     shininess_zero,      ///< a well-conditioned scene with m = 0 (pow(0, 0) = 1)
-    grazing_specular,    ///< 1-4 lights, each at n.l in [2.5e-7, 3e-5], diffuse and specular terms (m in [1, 200], kd, ks
-                         ///< in [0.2, 1], light strengths in [0.1, 1]), no ambient: a specular term far from its peak may
-                         ///< outweigh the diffuse one. Exact-mode limits: specular cosines >= 0.05 or <= -5e-4
+    grazing_specular,    ///< 1-4 lights at n.l in [2.5e-7, 3e-5], diffuse and specular, no ambient: a specular term
+                         ///< far from its peak may outweigh the diffuse one
     non_finite,          ///< NaN or +-inf in one component of Q or the normal: every channel must be NaN
     count
 };
@@ -79,20 +51,16 @@ PHONG_HD constexpr const char* name(input_class c)
     return names[static_cast<std::size_t>(c)];
 }
 
-/// The error bound of one class, per colour channel against the exact model:
-/// p99_ulp: 99th percentile of the error in ulp of the exact value; max_ulp: its maximum;
-/// max_rel: the largest |computed - exact| / |exact| (absolute where exact = 0).
-/// Finite input never gives NaN or inf (except non_finite, whose policy is NaN in every channel;
-/// its bound is +inf).
+/// The error bound of one class, per colour channel against the exact model. Finite input never
+/// gives NaN or inf; non_finite's policy is NaN in every channel (bound +inf).
 struct bound {
     double p99_ulp; ///< 99th percentile of the error, in ulp of the exact value
     double max_ulp; ///< the largest error in ulp
     double max_rel; ///< the largest relative error (absolute where exact = 0)
 };
 
-/// The feature set the bounds are measured with: scene ambient, diffuse, the specular model S
-/// gated on n.l > 0, lights of any kind (w read at run time), polynomial attenuation, perspective
-/// view, evaluation mode M. Other feature sets run the same kernels for the terms they keep.
+/// The feature set the bounds hold for: scene ambient, diffuse, specular model S gated on n.l > 0,
+/// any light kind, polynomial attenuation, perspective view, mode M, stable precision P.
 constexpr features measured_features(evaluation M, specular_model S, stable_precision P = stable_precision::wider)
 {
     features f{};
@@ -114,20 +82,14 @@ inline constexpr double inf = std::numeric_limits<double>::infinity();
 using table = std::array<bound, input_class_count>;
 } // namespace detail
 
-/// The published bounds, indexed by input_class (use accuracy::of<M, T>(c)). P, the stable mode's
-/// precision (features::precision), matters for float only: double always runs twofold, and SIMD
-/// batches are held to bounds<stable, T, twofold> (float lanes on x86: geometry in double lanes).
+/// The published bounds, indexed by input_class (read through of<M, T, P>(c)). P matters for float
+/// only: double always runs twofold, and SIMD batches are held to bounds<stable, T, twofold>.
 template <evaluation M, class T, stable_precision P = stable_precision::wider> inline constexpr detail::table bounds{};
 
 // clang-format off
-// The exact mode's max_rel and max_ulp are derived, not measured: the bound of the error analysis
-// (docs/accuracy.md; exact_class_bound<T>(c) in tests/support/accuracy_analysis.hpp) at the
-// class's worst-case conditioning; max_ulp = max_rel / u (an error of r |x| is below r / u ulp of
-// x). p99_ulp stays a statistic (a percentile cannot be derived): twice the worst p99 of
-// `phong_accuracy_table 200000 7`. Classes that drop a vector (a squared length that is not a
-// normal number: float |L - Q| ~ 1e-20, 1e-40, coordinates 1e20, 1e30, |xyz| = 1e-30, c0 = 0 with
-// d -> 0, subnormal normals; double: the last two) state relative error 1 (the channel keeps only
-// the terms it still has).
+// Exact mode: max_rel is the error analysis at the class's worst-case conditioning (docs/accuracy.md),
+// max_ulp = max_rel / u; p99_ulp is measured. Classes that may drop a vector (a squared length that
+// is not a normal number) state relative error 1.
 // BEGIN exact: generated by tests/tools/print_tables.cpp (phong_print_tables accuracy)
 template <stable_precision P> inline constexpr detail::table bounds<evaluation::exact, float, P>{{
     /* well_conditioned    */ {40, 0x1.4569d2fbec9f2p+17, 0x1.4569d2fbec9f2p-7},
@@ -166,9 +128,8 @@ template <stable_precision P> inline constexpr detail::table bounds<evaluation::
     /* non_finite          */ {detail::inf, detail::inf, detail::inf},
 }};
 // END exact
-// Stable float, wider precision: evaluated in double and rounded once, so every finite class is
-// float's correct rounding of the model but for near-ties (measured: max 0.5 ulp, 5.9e-8 in every
-// class); published as 1 ulp.
+// Stable float, wider precision: evaluated in double and rounded once, so correctly rounded but for
+// near-ties; published as 1 ulp.
 template <> inline constexpr detail::table bounds<evaluation::stable, float, stable_precision::wider>{{
     /* well_conditioned    */ {1, 1, 1.2e-07},
     /* shininess_1e3       */ {1, 1, 1.2e-07},
@@ -187,14 +148,9 @@ template <> inline constexpr detail::table bounds<evaluation::stable, float, sta
     /* grazing_specular    */ {1, 1, 1.2e-07},
     /* non_finite          */ {detail::inf, detail::inf, detail::inf},
 }};
-// Stable, twofold precision (float with features::precision = twofold, SIMD batches, and double).
-// grazing_specular: the power's own error, ~|y| u with y = m log2 c down to ~-28 where the specular
-// term still outweighs a diffuse term at n.l ~ 1e-6 (docs/accuracy.md); twice the worst of the
-// scalar run and of float SIMD batches (p99 9.3, max 40 ulp, 2.5e-6; SSE2, AVX2, AVX-512), rounded up.
-// shininess_1e3/1e4/1e5: p99 holds for any distribution of the inputs within the class, not only
-// the project generator's (angle(r, v) uniform: p99 4.6): the error grows like |y| = |m ln c|, so
-// a generator that puts every scene at the class's edge, |y| in [4.4, 4.5] (tests/stable_p99.cpp,
-// a second family), measures p99 7.1 (max 13.4 ulp); twice that, rounded up: 20.
+// Stable, twofold precision (float with precision = twofold, SIMD batches, double): twice the worst
+// measured, rounded up. grazing_specular carries the power's own error, ~|m log2 c| u; the shininess
+// classes' p99 holds for any distribution of the inputs within the class (docs/accuracy.md).
 template <> inline constexpr detail::table bounds<evaluation::stable, float, stable_precision::twofold>{{
     /* well_conditioned    */ {3, 20, 2e-06},
     /* shininess_1e3       */ {20, 30, 2e-06},
@@ -233,11 +189,10 @@ template <stable_precision P> inline constexpr detail::table bounds<evaluation::
 }};
 // clang-format on
 
-// The fast mode's bounds, derived like the exact mode's (the exact route with fast::rsqrt and
-// fast::pow_unit, phong/core/fast_math.hpp: their published errors enter the analysis; docs/accuracy.md),
-// at the exact mode's class limits. p99_ulp: measured (phong_accuracy_table 200000 7 --bounds --fast),
-// twice the worst rounded up (classes where a light may be dropped: 2^24 / 2^53, as in the exact
-// table). Double's p99 is ~1e9 ulp: the fast power is float-accurate in double too.
+// The fast mode's bounds, derived like the exact mode's with the published errors of fast::rsqrt
+// and fast::pow_unit (docs/accuracy.md, "Fast mode"). Double's p99 is ~1e9 ulp: the fast power is
+// float-accurate in double too.
+// clang-format off
 // clang-format off
 // BEGIN fast: generated by tests/tools/print_tables.cpp (phong_print_tables accuracy)
 template <stable_precision P> inline constexpr detail::table bounds<evaluation::fast, float, P>{{
@@ -280,8 +235,7 @@ template <stable_precision P> inline constexpr detail::table bounds<evaluation::
 // clang-format on
 
 /// The bound of class c for mode M, scalar type T (float or double) and stable precision P.
-/// c = input_class::count (or past it) is no class: every field +inf (no promise), never a read
-/// past the table.
+/// c = input_class::count or past it: every field +inf (no promise), never a read past the table.
 template <evaluation M, class T, stable_precision P = stable_precision::wider>
 PHONG_HD constexpr bound of(input_class c)
 {
