@@ -1,19 +1,11 @@
-// phong: BSDFs of phong's materials, for path tracers: the modified Phong of Lafortune and Willems
-// and the normalized Blinn-Phong, each beside a Lambertian lobe, with eval, pdf, sample and the
-// directional albedo. Opt-in: include <phong/bsdf.hpp> by name (phong.hpp does not include it).
+// phong: BSDFs of phong's materials for path tracers: the modified Phong (Lafortune and Willems) and
+// the normalized Blinn-Phong, each beside a Lambertian lobe: eval, pdf, sample, directional albedo.
+// Opt-in (phong.hpp does not include it). Derivations, sampling and accuracy: docs/bsdf.md.
 // SPDX-License-Identifier: MIT
 //
-// Conventions (as pbrt and Mitsuba): every direction is a unit vector in the local frame of the
-// shading point (local_frame: the normal is +z) and points away from the surface; wo toward the
-// viewer (where the path came from), wi the direction sampled toward the light. Reflection only,
+// Directions are unit vectors in the shading point's local frame (local_frame: the normal is +z),
+// pointing away from the surface: wo toward the viewer, wi toward the light. Reflection only,
 // one-sided: f = 0 unless wo.z > 0 and wi.z > 0 (a two-sided surface flips its frame first).
-//
-// Stability at any exponent (docs/bsdf.md has the figures): the lobe is sampled by
-//   t = log(u) / (m + 1),  1 - cos a = -expm1(t),  sin a = sqrt((1 - cos a)(1 + cos a)),
-// never by cos a = u^(1/(m+1)), sin a = sqrt(1 - cos^2 a), which loses every digit of sin a in
-// float from m ~ 1e3 (cos a rounds to 1). The lobe power cos^m a of a direction is
-// exp(m log1p(-(1 - cos a))), with 1 - cos a from a cross product (one_minus_cos), so that the pdf
-// of a sampled direction is as accurate as the direction itself.
 #pragma once
 
 #include "core/config.hpp"
@@ -32,9 +24,7 @@
 
 namespace phong {
 
-// ------------------------------------------------------------------------------------------------
-// The local frame
-// ------------------------------------------------------------------------------------------------
+// ---- The local frame ----------------------------------------------------------------------------
 
 /// An orthonormal frame (s, t, n), right-handed (s x t = n): the shading point's tangent, bitangent
 /// and normal. to_local(v) = (v.s, v.t, v.n), to_world(v) = v.x s + v.y t + v.z n.
@@ -55,13 +45,11 @@ struct shading_frame {
     }
 };
 
-/// The local frame of a unit normal n, built once per shading point: Duff, Burgess, Christensen,
-/// Hery, Kensler, Liani and Villemin, "Building an Orthonormal Basis, Revisited" (JCGT 6(1), 2017):
+/// The local frame of a unit normal n (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT 2017):
 ///   sign = n.z < 0 ? -1 : 1,  a = -1 / (sign + n.z),  b = n.x n.y a,
 ///   s = (1 + sign n.x^2 a, sign b, -sign n.x),  t = (b, sign + n.y^2 a, -n.y).
-/// No branch on a threshold, no normalization, continuous but across n.z = 0; s, t unit and
-/// orthogonal to n within a few ulps for every unit n (n = (0, 0, -1) included).
-/// Pre: n unit length (else s, t are not unit). Edge: n = 0 gives s = (1, 0, 0), t = (0, 1, 0).
+/// No threshold, no normalization; s, t unit and orthogonal to n within a few ulps for every unit n.
+/// Pre: n unit (else s, t are not unit). Edge: n = 0 gives s = (1, 0, 0), t = (0, 1, 0).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr shading_frame<T, Q> local_frame(const glm::vec<3, T, Q>& n)
 {
@@ -71,16 +59,13 @@ PHONG_INLINE constexpr shading_frame<T, Q> local_frame(const glm::vec<3, T, Q>& 
     return {{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}, n};
 }
 
-// ------------------------------------------------------------------------------------------------
-// Results and choices
-// ------------------------------------------------------------------------------------------------
+// ---- Results and choices ------------------------------------------------------------------------
 
 /// Which lobe a sample came from.
 enum class bsdf_lobe : unsigned char { diffuse, specular };
 
-/// What sample(wo, u) returns: the direction wi (local frame, unit), its pdf (solid angle, the
-/// mixture's: pdf(wo, wi)) and the weight f(wo, wi) wi.z / pdf. A direction below the horizon
-/// (or a wo at or below it) carries nothing: pdf = 0 and weight = 0; a path tracer ends the path.
+/// What sample(wo, u) returns: wi (local frame, unit), its pdf (per steradian, pdf(wo, wi)) and the
+/// weight f(wo, wi) wi.z / pdf. wi below the horizon, or wo not above it: pdf = 0, weight = 0.
 template <class T, glm::qualifier Q = glm::defaultp>
 struct bsdf_sample {
     glm::vec<3, T, Q> wi{T(0), T(0), T(1)}; ///< the sampled direction, toward the light
@@ -89,14 +74,11 @@ struct bsdf_sample {
     bsdf_lobe lobe = bsdf_lobe::diffuse;     ///< the lobe it was drawn from
 };
 
-/// Normalization of the Blinn-Phong lobe ks N (n.h)^m.
-///  - exact: N = (m+2)(m+4) / (8 pi (2^(-m/2) + m)), the directional albedo at normal incidence is
-///    exactly 1 (derivation in docs/bsdf.md); energy conserving at every angle.
-///  - approximate: N = (m+8) / (8 pi) (Akenine-Moller, Real-Time Rendering; common in games):
-///    NOT energy conserving, albedo at normal incidence 1.024 at m = 1, 1.075 at m = 10.
-///  - three_js: N = (m+2) / (8 pi) (three.js BRDF_BlinnPhong, without its Fresnel term): NOT
-///    normalized, albedo 0.34 at m = 1, about (m+2)/(m+8) of the exact one for large m.
-/// The last two exist to match other renderers' pictures; validate() does not reject them.
+/// Normalization N of the Blinn-Phong lobe ks N (n.h)^m (docs/bsdf.md):
+///  - exact: (m+2)(m+4) / (8 pi (2^(-m/2) + m)): albedo exactly 1 at normal incidence, energy conserving;
+///  - approximate: (m+8) / (8 pi) (Real-Time Rendering): NOT energy conserving (albedo 1.075 at m = 10);
+///  - three_js: (m+2) / (8 pi) (three.js BRDF_BlinnPhong without Fresnel): NOT normalized (0.34 at m = 1).
+/// The last two match other renderers' pictures; validate() accepts them.
 enum class blinn_normalization : unsigned char { exact, approximate, three_js };
 
 namespace detail::bsdf {
@@ -121,14 +103,11 @@ PHONG_INLINE constexpr T luminance_probability(const glm::vec<3, T, Q>& kd, cons
     return d + s > T(0) ? s / (d + s) : T(0);
 }
 
-/// cos a, 1 - cos a and sin a of a power-cosine lobe sample, pdf (m+1)/(2 pi) cos^m a:
-/// t = log(u) / (m+1) <= 0, 1 - cos a = -expm1(t), cos a = 1 - (1 - cos a),
-/// sin a = sqrt((1 - cos a)(2 - (1 - cos a))). Each within a few ulps of its exact value for
-/// u in (0, 1) at any m >= 0 (within 4 ulps; docs/bsdf.md).
-/// float: evaluated in double, where expm1(t) is t + t^2/2 + t^3/6 + t^4/24 for |t| < 2^-10
-/// (truncation below 2^-53 relative) and exp(t) - 1 beyond (|exp(t) - 1| >= 2^-10: 2^-43 relative),
-/// log and exp by pow_unit's inline kernels (no libm call), then rounded once.
-/// u = 0 (and NaN) gives cos a = 0, sin a = 1: the edge of the hemisphere, as the limit u -> 0.
+/// cos a, 1 - cos a and sin a of a sample of the lobe (m+1)/(2 pi) cos^m a: t = log(u) / (m+1),
+/// 1 - cos a = -expm1(t), sin a = sqrt((1 - cos a)(2 - (1 - cos a))), within a few ulps for u in (0, 1)
+/// at any m >= 0 (cos a = u^(1/(m+1)) loses sin a in float from m ~ 1e3). float: in double (expm1 by
+/// its Taylor series for |t| < 2^-10, log, exp by pow_unit's kernels), rounded once. u = 0 or NaN:
+/// cos a = 0, sin a = 1 (the limit u -> 0).
 template <class T> struct cone {
     T one_minus_cos; ///< 1 - cos a, in [0, 1]
     T cos;           ///< cos a, in [0, 1]
@@ -139,8 +118,7 @@ PHONG_INLINE constexpr cone<T> sample_cone(T u, T m)
 {
     if (!(u > T(0))) return {T(1), T(0), T(1)};
     if constexpr (std::is_same_v<T, float>) {
-        // log2 and exp2 from core/power.hpp's inline double kernels (pow_unit's): absolute
-        // error about 2^-53 in log2 u, 2^-50 relative in 2^y, far below a float ulp of the result.
+        // log2 and exp2 by pow_unit's double kernels (core/power.hpp): errors far below a float ulp.
         const double t2 = power::log2_normal(double(u)) / (double(m) + 1.0), t = t2 * double(ce::ln2);
         const double omc = t > -0x1p-10 ? -(t + t * t * (0.5 + t * (1.0 / 6 + t * (1.0 / 24)))) : 1.0 - power::exp2_tabulated(t2);
         return {float(omc), float(1.0 - omc), float(detail::sqrt(omc * (2.0 - omc)))};
@@ -178,9 +156,8 @@ PHONG_INLINE constexpr glm::vec<2, T> cos_sin_turns(T u)
     return {std::cos(phi), std::sin(phi)};
 }
 
-/// 1 - a.b for unit vectors a, b with cos_ab = a.b > 0: |(a - b) x b|^2 / (1 + a.b), the squared
-/// sine over 1 + cos. Relative error a few ulps even where a ~ b (a - b is then exact, the cross
-/// product has no cancellation, 1 + a.b >= 1); 1 - a.b itself loses all digits there.
+/// 1 - a.b for unit a, b with cos_ab = a.b > 0: |(a - b) x b|^2 / (1 + a.b), within a few ulps even
+/// where a ~ b (a - b exact, no cancellation), where 1 - a.b loses every digit.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T one_minus_cos(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b, T cos_ab)
 {
@@ -188,9 +165,8 @@ PHONG_INLINE constexpr T one_minus_cos(const glm::vec<3, T, Q>& a, const glm::ve
     return detail::dot(x, x) / (T(1) + cos_ab);
 }
 
-/// log1p(-x) for x in [0, 1): log(y) - ((y - 1) + x) / y with y = 1 - x rounded (the rounding
-/// error of y corrected to first order; Goldberg, "What every computer scientist should know about
-/// floating-point arithmetic", 1991, theorem 4): within 2 ulps, by one log.
+/// log1p(-x) for x in [0, 1): log(y) - ((y - 1) + x) / y, y = 1 - x rounded (its rounding error
+/// corrected to first order; Goldberg 1991, theorem 4): within 2 ulps, by one log.
 template <class W>
 PHONG_INLINE constexpr W log1p_minus(W x)
 {
@@ -199,16 +175,14 @@ PHONG_INLINE constexpr W log1p_minus(W x)
     return detail::log(y) - ((y - W(1)) + x) / y;
 }
 
-/// cos^m a = exp(m log1p(-x)) for x = 1 - cos a in [0, 1), clamped below 1 so that m = 0 gives 1
-/// (no 0 * -inf). Relative error about (1 + m x) ulps beyond that of x. float: (1 - x)^m in double
-/// by pow_unit's kernel (relative error 3 (m |log2 c| + m + 4) 2^-53 + m 2^-53: 3e-10 at m = 1e6).
+/// cos^m a = exp(m log1p(-x)) for x = 1 - cos a in [0, 1), x clamped below 1 (m = 0 gives 1, not
+/// 0 * -inf). Relative error about (1 + m x) ulps beyond x's. float: (1 - x)^m in double (pow_unit's kernel).
 template <class T>
 PHONG_INLINE constexpr T lobe_power(T x, T m)
 {
     constexpr T below_one = T(1) - std::numeric_limits<T>::epsilon() / 2;
     if constexpr (std::is_same_v<T, float>) {
-        // c = 1 - x in double is exact to 2^-53, a relative error 2^-53 / c of c: m times that,
-        // below a float ulp for m < 2^29 c; then pow_unit's inline double kernel.
+        // c = 1 - x in double: m 2^-53 / c relative, below a float ulp for m < 2^29 c.
         return float(power::pow_unit_at_most_one(1.0 - double(detail::min(x, below_one)), double(m)));
     } else {
         return detail::exp(m * log1p_minus(detail::min(x, below_one)));
@@ -236,9 +210,8 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> sample_cosine(T u0, T u1)
     return {r * cs.x, r * cs.y, detail::sqrt(T(1) - u1)};
 }
 
-/// Gauss-Legendre with 8 nodes per panel of int_0^xmax e^-x g(x) dx, panels 0, 1/4, 1/2, 1, ...,
-/// 28, 40 (e^-40 < 5e-18 is the truncation), the first one in y = sqrt(x). The albedo's quadrature (docs/bsdf.md: its accuracy
-/// against a brute-force 2-D integration).
+/// int_0^xmax e^-x g(x) dx by 8-point Gauss-Legendre on panels 0, 1/4, ..., 28, 40 (truncation
+/// e^-40 < 5e-18), the first in y = sqrt(x). Accuracy against a 2-D integration: docs/bsdf.md.
 template <class T, class G>
 inline T exp_weighted_integral(T xmax, G g)
 {
@@ -268,22 +241,14 @@ inline T exp_weighted_integral(T xmax, G g)
 
 } // namespace detail::bsdf
 
-// ------------------------------------------------------------------------------------------------
-// The modified Phong
-// ------------------------------------------------------------------------------------------------
+// ---- The modified Phong -------------------------------------------------------------------------
 
-/// The modified Phong BSDF (Lafortune and Willems, "Using the modified Phong reflectance model for
-/// physically based rendering", 1994; Mitsuba 0.6's `phong`):
+/// The modified Phong BSDF (Lafortune and Willems 1994; Mitsuba 0.6's `phong`):
 ///   f(wo, wi) = kd / pi + ks (m+2) / (2 pi) max(0, wi.r)^m,   r = reflect(wo) = (-wo.x, -wo.y, wo.z),
-/// for wo.z > 0 and wi.z > 0, else 0. Reciprocal (wi.r(wo) = wo.r(wi)). Its specular albedo is 1
-/// at normal incidence and falls to about cos(theta_o) toward grazing, so kd + ks <= 1 conserves
-/// energy (validate).
-/// Sampling: the specular lobe with probability specular_probability (default: Mitsuba's
-/// luminance ratio lum(ks) / (lum(kd) + lum(ks))), else the cosine-weighted hemisphere. The
-/// specular lobe is drawn about r with pdf (m+1)/(2 pi) cos^m a over the hemisphere around r; its
-/// part below the surface is wasted (sample: pdf = 0, weight = 0), so pdf(wo, .) integrates over
-/// the upper hemisphere to 1 - specular_probability * (the lobe's fraction below the horizon).
-/// The material's ka, emission and alpha are not used; shininess is m.
+/// for wo.z > 0 and wi.z > 0, else 0. Reciprocal. Specular albedo 1 at normal incidence, about
+/// cos(theta_o) toward grazing, so kd + ks <= 1 conserves energy (validate). Sampling: the lobe
+/// (m+1)/(2 pi) cos^m a about r with probability specular_probability, else cosine-weighted; its part
+/// below the surface is wasted (pdf = 0, weight = 0). Uses the material's kd, ks and shininess (m).
 template <class T, glm::qualifier Q = glm::defaultp>
 struct modified_phong_bsdf {
     using vec3 = glm::vec<3, T, Q>; ///< the direction and colour type
@@ -305,9 +270,8 @@ struct modified_phong_bsdf {
     PHONG_INLINE constexpr T specular_power(const vec3& wo, const vec3& wi) const
     {
         if constexpr (std::is_same_v<T, float>) {
-            // float: one_minus_cos in double (insensitive to the length of wi, unit within float's
-            // rounding only), then (1 - x)^m by pow_unit's double kernel: its error, m 2^-53, is far
-            // below a float ulp.
+            // float: one_minus_cos in double (insensitive to wi's length, unit only within float's
+            // rounding), then (1 - x)^m by pow_unit's double kernel (error m 2^-53).
             const glm::dvec3 rd{-double(wo.x), -double(wo.y), double(wo.z)}, wd{wi};
             const double c = detail::dot(wd, rd);
             if (!(c > 0.0)) return T(0);
@@ -320,8 +284,7 @@ struct modified_phong_bsdf {
         return detail::bsdf::lobe_power(detail::bsdf::one_minus_cos(wi, r, c), shininess);
     }
 
-    /// f(wo, wi) = kd / pi + ks (m+2)/(2 pi) max(0, wi.r)^m; 0 unless wo.z > 0 and wi.z > 0.
-    /// Pre: wo, wi unit. Finite for every finite m >= 0.
+/// f(wo, wi) as above; 0 unless wo.z > 0 and wi.z > 0. Pre: wo, wi unit. Finite for finite m >= 0.
     PHONG_INLINE constexpr vec3 eval(const vec3& wo, const vec3& wi) const
     {
         if (!(wo.z > T(0) && wi.z > T(0))) return vec3(T(0));
@@ -330,9 +293,8 @@ struct modified_phong_bsdf {
     /// f(wo, wi) wi.z, the integrand of the rendering equation; 0 below the horizon.
     PHONG_INLINE constexpr vec3 eval_cos(const vec3& wo, const vec3& wi) const { return eval(wo, wi) * detail::max(wi.z, T(0)); }
 
-    /// The density of sample(wo, .) at wi (per steradian):
-    ///   (1 - p) wi.z / pi + p (m+1)/(2 pi) max(0, wi.r)^m,  p = specular_probability;
-    /// 0 unless wo.z > 0 and wi.z > 0.
+/// The density of sample(wo, .) at wi: (1 - p) wi.z / pi + p (m+1)/(2 pi) max(0, wi.r)^m,
+/// p = specular_probability; 0 unless wo.z > 0 and wi.z > 0.
     PHONG_INLINE constexpr T pdf(const vec3& wo, const vec3& wi) const
     {
         if (!(wo.z > T(0) && wi.z > T(0))) return T(0);
@@ -340,12 +302,10 @@ struct modified_phong_bsdf {
         return (T(1) - p) * wi.z * detail::bsdf::inv_pi<T> + p * (shininess + T(1)) * detail::bsdf::inv_two_pi<T> * specular_power(wo, wi);
     }
 
-    /// A direction wi from u in [0, 1)^2: u.x chooses the lobe (then reused, stretched, for the
-    /// azimuth), u.y gives the polar angle about r (specular, the stable form above) or
-    /// sqrt(u.y) as the radius (diffuse). Returns wi, pdf(wo, wi) and f wi.z / pdf, both evaluated
-    /// at the returned wi (so a caller's MIS sees the same numbers as pdf() and eval()); pdf = 0 and
-    /// weight = 0 when wi falls below the horizon or wo is not above it. Never NaN or inf for
-    /// u in [0, 1]^2, any unit wo and any finite m >= 0.
+/// A direction wi from u in [0, 1]^2: u.x chooses the lobe (then, stretched, the azimuth), u.y the
+/// polar angle about r (specular) or the radius sqrt(u.y) (diffuse). Returns wi, pdf(wo, wi) and
+/// f wi.z / pdf, evaluated at the returned wi as pdf() and eval() do (for MIS); pdf = 0, weight = 0
+/// when wi is below the horizon or wo is not above it. Never NaN or inf for any unit wo, finite m >= 0.
     PHONG_INLINE constexpr bsdf_sample<T, Q> sample(const vec3& wo, const glm::vec<2, T, Q>& u) const
     {
         bsdf_sample<T, Q> out;
@@ -372,14 +332,11 @@ struct modified_phong_bsdf {
         return out;
     }
 
-    /// The specular lobe's directional albedo int f_s(wo, wi) wi.z dwi / ks:
-    ///   cos th (1 - sin^(m+2) th) + (m+2)/(m+1) sin^(m+1) th int_0^inf e^-x G(sin th e^(-x/(m+1))) dx,
-    /// th the angle of wo from the normal; the first term is the part of the lobe above the
-    /// horizon whole (closed form), the second the clipped rest, G(c) = (c cos th acos(-c cos th /
-    /// (sqrt(1 - c^2) sin th)) + sqrt(sin^2 th - c^2)) / pi being the azimuthal integral of
-    /// max(0, wi.z) at lobe angle acos c (closed form), integrated by exp_weighted_integral.
-    /// 1 at normal incidence for every m, 1/2 at m = 0 on the horizon. 0 unless wo.z > 0. Not
-    /// constexpr (std::acos). Accuracy: docs/bsdf.md.
+/// The specular lobe's directional albedo int f_s(wo, wi) wi.z dwi / ks, th the angle of wo:
+///   cos th (1 - sin^(m+2) th) + (m+2)/(m+1) sin^(m+1) th int_0^inf e^-x G(sin th e^(-x/(m+1))) dx,
+/// the lobe's unclipped part plus the clipped rest, G(c) = (c cos th acos(-c cos th / (sqrt(1 - c^2)
+/// sin th)) + sqrt(sin^2 th - c^2)) / pi. 1 at normal incidence, 1/2 at m = 0 on the horizon; 0 unless
+/// wo.z > 0. Not constexpr (std::acos). Accuracy: docs/bsdf.md.
     inline T specular_albedo(const vec3& wo) const
     {
         if (!(wo.z > T(0))) return T(0);
@@ -400,8 +357,7 @@ struct modified_phong_bsdf {
         }
         return a;
     }
-    /// The directional albedo int f(wo, wi) wi.z dwi = kd + ks specular_albedo(wo) (the white
-    /// furnace's reflected fraction); 0 unless wo.z > 0.
+/// The directional albedo int f(wo, wi) wi.z dwi = kd + ks specular_albedo(wo); 0 unless wo.z > 0.
     inline vec3 albedo(const vec3& wo) const
     {
         if (!(wo.z > T(0))) return vec3(T(0));
@@ -409,13 +365,10 @@ struct modified_phong_bsdf {
     }
 };
 
-// ------------------------------------------------------------------------------------------------
-// The normalized Blinn-Phong
-// ------------------------------------------------------------------------------------------------
+// ---- The normalized Blinn-Phong -----------------------------------------------------------------
 
-/// The Blinn-Phong normalization N(m) of `kind` (see blinn_normalization). exact: written as
-/// (m+2)/(8 pi) * (m+4)/(2^(-m/2) + m), finite for every finite m >= 0 (the product (m+2)(m+4)
-/// would overflow float from m ~ 2e19). N(0) = 1/pi (exact).
+/// The Blinn-Phong normalization N(m) of `kind` (blinn_normalization). exact as (m+2)/(8 pi) *
+/// (m+4)/(2^(-m/2) + m): finite for every finite m >= 0 ((m+2)(m+4) overflows float). N(0) = 1/pi.
 template <class T>
 PHONG_INLINE constexpr T blinn_phong_normalization(T m, blinn_normalization kind = blinn_normalization::exact)
 {
@@ -427,16 +380,11 @@ PHONG_INLINE constexpr T blinn_phong_normalization(T m, blinn_normalization kind
 
 /// The normalized Blinn-Phong BSDF with a Lambertian lobe:
 ///   f(wo, wi) = kd / pi + ks N(m) (n.h)^m,   h = (wo + wi) / |wo + wi|,
-/// for wo.z > 0 and wi.z > 0, else 0; N(m) per `normalization` (exact by default: albedo 1 at
-/// normal incidence, below 1 elsewhere, so kd + ks <= 1 conserves energy). Reciprocal (h is
-/// symmetric in wo, wi).
-/// Sampling (pbrt-v2's Blinn): the specular lobe with probability specular_probability (default
-/// lum(ks) / (lum(kd) + lum(ks))), h drawn with pdf (m+1)/(2 pi) (n.h)^m over the upper hemisphere
-/// (stable form), wi = reflect(-wo, h), pdf(wi) = (m+1)/(2 pi) (n.h)^m / (4 wo.h); else the
-/// cosine-weighted hemisphere. A wi below the horizon (or wo.h <= 0) is wasted: pdf = 0,
-/// weight = 0; pdf(wo, .) integrates over the upper hemisphere to 1 - p (the wasted part), at
-/// normal incidence 1 - p 2^(-(m+1)/2).
-/// The material's ka, emission and alpha are not used; shininess is m.
+/// for wo.z > 0 and wi.z > 0, else 0; N(m) per `normalization` (exact: albedo 1 at normal incidence,
+/// below elsewhere, so kd + ks <= 1 conserves energy). Reciprocal. Sampling (pbrt-v2's Blinn): h from
+/// the lobe (m+1)/(2 pi) (n.h)^m with probability specular_probability, wi = reflect(-wo, h), pdf
+/// (m+1)/(2 pi) (n.h)^m / (4 wo.h); else cosine-weighted. wi below the horizon or wo.h <= 0 is wasted
+/// (pdf = 0, weight = 0). Uses the material's kd, ks and shininess (m).
 template <class T, glm::qualifier Q = glm::defaultp>
 struct blinn_phong_bsdf {
     using vec3 = glm::vec<3, T, Q>; ///< the direction and colour type
@@ -459,9 +407,8 @@ struct blinn_phong_bsdf {
         : kd(mat.kd), ks(mat.ks), shininess(mat.shininess), specular_probability(specular_probability_),
           normalization(kind), norm(blinn_phong_normalization(mat.shininess, kind)) {}
 
-    /// (n.h)^m and |wo + wi| (= 2 wo.h for unit wo, wi), for wo.z > 0 and wi.z > 0.
-    /// 1 - n.h = (H.x^2 + H.y^2) / (|H| (|H| + H.z)), H = wo + wi: no cancellation near h = n.
-    /// H.x = H.y = 0 gives h = n (also where |H| underflows: wo, wi opposite on the horizon).
+/// (n.h)^m and |wo + wi| (= 2 wo.h), for wo.z > 0 and wi.z > 0. 1 - n.h = (H.x^2 + H.y^2) / (|H| (|H| + H.z)),
+/// H = wo + wi: no cancellation near h = n; H.x = H.y = 0 gives h = n (also where |H| underflows).
     PHONG_INLINE constexpr glm::vec<2, T> half_power(const vec3& wo, const vec3& wi) const
     {
         if constexpr (std::is_same_v<T, float>) {
@@ -492,9 +439,8 @@ struct blinn_phong_bsdf {
     /// f(wo, wi) wi.z; 0 below the horizon.
     PHONG_INLINE constexpr vec3 eval_cos(const vec3& wo, const vec3& wi) const { return eval(wo, wi) * detail::max(wi.z, T(0)); }
 
-    /// The density of sample(wo, .) at wi:
-    ///   (1 - p) wi.z / pi + p (m+1)/(2 pi) (n.h)^m / (4 wo.h),  wo.h = |wo + wi| / 2;
-    /// 0 unless wo.z > 0 and wi.z > 0.
+/// The density of sample(wo, .) at wi: (1 - p) wi.z / pi + p (m+1)/(2 pi) (n.h)^m / (4 wo.h),
+/// wo.h = |wo + wi| / 2, p = specular_probability; 0 unless wo.z > 0 and wi.z > 0.
     PHONG_INLINE constexpr T pdf(const vec3& wo, const vec3& wi) const
     {
         if (!(wo.z > T(0) && wi.z > T(0))) return T(0);
@@ -503,8 +449,7 @@ struct blinn_phong_bsdf {
         return (T(1) - p) * wi.z * detail::bsdf::inv_pi<T> + p * specular_pdf(hp);
     }
 
-    /// As modified_phong_bsdf::sample, the specular lobe through h: cos th_h from the stable
-    /// form, wi = 2 (wo.h) h - wo. pdf and weight evaluated at the returned wi.
+/// As modified_phong_bsdf::sample, the specular lobe through h (stable cos th_h), wi = 2 (wo.h) h - wo.
     PHONG_INLINE constexpr bsdf_sample<T, Q> sample(const vec3& wo, const glm::vec<2, T, Q>& u) const
     {
         bsdf_sample<T, Q> out;
@@ -530,13 +475,11 @@ struct blinn_phong_bsdf {
         return out;
     }
 
-    /// The specular lobe's directional albedo int N (n.h)^m wi.z dwi (ks = 1), over h:
-    ///   N 2 pi / (m+1) int_0^1 H(c) dt,  c = cos th_h = t^(1/(m+1)),
-    /// H(c) = (1/2 pi) int dphi_h 4 q max(0, 2 q c - cos th) (q = wo.h = c cos th + sin th_h sin th
-    /// cos phi_h), the azimuthal integral in closed form (an arc of polynomials in cos phi_h), the
-    /// t integral by exp_weighted_integral split at its kinks th_h = (pi/2 -+ th)/2. 1 at normal
-    /// incidence with the exact N. 0 unless wo.z > 0. Not constexpr (std::acos). Accuracy:
-    /// docs/bsdf.md.
+/// The specular lobe's directional albedo int N (n.h)^m wi.z dwi (ks = 1), over h:
+///   N 2 pi / (m+1) int_0^1 H(c) dt,  c = cos th_h = t^(1/(m+1)),  H(c) the azimuthal integral of
+/// 4 (wo.h) max(0, 2 (wo.h) c - cos th) / (2 pi) in closed form; the t integral split at its kinks
+/// th_h = (pi/2 -+ th)/2. 1 at normal incidence with the exact N. 0 unless wo.z > 0. Not constexpr
+/// (std::acos). Derivation and accuracy: docs/bsdf.md.
     inline T specular_albedo(const vec3& wo) const
     {
         if (!(wo.z > T(0))) return T(0);
@@ -572,7 +515,7 @@ struct blinn_phong_bsdf {
         };
         return norm * T(2) * detail::bsdf::pi<T> * k * (piece(T(1), c1) + piece(c1, c2));
     }
-    /// kd + ks specular_albedo(wo); 0 unless wo.z > 0.
+/// kd + ks specular_albedo(wo); 0 unless wo.z > 0.
     inline vec3 albedo(const vec3& wo) const
     {
         if (!(wo.z > T(0))) return vec3(T(0));
@@ -580,9 +523,7 @@ struct blinn_phong_bsdf {
     }
 };
 
-// ------------------------------------------------------------------------------------------------
-// validate
-// ------------------------------------------------------------------------------------------------
+// ---- validate -----------------------------------------------------------------------------------
 
 namespace detail::bsdf {
 template <class B>
@@ -605,19 +546,16 @@ PHONG_INLINE constexpr validation validate_common(const B& b)
 }
 } // namespace detail::bsdf
 
-/// Checks a modified Phong BSDF: kd, ks finite and >= 0, shininess finite and >= 0,
-/// kd + ks <= 1 in every channel (energy conservation; the message names material.kd +
-/// material.ks), specular_probability in [0, 1], above 0 when ks > 0 and below 1 when kd > 0
-/// (else a lobe is never sampled and the estimate is biased).
+/// Checks a modified Phong BSDF: kd, ks, shininess finite and >= 0; kd + ks <= 1 per channel (energy);
+/// specular_probability in [0, 1], > 0 when ks > 0 and < 1 when kd > 0 (else a lobe is never sampled: biased).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr validation validate(const modified_phong_bsdf<T, Q>& b)
 {
     return detail::bsdf::validate_common(b);
 }
 
-/// Checks a Blinn-Phong BSDF as validate(modified_phong_bsdf); also that norm is N(shininess) of
-/// its normalization (a shininess changed after construction is caught). The approximate and
-/// three_js normalizations are accepted (chosen on purpose; documented as not energy conserving).
+/// Checks a Blinn-Phong BSDF as validate(modified_phong_bsdf), and that norm is N(shininess) of its
+/// normalization (catches a shininess changed after construction). approximate and three_js pass.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr validation validate(const blinn_phong_bsdf<T, Q>& b)
 {

@@ -1,14 +1,7 @@
-// phong: the GLSL twin's source for a C++ program: where phong.glsl is, its text, the #define
-// lines of a features value, and a shader assembled from them.
+// phong: the GLSL twin's source for a C++ program: phong.glsl's directory and text, the #define lines
+// of a features value, and a shader assembled from them (docs/glsl.md). C++17, but defines(F), which
+// takes a phong::features, needs C++20.
 // SPDX-License-Identifier: MIT
-//
-// GLSL has no #include: a program hands glShaderSource its #version line, the feature defines,
-// phong.glsl's text and its own shader, in that order (docs/glsl.md). The CMake target phong::phong
-// defines PHONG_GLSL_DIR (the source tree's include/phong/glsl, or the installed one), and
-// find_package(phong) sets the CMake variable of the same name; pkg-config's phong.pc has it as
-// the variable glsldir. Without either, directory() is the glsl folder beside this header.
-// C++17 and later (the rest of phong needs C++20): source(), directory(), shader(); defines(F)
-// takes a phong::features value, so it needs C++20.
 #pragma once
 
 #if __cplusplus >= 202002L
@@ -23,10 +16,8 @@
 
 namespace phong::glsl {
 
-/// The directory that holds phong.glsl: the macro PHONG_GLSL_DIR (set by the CMake target
-/// phong::phong), else the folder glsl beside this header as the compiler found it (__FILE__: an
-/// absolute path with an absolute -I, as pkg-config's and CMake's are); "" when __FILE__ names no
-/// folder (pass the directory to source(dir)).
+/// The directory that holds phong.glsl: PHONG_GLSL_DIR (defined by the CMake target phong::phong),
+/// else the folder glsl beside this header as __FILE__ names it; "" when __FILE__ names no folder.
 inline std::string directory()
 {
 #if defined(PHONG_GLSL_DIR)
@@ -51,10 +42,9 @@ inline std::string source(const std::string& dir = directory())
 }
 
 #if __cplusplus >= 202002L
-/// The #define lines that select F in phong.glsl (every field written out, so no preset define is
-/// needed), one per line, followed by PHONG_MAX_LIGHTS max_lights. Throws std::invalid_argument
-/// for the stable mode, which the twin does not have (GLSL has no double in ES, and the twofold
-/// route is C++ only).
+/// The #define lines that select F in phong.glsl (every field written out, no preset needed), then
+/// PHONG_MAX_LIGHTS max_lights. Throws std::invalid_argument for evaluation::stable (C++ only: GLSL
+/// ES has no double) and for max_lights < 1.
 inline std::string defines(const features& F, int max_lights = 8)
 {
     if (F.mode == evaluation::stable)
@@ -95,10 +85,9 @@ inline std::string defines(const features& F, int max_lights = 8)
 }
 #endif // C++20: defines(F)
 
-/// One shader's text: version_line ("#version 330 core", "#version 300 es"), a newline, the
-/// defines (e.g. defines(F), or "#define PHONG_PRESET_GLSL_ADS\n"), phong.glsl's text (twin), then
-/// the program's own shader (body). The #line directive before body restarts its line numbers at
-/// 1 (source string 1), so a driver's compile errors in body point at body's own lines.
+/// One shader's text: version_line ("#version 330 core"), a newline, defines_text (defines(F), or
+/// "#define PHONG_PRESET_GLSL_ADS\n"), phong.glsl's text (twin), then body after "#line 1 1", so that
+/// a driver's compile errors point at body's own lines.
 inline std::string shader(std::string_view version_line, std::string_view defines_text, std::string_view twin,
                           std::string_view body)
 {

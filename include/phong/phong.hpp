@@ -1,7 +1,7 @@
 // phong: what a scalar renderer uses. Include this, or only the headers you use (each compiles on
 // its own). The extensions are included by name: <phong/batch.hpp> (shade_batch, SIMD lanes),
-// <phong/primitives.hpp> (ray-primitive intersections), <phong/accuracy.hpp> (the published error
-// bounds), <phong/glsl.hpp> (the GLSL twin's source).
+// <phong/bsdf.hpp> (path-tracer BSDFs), <phong/primitives.hpp> (ray-primitive intersections),
+// <phong/accuracy.hpp> (the published error bounds), <phong/glsl.hpp> (the GLSL twin's source).
 // SPDX-License-Identifier: MIT
 #pragma once
 

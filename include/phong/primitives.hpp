@@ -1,21 +1,8 @@
-// phong: the ray tracer model's generic primitives for ray tracers: their normals m' at a generic hit point
-// P', and the intersection of a ray with each of them in generic (object) coordinates.
+// phong: the ray tracer model's generic primitives (sphere, plane, square, tapered cylinder with
+// radius 1 at z = 0 and s at z = 1, cube [-1, 1]^3): their normals m' at a generic hit point P', and
+// ray intersections in generic (object) coordinates. t is the same for the world ray and the
+// inverse-transformed ray; m' is not normalized: carry it with the normal matrix, then normalize.
 // SPDX-License-Identifier: MIT
-//
-// A ray tracer transforms the ray by an object's inverse transform, hits the generic primitive
-// at P' = S' + t c', takes the generic normal m' there and carries it to world space with the
-// normal matrix (phong/terms/normal.hpp: m = (M^{-1})^T m', not M m'). The hit time t is the same for
-// the world ray and the transformed ray, so P = S + t c. The normals here are not normalized:
-// the normal matrix changes their length anyway, so normalize once, after transforming.
-//
-// Generic primitives (ray tracer model):
-//   sphere            |P'| = 1, centred at the origin;
-//   plane             z = 0;
-//   square            z = 0, |x| <= 1, |y| <= 1;
-//   tapered cylinder  wall x^2 + y^2 = (1 + (s - 1) z)^2, 0 <= z <= 1 (radius 1 at z = 0, s at
-//                     z = 1; s = 1 a cylinder, s = 0 a cone), base disk z = 0, x^2 + y^2 <= 1,
-//                     cap disk z = 1, x^2 + y^2 <= s^2;
-//   cube              max(|x|, |y|, |z|) = 1.
 #pragma once
 
 #include "core/vector.hpp"
@@ -26,8 +13,7 @@ namespace phong {
 
 // ---- normals at a generic hit point -------------------------------------------------------
 
-/// Generic sphere: m' = P' - (0, 0, 0) = P' (the ray tracer model, step 4.1).
-/// Pre: P' on the unit sphere (any P' gives the radial direction). Edge: P' = 0 gives 0.
+/// Generic sphere: m' = P'. Pre: P' on the unit sphere (any P' gives the radial direction). Edge: 0 at P' = 0.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> sphere_normal(const glm::vec<3, T, Q>& p)
 {
@@ -48,11 +34,9 @@ PHONG_HD constexpr glm::vec<3, T, Q> square_normal(const glm::vec<3, T, Q>& /*p*
     return {T(0), T(0), T(1)};
 }
 
-/// Wall of the generic tapered cylinder F(x, y, z) = x^2 + y^2 - (1 + (s - 1) z)^2 = 0:
-///   m' = grad F / 2 = (x, y, -(s - 1)(1 + (s - 1) z))
-/// (TeX: m' = (x,\ y,\ -(s-1)(1+(s-1)z))), outward (F grows outside). s = 1 gives the cylinder's
-/// (x, y, 0). Pre: s >= 0, P' on the wall with 0 <= z <= 1. Edge: the apex of a cone (s = 0,
-/// z = 1, x = y = 0) has no normal and gives 0 (shade then adds no diffuse or specular).
+/// Wall of the generic tapered cylinder F = x^2 + y^2 - (1 + (s - 1) z)^2 = 0, outward:
+///   m' = grad F / 2 = (x, y, -(s - 1)(1 + (s - 1) z))   (TeX: m' = (x,\ y,\ -(s-1)(1+(s-1)z)))
+/// Pre: s >= 0, P' on the wall, 0 <= z <= 1. Edge: a cone's apex (s = 0, z = 1, x = y = 0) gives 0.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_wall_normal(const glm::vec<3, T, Q>& p, T s)
 {
@@ -91,8 +75,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> cube_normal(const glm::vec<3, T, Q>& p)
 /// Which part of a generic primitive a ray hit.
 enum class primitive_part : unsigned char { none, surface, wall, base, cap };
 
-/// The nearest hit of a ray S + t c with t > t_min: its time and the part hit.
-/// A miss has part = none and t = +inf (so the nearest of several hits is the smallest t).
+/// The nearest hit of a ray S + t c with t > t_min; a miss has part = none and t = +inf.
 template <class T>
 struct ray_hit {
     T t = std::numeric_limits<T>::infinity();   ///< the ray parameter of the hit (+inf: a miss)
@@ -110,9 +93,8 @@ PHONG_HD constexpr ray_hit<T> nearer(const ray_hit<T>& a, const ray_hit<T>& b)
     return b.t < a.t ? b : a;
 }
 
-/// The roots of A t^2 + 2 B t + C = 0 without cancellation: q = -(B + sign(B) sqrt(B^2 - A C)),
-/// t = q / A and t = C / q (Numerical Recipes 5.6). A = 0 leaves the linear root -C / (2B).
-/// Returns the number of real roots written to t0, t1 (0, 1 or 2); they are not ordered.
+/// The roots of A t^2 + 2 B t + C = 0 without cancellation (Numerical Recipes 5.6): q = -(B + sign(B)
+/// sqrt(B^2 - A C)), t = q / A, C / q; A = 0 leaves -C / (2B). Returns how many (0-2), unordered.
 template <class T>
 PHONG_HD constexpr int quadratic_roots(T A, T B, T C, T& t0, T& t1)
 {
@@ -178,10 +160,9 @@ PHONG_HD constexpr bool ray_box(const glm::vec<3, T, Q>& S, const glm::vec<3, T,
     return enter <= leave;
 }
 
-/// For a direction c whose c.c overflows or underflows: the power of two s that brings c's
-/// largest component into [1, 2) (subnormal components: as far as 2^(max exponent) takes them;
-/// the ray S + t' (c s) is the same ray, t = t' s, exactly but for underflow); 0 when c = 0 or
-/// a component is inf or NaN (no hit).
+/// For a direction c whose c.c overflows or underflows: the power of two s that brings c's largest
+/// component into [1, 2) (S + t' (c s) is the same ray, t = t' s, exact but for underflow); 0 when
+/// c = 0 or a component is inf or NaN (no hit).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr T direction_scale(const glm::vec<3, T, Q>& c)
 {
@@ -204,19 +185,14 @@ template <class T> PHONG_HD constexpr ray_hit<T> scaled_back(const ray_hit<T>& h
 } // namespace detail
 
 /// Ray S + t c against the generic unit sphere |P| = 1: the smallest root t > t_min of
-///   (c.c) t^2 + 2 (S.c) t + (S.S - 1) = 0,
-/// solved without cancellation: the discriminant is taken as (c.c)(1 - |S - (S.c / c.c) c|^2)
-/// (the distance of the ray's line from the centre, Ray Tracing Gems ch. 7) rather than
-/// (S.c)^2 - (c.c)(S.S - 1), so rays far from the sphere or near tangency keep their digits, and
-/// the roots as in detail::quadratic_roots. Part: surface. Pre: S, c finite; c need not be unit
-/// (t is in units of c, so the same t serves the world ray and the inverse-transformed ray).
-/// Huge vectors: a c whose c.c overflows or underflows is scaled by a power of two first (t scaled back,
-/// exactly but for underflow), and where S.S overflows the root C / q is taken from |S|, so
-/// finite S and c never give an infinite t nor miss a hit for overflow.
-/// Edge: c = 0, a miss, or a tangent ray that rounds to a miss gives no hit; NaN or inf gives no
-/// hit; a root beyond T's range (t = inf) is no hit.
-/// Accuracy: near tangency the hit is ill-conditioned (the roots merge); t is then as accurate
-/// as the rounding of S and c allows, about eps (t0 + t1) / |t0 - t1|.
+///   (c.c) t^2 + 2 (S.c) t + (S.S - 1) = 0.
+/// The discriminant is taken as (c.c)(1 - |S - (S.c / c.c) c|^2) (the line's distance from the
+/// centre, Ray Tracing Gems ch. 7), not (S.c)^2 - (c.c)(S.S - 1), so far and near-tangent rays keep
+/// their digits. A c whose c.c overflows or underflows is scaled by a power of two (t scaled back),
+/// and where S.S overflows the root C / q is taken from |S|: finite S and c never give t = inf nor
+/// miss a hit for overflow. Part: surface. Pre: S, c finite; c need not be unit.
+/// Edge: c = 0, NaN, inf, a miss, a tangent ray that rounds to a miss, or t = inf: no hit.
+/// Accuracy: near tangency the roots merge; t is then within about eps (t0 + t1) / |t0 - t1|.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
@@ -245,8 +221,7 @@ PHONG_HD constexpr ray_hit<T> ray_sphere(const glm::vec<3, T, Q>& S, const glm::
 }
 
 /// Ray S + t c against the generic plane z = 0: t = -S.z / c.z when t > t_min. Part: surface.
-/// Edge: a ray parallel to the plane (c.z = 0), even one lying in it, gives no hit; so does a
-/// time that overflows to inf.
+/// Edge: c.z = 0 (even a ray in the plane) and a time that overflows to inf give no hit.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_plane(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T t_min = T(0))
 {
@@ -269,8 +244,7 @@ PHONG_HD constexpr ray_hit<T> ray_square(const glm::vec<3, T, Q>& S, const glm::
 }
 
 namespace detail {
-/// The tapered cylinder's hits of the ray S + t c, reported at times t_offset + t (see
-/// ray_tapered_cylinder).
+/// The tapered cylinder's hits of the ray S + t c, reported at times t_offset + t.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> tapered_cylinder_hits(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s, T t_min,
                                                     T t_offset)
@@ -296,20 +270,16 @@ PHONG_HD constexpr ray_hit<T> tapered_cylinder_hits(const glm::vec<3, T, Q>& S, 
 
 /// Ray S + t c against the generic tapered cylinder with small radius s (wall, base and cap):
 ///   wall: A t^2 + 2 B t + C = 0 with k = s - 1, w = 1 + k S.z, e = k c.z,
-///         A = cx^2 + cy^2 - e^2, B = Sx cx + Sy cy - w e, C = Sx^2 + Sy^2 - w^2,
-///         a root counts when 0 <= z <= 1 at it;
+///         A = cx^2 + cy^2 - e^2, B = Sx cx + Sy cy - w e, C = Sx^2 + Sy^2 - w^2, a root counts when 0 <= z <= 1;
 ///   base: z = 0 with x^2 + y^2 <= 1;  cap: z = 1 with x^2 + y^2 <= s^2.
-/// Returns the nearest hit after t_min and which part it is (wall, base or cap).
-/// A far origin (outside the bounding box [-R, R]^2 x [0, 1], R = max(1, s), grown by R on every
-/// side) first moves to the box: the ray S' + t' c with S' = S + t_e c, t_e the box's entry time,
-/// t = t_e + t'. Solved at S itself, B^2 and A C (about |S|^2 |c|^2) cancel to the discriminant's
-/// size (|c|^2): float lost a hit's digits from |S| ~ 10 on, missed hits from |S| ~ 1e3, and
-/// overflowed at |S| ~ 1e19. From the box the hit is found to within the rounding of S + t_e c,
-/// a few eps |S| along the ray, the input's own precision. A c whose c.c overflows or underflows is scaled by
-/// a power of two first (t scaled back), as in ray_sphere.
-/// Pre: s >= 0 (s < 0 would add the other nappe of the cone). Edge: s = 0 has no cap (a disk of
-/// radius 0 is never hit) and the apex is a wall hit; a ray along a generator line (A = 0) uses
-/// the linear root; c = 0, NaN, inf and a hit at t = inf give no hit.
+/// Returns the nearest hit after t_min and its part (wall, base or cap). An origin outside the
+/// bounding box [-R, R]^2 x [0, 1] (R = max(1, s)) grown by R first moves to the box's entry time t_e
+/// (t = t_e + t'): at a far S, B^2 and A C (~|S|^2 |c|^2) would cancel down to the discriminant's
+/// size (|c|^2); from the box, t is as accurate as the rounding of S + t_e c (docs/models.md).
+/// A c whose c.c overflows or underflows is scaled by a power of two first, as in ray_sphere.
+/// Pre: s >= 0 (s < 0 would add the cone's other nappe). Edge: s = 0 has no cap and the apex is a
+/// wall hit; a ray along a generator line (A = 0) takes the linear root; c = 0, NaN, inf and a hit
+/// at t = inf give no hit.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr ray_hit<T> ray_tapered_cylinder(const glm::vec<3, T, Q>& S, const glm::vec<3, T, Q>& c, T s,
                                                    T t_min = T(0))
