@@ -243,7 +243,7 @@ PHONG_INLINE constexpr float pow_unit(float x, float m) { return pow_unit_kernel
 PHONG_INLINE constexpr double pow_unit(double x, double m) { return pow_unit_kernel<true>(x, m); }
 
 /// pow_unit for x in [0, 1], m >= 0 finite, results below the power floor 0, and no libm fallback
-/// (a call in the light loop would spill its registers). NaN x or m, x < 0, x > 1 with m > 0, or
+/// (the light loop's: no call there; why: docs/accuracy.md, "The scalar power kernel"). NaN x or m, x < 0, x > 1 with m > 0, or
 /// m < 0 with x < 1: NaN; x = 1 gives 1 for finite m. m = +inf: 0 for x < 1, NaN for x = 1.
 PHONG_INLINE constexpr float pow_unit_in_domain(float x, float m) { return pow_unit_kernel<false>(x, m); }
 PHONG_INLINE constexpr double pow_unit_in_domain(double x, double m) { return pow_unit_kernel<false>(x, m); }
