@@ -27,14 +27,6 @@ namespace {
 
 using namespace phong_demo;
 
-/// Linear light to 8-bit sRGB (the exact sRGB curve), clamped to [0, 1] first.
-unsigned char to_srgb8(float linear)
-{
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-    return static_cast<unsigned char>(std::lround(s * 255.0f));
-}
-
 std::vector<unsigned char> to_rgb8(const image& img)
 {
     std::vector<unsigned char> out(img.pixels.size() * 3);

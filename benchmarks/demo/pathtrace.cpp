@@ -47,13 +47,6 @@ namespace {
 
 using namespace phong_demo;
 
-unsigned char to_srgb8(float linear)
-{
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-    return static_cast<unsigned char>(std::lround(s * 255.0f));
-}
-
 bool write_png(const std::filesystem::path& path, const image& img)
 {
     std::vector<unsigned char> rgb(img.pixels.size() * 3);

@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <chrono>
 #include <cstddef>
 #include <limits>
@@ -36,6 +37,15 @@
 #include <vector>
 
 namespace phong_demo {
+
+/// Linear light to 8-bit sRGB (the exact sRGB curve, in float), clamped to [0, 1] first: the
+/// demo's and the path tracer's pictures.
+inline unsigned char to_srgb8(float linear)
+{
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return static_cast<unsigned char>(std::lround(s * 255.0f));
+}
 
 /// Seed 001's generic primitives (and a cube).
 enum class shape : unsigned char { sphere, plane, square, tapered_cylinder, cube };
