@@ -7,6 +7,8 @@
 #     recipe: a kernel templated on phong::feature_set, lights in __constant__ memory, a span),
 #     compiled with the flags docs/cuda.md gives.
 #  2. tests/cuda/shade_kernel.cu (shade and the scalar API from __global__ code), with --use_fast_math.
+#  2b. tests/cuda/bsdf_kernel.cu (phong/bsdf.hpp's BSDFs from __global__ code), with and without
+#     --use_fast_math.
 #  3. benchmarks/cuda/shade.cu (the GPU benchmark, docs/cuda.md) compiled, its PTX kept, and once more
 #     to PTX with --use_fast_math. In both, the PTX instructions per light (ptx_per_light.awk) of
 #     phong's kernels against the hand-written ones: fast <= 1.1x the __powf kernel's, exact <= 1.1x
@@ -39,7 +41,11 @@ mkdir "$out/keep"
 "$nvcc" "${flags[@]}" --use_fast_math -ptx benchmarks/cuda/shade.cu -o "$out/shade_fast_math.ptx"
 wait "$recipe"
 wait "$kernel"
-echo "50-cuda: recipe.cu, shade_kernel.cu (--use_fast_math) and benchmarks/cuda/shade.cu compiled in $((SECONDS - start)) s"
+"$nvcc" "${flags[@]}" -Xcompiler -Wall,-Wextra -c tests/cuda/bsdf_kernel.cu -o "$out/bsdf_kernel.o" &
+bsdf=$!
+"$nvcc" "${flags[@]}" -Xcompiler -Wall,-Wextra --use_fast_math -c tests/cuda/bsdf_kernel.cu -o "$out/bsdf_kernel_fast_math.o"
+wait "$bsdf"
+echo "50-cuda: recipe.cu, shade_kernel.cu (--use_fast_math), bsdf_kernel.cu (both) and benchmarks/cuda/shade.cu compiled in $((SECONDS - start)) s"
 
 status=0
 for ptx in "$out/keep/shade.ptx" "$out/shade_fast_math.ptx"; do

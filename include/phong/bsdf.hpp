@@ -106,7 +106,7 @@ PHONG_INLINE constexpr T luminance_probability(const glm::vec<3, T, Q>& kd, cons
 /// cos a, 1 - cos a and sin a of a sample of the lobe (m+1)/(2 pi) cos^m a: t = log(u) / (m+1),
 /// 1 - cos a = -expm1(t), sin a = sqrt((1 - cos a)(2 - (1 - cos a))), within a few ulps for u in (0, 1)
 /// at any m >= 0 (cos a = u^(1/(m+1)) loses sin a in float from m ~ 1e3). float: in double (expm1 by
-/// its Taylor series for |t| < 2^-10, log, exp by pow_unit's kernels), rounded once. u = 0 or NaN:
+/// its Taylor series for |t| < 2^-6, log, exp by pow_unit's tables), rounded once. u = 0 or NaN:
 /// cos a = 0, sin a = 1 (the limit u -> 0).
 template <class T> struct cone {
     T one_minus_cos; ///< 1 - cos a, in [0, 1]
@@ -119,9 +119,16 @@ PHONG_INLINE constexpr cone<T> sample_cone(T u, T m)
     if (!(u > T(0))) return {T(1), T(0), T(1)};
     if constexpr (std::is_same_v<T, float>) {
         // log2 and exp2 by pow_unit's double kernels (core/power.hpp): errors far below a float ulp.
-        const double t2 = power::log2_normal(double(u)) / (double(m) + 1.0), t = t2 * double(ce::ln2);
-        const double omc = t > -0x1p-10 ? -(t + t * t * (0.5 + t * (1.0 / 6 + t * (1.0 / 24)))) : 1.0 - power::exp2_tabulated(t2);
-        return {float(omc), float(1.0 - omc), float(detail::sqrt(omc * (2.0 - omc)))};
+        const double inv = 1.0 / (double(m) + 1.0); // beside the log, not after it (the rounding: 2^-53)
+#if defined(__CUDA_ARCH__) // device code: CUDA's double log and expm1
+        const double omc = -detail::expm1(detail::log(double(u)) * inv);
+#else
+        const double t2 = power::log2_normal<true>(double(u)) * inv, t = t2 * double(ce::ln2);
+        // -expm1(t) by its series to t^4 for |t| < 2^-6 (truncation t^4 / 120 relative, under 2^-30),
+        // else 1 - 2^t2 (the short polynomial's 2^-34 relative: under 2^-28 of 1 - cos a >= 2^-6).
+        const double omc = t > -0x1p-6 ? -(t + t * t * (0.5 + t * (1.0 / 6 + t * (1.0 / 24)))) : 1.0 - power::exp2_tabulated<true>(t2);
+#endif
+        return {float(omc), float(1.0 - omc), detail::sqrt(float(omc * (2.0 - omc)))}; // float's sqrt: 1 ulp
     } else {
         const T omc = -detail::expm1(detail::log(u) / (m + T(1)));
         return {omc, T(1) - omc, detail::sqrt(omc * (T(2) - omc))};
@@ -134,7 +141,11 @@ template <class T>
 PHONG_INLINE constexpr glm::vec<2, T> cos_sin_turns(T u)
 {
     if (std::is_constant_evaluated()) {
+#if defined(__CUDA_ARCH__)
+        using W = double; // device code has no long double
+#else
         using W = ce::wide;
+#endif
         const W q = static_cast<W>(u) * 4;
         W k = 0;
         for (int i = 0; i < 4 && k + 1 <= q; ++i) k += 1; // u in [0, 1]: at most 4 quarters
@@ -175,16 +186,52 @@ PHONG_INLINE constexpr W log1p_minus(W x)
     return detail::log(y) - ((y - W(1)) + x) / y;
 }
 
+/// (c 2^g)^m rounded to float for c in double (not rounded to float first: that would cost m 2^-25 / c
+/// relative), m >= 0 finite, |g| small (a correction of c, added to log2 c); c 2^g above 1 counts as 1.
+/// 0 for c <= 0 or NaN and below the power floor. Branch-free: pow_unit's double tables with float's
+/// short polynomials, relative error about m 2^-50 (their truncation, smaller where c is near 1) beside
+/// the m 2^-52 of c's own rounding. NaN or infinite m: 0.
+PHONG_INLINE constexpr float float_power(double c, double m, double g = 0.0)
+{
+    constexpr double least = double(ieee::power_floor_log2<double>);
+#if defined(__CUDA_ARCH__) // device code: CUDA's double log and exp (power.hpp's tables are host code)
+    const double y = m * detail::min(detail::log(detail::clamp(c, 0x1p-1022, 2.0)) * (1 / ln2<double>) + g, 0.0);
+    const double p = detail::exp(detail::max(y, least) * ln2<double>);
+#else
+    const double y = m * detail::min(power::log2_normal<true>(detail::clamp(c, 0x1p-1022, 2.0)) + g, 0.0); // in bounds for any c
+    const double p = power::exp2_tabulated<true>(detail::max(y, least));
+#endif
+    return float(c > 0.0 && y >= least ? p : 0.0);
+}
+
 /// cos^m a = exp(m log1p(-x)) for x = 1 - cos a in [0, 1), x clamped below 1 (m = 0 gives 1, not
-/// 0 * -inf). Relative error about (1 + m x) ulps beyond x's. float: (1 - x)^m in double (pow_unit's kernel).
+/// 0 * -inf); m >= 0 finite. Relative error about (1 + m x) ulps beyond x's. float: (1 - x)^m in
+/// double (float_power). double: branch-free, 2^(m log2(1 - x)) by pow_unit's exp2 table; log2(1 - x)
+/// by the atanh series for x < 2^-4, else by the log2 table with y = 1 - x rounded and its rounding
+/// corrected to first order, log2 y - ((y - 1) + x) / (y ln 2); results below the power floor 2^-996 are 0.
 template <class T>
 PHONG_INLINE constexpr T lobe_power(T x, T m)
 {
     constexpr T below_one = T(1) - std::numeric_limits<T>::epsilon() / 2;
     if constexpr (std::is_same_v<T, float>) {
         // c = 1 - x in double: m 2^-53 / c relative, below a float ulp for m < 2^29 c.
-        return float(power::pow_unit_at_most_one(1.0 - double(detail::min(x, below_one)), double(m)));
+        return float_power(1.0 - double(detail::min(x, below_one)), double(m));
     } else {
+#if !defined(__CUDA_ARCH__) // device code: the exp and log1p below (power.hpp's tables are host code)
+        if constexpr (std::is_same_v<T, double>) {
+            constexpr double least = double(ieee::power_floor_log2<double>), inv_ln2 = 1 / ln2<double>;
+            const double xc = detail::clamp(x, 0.0, below_one), y = 1.0 - xc; // y >= 2^-53: normal
+            // Near 1 (x < 2^-4), where the table's log2 has an absolute error of 2^-53 (large relative to
+            // log2 y ~ -1.44 x): ln(1 - x) = -2 atanh(s), s = x / (2 - x) < 2^-4.9, its series to s^11
+            // (truncation under s^12 / 13 < 2^-62 relative). Both are evaluated (no branch); one is kept.
+            const double s = xc / (2.0 - xc), s2 = s * s;
+            const double near = -2.0 * inv_ln2 * s * (1.0 + s2 * (1.0 / 3 + s2 * (1.0 / 5 + s2 * (1.0 / 7 + s2 * (1.0 / 9 + s2 * (1.0 / 11))))));
+            const double far = power::log2_normal(y) - ((y - 1.0) + xc) / y * inv_ln2;
+            const double v = m * (xc < 0x1p-4 ? near : far);
+            const double p = power::exp2_tabulated(detail::max(v, least));
+            return v >= least ? p : 0.0;
+        }
+#endif
         return detail::exp(m * log1p_minus(detail::min(x, below_one)));
     }
 }
@@ -266,29 +313,35 @@ struct modified_phong_bsdf {
     PHONG_INLINE constexpr modified_phong_bsdf(const material<T, Q>& mat, T specular_probability_)
         : kd(mat.kd), ks(mat.ks), shininess(mat.shininess), specular_probability(specular_probability_) {}
 
-    /// cos^m of the angle between wi and r = reflect(wo); 0 where it exceeds 90 degrees.
+    /// cos^m of the angle between wi and r = reflect(wo); 0 where it exceeds 90 degrees. float: wo and
+    /// wi unit within 2^-21 (float's rounding of a unit vector is within 2^-23); farther from unit
+    /// their lengths count beyond that (the correction below is clamped), the result stays finite.
     PHONG_INLINE constexpr T specular_power(const vec3& wo, const vec3& wi) const
     {
         if constexpr (std::is_same_v<T, float>) {
-            // float: one_minus_cos in double (insensitive to wi's length, unit only within float's
-            // rounding), then (1 - x)^m by pow_unit's double kernel (error m 2^-53).
+            // float, in double, branch-free: c = wi.r (the products exact) over |wi| |r|, since
+            // lengths off 1 by float's rounding, raised to m, would cost m 2^-24: log2(1 / sqrt(1 + e))
+            // to second order added to log2 c, e = |wi|^2 |r|^2 - 1 (third order under 2^-62).
             const glm::dvec3 rd{-double(wo.x), -double(wo.y), double(wo.z)}, wd{wi};
-            const double c = detail::dot(wd, rd);
-            if (!(c > 0.0)) return T(0);
-            const double x = detail::bsdf::one_minus_cos(wd, rd, c);
-            return float(detail::power::pow_unit_at_most_one(1.0 - detail::min(x, 1.0), double(shininess)));
+            const double c = detail::dot(wd, rd), e = detail::dot(wd, wd) * detail::dot(rd, rd) - 1.0;
+            const double ec = detail::clamp(e, -0x1p-20, 0x1p-20);
+            constexpr double k = 1 / (4 * detail::bsdf::ln2<double>); // log2(1 / sqrt(1 + e)) = -2k (e - e^2 / 2 + ...)
+            return detail::bsdf::float_power(c, double(shininess), ec * (-2 * k + ec * k));
         }
+        // double: branch-free as well (a c <= 0 only selects 0 at the end).
         const vec3 r{-wo.x, -wo.y, wo.z};
         const T c = detail::dot(wi, r);
-        if (!(c > T(0))) return T(0);
-        return detail::bsdf::lobe_power(detail::bsdf::one_minus_cos(wi, r, c), shininess);
+        const T pw = detail::bsdf::lobe_power(detail::bsdf::one_minus_cos(wi, r, detail::max(c, T(0))), shininess);
+        return c > T(0) ? pw : T(0);
     }
 
 /// f(wo, wi) as above; 0 unless wo.z > 0 and wi.z > 0. Pre: wo, wi unit. Finite for finite m >= 0.
     PHONG_INLINE constexpr vec3 eval(const vec3& wo, const vec3& wi) const
     {
+        // the power first and branch-free, so that pdf(wo, wi) next to eval(wo, wi) reuses it
+        const T pw = specular_power(wo, wi);
         if (!(wo.z > T(0) && wi.z > T(0))) return vec3(T(0));
-        return kd * detail::bsdf::inv_pi<T> + ks * ((shininess + T(2)) * detail::bsdf::inv_two_pi<T> * specular_power(wo, wi));
+        return kd * detail::bsdf::inv_pi<T> + ks * ((shininess + T(2)) * detail::bsdf::inv_two_pi<T> * pw);
     }
     /// f(wo, wi) wi.z, the integrand of the rendering equation; 0 below the horizon.
     PHONG_INLINE constexpr vec3 eval_cos(const vec3& wo, const vec3& wi) const { return eval(wo, wi) * detail::max(wi.z, T(0)); }
@@ -297,9 +350,10 @@ struct modified_phong_bsdf {
 /// p = specular_probability; 0 unless wo.z > 0 and wi.z > 0.
     PHONG_INLINE constexpr T pdf(const vec3& wo, const vec3& wi) const
     {
+        const T pw = specular_power(wo, wi); // first, as in eval
         if (!(wo.z > T(0) && wi.z > T(0))) return T(0);
         const T p = specular_probability;
-        return (T(1) - p) * wi.z * detail::bsdf::inv_pi<T> + p * (shininess + T(1)) * detail::bsdf::inv_two_pi<T> * specular_power(wo, wi);
+        return (T(1) - p) * wi.z * detail::bsdf::inv_pi<T> + p * (shininess + T(1)) * detail::bsdf::inv_two_pi<T> * pw;
     }
 
 /// A direction wi from u in [0, 1]^2: u.x chooses the lobe (then, stretched, the azimuth), u.y the
@@ -416,7 +470,7 @@ struct blinn_phong_bsdf {
             const double hx = double(wo.x) + double(wi.x), hy = double(wo.y) + double(wi.y), hz = double(wo.z) + double(wi.z);
             const double len = detail::sqrt(hx * hx + hy * hy + hz * hz);
             const double c = len > 0.0 ? detail::min(hz / len, 1.0) : 1.0;
-            return {float(detail::power::pow_unit_at_most_one(c, double(shininess))), float(len)};
+            return {detail::bsdf::float_power(c, double(shininess)), float(len)};
         }
         const vec3 H = wo + wi;
         const T xy = H.x * H.x + H.y * H.y, len = detail::sqrt(xy + H.z * H.z);
