@@ -4,11 +4,15 @@
 //  * six lights: one directional light, four point lights with constant, linear and quadratic
 //    attenuation, one flashlight spot at the camera with a linear edge between an inner and an outer
 //    cone; per-light ambient; Phong specular with reflect() and no n.l gate; diffuse and specular
-//    texture maps; lighting in world space. The twin: PHONG_SPOT_LINEAR, lights of any kind, the
-//    flashlight first and PHONG_SPOT_LIGHTS 1 (the other lights' cones are not read); and the same
-//    with every light allowed a cone (the default), the point lights' spot uniforms left at 0.
+//    texture maps; lighting in world space. Ported to phong_shade as a user replacing the lighting
+//    would: the shader keeps the tutorial's uniforms and builds phong_shade's arguments (the
+//    phong_lights, the material, the environment) from them; PHONG_SPOT_LINEAR, lights of any
+//    kind. And the lights as the twin's uniform array (the world-space recipe's layout, every
+//    light in phong_light uniforms): the flashlight first with PHONG_SPOT_LIGHTS 1, and with
+//    every light allowed a cone (the default), the point lights' spot uniforms left at 0.
 //  * one light: the tutorial's basic specular shader (one point light, ambient 0.1, specular 0.5,
-//    shininess 32, an object colour), and the same through phong_shade.
+//    shininess 32, an object colour), and the same through phong_shade: with the tutorial's
+//    uniforms (a light colour, an object colour), and with phong_material / phong_light uniforms.
 // Each frame is a clear, one draw of a tessellated height field that covers the viewport, and
 // glFinish. The frames alternate between the programs in blocks (the order rotates each round),
 // timed in this thread's CPU time with llvmpipe shading on the calling thread (LP_NUM_THREADS=0,
@@ -152,7 +156,76 @@ void main()
 }
 )";
 
-// The same lighting through the twin: the maps give the material, the lights are phong_lights.
+// The tutorial's shader ported to phong_shade: its uniforms kept, phong_shade's arguments built from
+// them (the flashlight first, then the point lights, then the directional light).
+const char* const port_six_defines = R"(#define PHONG_SCENE_AMBIENT 0
+#define PHONG_LIGHT_AMBIENT 1
+#define PHONG_SPECULAR_GATE 0
+#define PHONG_ATTENUATION PHONG_ATTENUATION_POLYNOMIAL
+#define PHONG_SPOT PHONG_SPOT_LINEAR
+#define PHONG_VIEW PHONG_VIEW_EYE_POINT
+#define PHONG_MAX_LIGHTS 6
+)";
+const char* const port_six_body = R"(
+struct Material { sampler2D diffuse; sampler2D specular; float shininess; };
+struct DirLight { vec3 direction; vec3 ambient; vec3 diffuse; vec3 specular; };
+struct PointLight { vec3 position; float constant; float linear; float quadratic; vec3 ambient; vec3 diffuse; vec3 specular; };
+struct SpotLight {
+    vec3 position; vec3 direction; float cutOff; float outerCutOff;
+    float constant; float linear; float quadratic; vec3 ambient; vec3 diffuse; vec3 specular;
+};
+#define NR_POINT_LIGHTS 4
+in vec3 FragPos;
+in vec3 Normal;
+in vec2 TexCoords;
+out vec4 FragColor;
+uniform vec3 viewPos;
+uniform DirLight dirLight;
+uniform PointLight pointLights[NR_POINT_LIGHTS];
+uniform SpotLight spotLight;
+uniform Material material;
+void main()
+{
+    phong_light lights[6];
+    // The flashlight; its spot direction points away from the light, as the tutorial's.
+    lights[0].position = vec4(spotLight.position, 1.0);
+    lights[0].ambient = spotLight.ambient;
+    lights[0].diffuse = spotLight.diffuse;
+    lights[0].specular = spotLight.specular;
+    lights[0].attenuation = phong_falloff(spotLight.constant, spotLight.linear, spotLight.quadratic, 1e30);
+    lights[0].spot = phong_spot_cone(spotLight.direction, 0.0, -1.0, spotLight.cutOff, spotLight.outerCutOff);
+    for (int i = 0; i < NR_POINT_LIGHTS; ++i) { // no cone: a zero axis
+        lights[i + 1].position = vec4(pointLights[i].position, 1.0);
+        lights[i + 1].ambient = pointLights[i].ambient;
+        lights[i + 1].diffuse = pointLights[i].diffuse;
+        lights[i + 1].specular = pointLights[i].specular;
+        lights[i + 1].attenuation = phong_falloff(pointLights[i].constant, pointLights[i].linear, pointLights[i].quadratic, 1e30);
+        lights[i + 1].spot = phong_spot_cone(vec3(0.0), 0.0, -1.0, -1.0, -1.0);
+    }
+    // The directional light: xyz points toward the light (the tutorial's direction points away).
+    lights[5].position = vec4(-dirLight.direction, 0.0);
+    lights[5].ambient = dirLight.ambient;
+    lights[5].diffuse = dirLight.diffuse;
+    lights[5].specular = dirLight.specular;
+    lights[5].attenuation = phong_falloff(1.0, 0.0, 0.0, 1e30);
+    lights[5].spot = phong_spot_cone(vec3(0.0), 0.0, -1.0, -1.0, -1.0);
+    vec3 albedo = texture(material.diffuse, TexCoords).rgb;
+    phong_material mat;
+    mat.ka = albedo;
+    mat.kd = albedo;
+    mat.ks = texture(material.specular, TexCoords).rgb;
+    mat.emission = vec3(0.0);
+    mat.shininess = material.shininess;
+    mat.alpha = 1.0;
+    phong_environment env;
+    env.ambient = vec3(0.0);
+    env.eye = vec4(viewPos, 1.0);
+    FragColor = vec4(phong_shade(FragPos, Normal, vec3(0.0), mat, lights, 6, env, true), 1.0);
+}
+)";
+
+// The same lighting with the lights as the twin's uniform array (the world-space recipe's layout):
+// the maps give the material, the lights are phong_light uniforms.
 const char* const twin_six_defines = R"(#define PHONG_SCENE_AMBIENT 0
 #define PHONG_LIGHT_AMBIENT 1
 #define PHONG_SPECULAR_GATE 0
@@ -225,6 +298,41 @@ void main()
 }
 )";
 
+// The basic shader ported to phong_shade: its uniforms kept, (0.1 L + diff L + 0.5 spec L) object
+// as ka = kd = object with La = 0.1 L and Ld = L, ks = 0.5 object with Ls = L.
+const char* const port_one_body = R"(
+in vec3 FragPos;
+in vec3 Normal;
+in vec2 TexCoords;
+out vec4 FragColor;
+uniform vec3 lightPos;
+uniform vec3 viewPos;
+uniform vec3 lightColor;
+uniform vec3 objectColor;
+void main()
+{
+    phong_material material;
+    material.ka = objectColor;
+    material.kd = objectColor;
+    material.ks = 0.5 * objectColor;
+    material.emission = vec3(0.0);
+    material.shininess = 32.0;
+    material.alpha = 1.0;
+    phong_light lights[1];
+    lights[0].position = vec4(lightPos, 1.0);
+    lights[0].ambient = 0.1 * lightColor;
+    lights[0].diffuse = lightColor;
+    lights[0].specular = lightColor;
+    lights[0].attenuation = phong_falloff(1.0, 0.0, 0.0, 1e30);
+    lights[0].spot = phong_spot_cone(vec3(0.0), 0.0, -1.0, -1.0, -1.0);
+    phong_environment environment;
+    environment.ambient = vec3(0.0);
+    environment.eye = vec4(viewPos, 1.0);
+    FragColor = vec4(phong_shade(FragPos, Normal, vec3(0.0), material, lights, 1, environment, true), 1.0);
+}
+)";
+
+// The same with the material and the light as phong_material / phong_light uniforms.
 const char* const twin_one_defines = R"(#define PHONG_SCENE_AMBIENT 0
 #define PHONG_LIGHT_AMBIENT 1
 #define PHONG_SPECULAR_GATE 0
@@ -436,9 +544,11 @@ int main(int argc, char** argv)
         std::printf("%s: %s (EGL %s), LP_NUM_THREADS=%s, %dx%d\n", c.renderer().c_str(), c.version().c_str(), c.platform().c_str(),
                     std::getenv("LP_NUM_THREADS"), width, height);
         const std::string twin = phong::glsl::source();
-        frame_program hand6(c, hand_six), twin6(c, phong::glsl::shader("#version 330 core", twin_six_defines, twin, twin_body));
+        frame_program hand6(c, hand_six), port6(c, phong::glsl::shader("#version 330 core", port_six_defines, twin, port_six_body));
+        frame_program twin6(c, phong::glsl::shader("#version 330 core", twin_six_defines, twin, twin_body));
         frame_program twin6all(c, phong::glsl::shader("#version 330 core", twin_six_all_cones_defines, twin, twin_body));
-        frame_program hand1(c, hand_one), twin1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, twin_one_body));
+        frame_program hand1(c, hand_one), port1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, port_one_body));
+        frame_program twin1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, twin_one_body));
         // The target: 800x600 RGBA8, no depth (the height field does not overlap itself from this camera).
         GLuint fbo = 0, rb = 0;
         gl.glGenFramebuffers(1, &fbo);
@@ -479,9 +589,11 @@ int main(int argc, char** argv)
         gl.glBindTexture(GL_TEXTURE_2D, diffuse_map);
         const scene_lights s;
         set_hand_six(c, hand6.program, s);
+        set_hand_six(c, port6.program, s); // the ports keep the tutorial's uniforms
         set_twin_six(c, twin6.program, s);
         set_twin_six(c, twin6all.program, s);
         set_hand_one(c, hand1.program, s);
+        set_hand_one(c, port1.program, s);
         set_twin_one(c, twin1.program, s);
         const auto frame = [&](const glt::feedback_program& p) {
             gl.glUseProgram(p.id());
@@ -538,11 +650,16 @@ int main(int argc, char** argv)
             return cmp;
         };
         const char* only = std::getenv("PHONG_BENCH_ONLY"); // "six" or "one": that case alone
-        if (!only || std::string(only) == "six")
-            report("six lights (directional, 4 point, linear-edge spot; texture maps)", hand6.program, twin6.program);
-        if (!only || std::string(only) == "six")
-            report("six lights, every light allowed a cone (PHONG_SPOT_LIGHTS = PHONG_MAX_LIGHTS)", hand6.program, twin6all.program);
-        if (!only || std::string(only) == "one") report("one light (basic specular)", hand1.program, twin1.program);
+        if (!only || std::string(only) == "six") {
+            report("six lights (directional, 4 point, linear-edge spot; texture maps), the tutorial's uniforms", hand6.program, port6.program);
+            report("six lights, phong_light uniforms, PHONG_SPOT_LIGHTS 1", hand6.program, twin6.program);
+            report("six lights, phong_light uniforms, every light allowed a cone (PHONG_SPOT_LIGHTS = PHONG_MAX_LIGHTS)", hand6.program,
+                   twin6all.program);
+        }
+        if (!only || std::string(only) == "one") {
+            report("one light (basic specular), the tutorial's uniforms", hand1.program, port1.program);
+            report("one light, phong_material / phong_light uniforms", hand1.program, twin1.program);
+        }
         gl.glBindVertexArray(0);
         gl.glDeleteVertexArrays(1, &vao);
         gl.glDeleteBuffers(1, &vbo);

@@ -327,12 +327,14 @@ vec3 phong_normalize(vec3 v)
 }
 
 /// phong::pow_unit: x^m for a base x in [0, 1] and m >= 0, with pow(0, 0) = 1 and 0^m = 0 for
-/// m > 0 (GLSL's pow is undefined at x = 0, m <= 0). Accuracy: the driver's pow.
+/// m > 0 (GLSL's pow is undefined at x = 0, m <= 0). A base below 0 is taken as 0, above 1 as 1.
+/// Accuracy: the driver's pow.
 float phong_pow_unit(float x, float m)
 {
-    // Selects, not branches: pow's value where x = 0 (undefined in GLSL) is never used.
+    // Selects, not branches: pow's value where x <= 0 (undefined in GLSL) is never used. For x > 0,
+    // pow(x, 0) = 1 already: m is tested only where x <= 0.
     float p = pow(min(x, 1.0), m);
-    return m == 0.0 ? 1.0 : (x > 0.0 ? p : 0.0);
+    return x > 0.0 ? p : (m == 0.0 ? 1.0 : 0.0);
 }
 
 /// phong::toward: the unit vector from the point q toward the homogeneous point P,
@@ -409,10 +411,11 @@ float phong_spot_linear(vec3 l, vec3 s, float cos_inner, float cos_outer)
 }
 
 /// detail::cosine_power: the specular power of c = x * scale, min(max(c, 0), 1)^m with
-/// pow(0, 0) = 1 (x: the cosine times a positive length, so of c's sign).
+/// pow(0, 0) = 1 (x: the cosine times a length scale >= 0, so c is of x's sign or 0; pow_unit
+/// takes c <= 0 as 0 and c > 1 as 1).
 float phong_cosine_power(float x, float scale, float m)
 {
-    return phong_pow_unit(x > 0.0 ? min(x * scale, 1.0) : 0.0, m);
+    return phong_pow_unit(x * scale, m);
 }
 
 /// phong::specular_reflection (Phong, classic Phong and 003):
