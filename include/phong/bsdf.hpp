@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/config.hpp"
+#include "core/ieee.hpp"
 #include "inputs/material.hpp"
 #include "core/math.hpp"
 #include "inputs/validate.hpp"
@@ -172,7 +173,10 @@ PHONG_INLINE constexpr glm::vec<2, T> cos_sin_turns(T u)
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T one_minus_cos(const glm::vec<3, T, Q>& a, const glm::vec<3, T, Q>& b, T cos_ab)
 {
-    const glm::vec<3, T, Q> x = detail::cross(a - b, b);
+    // a - b kept as computed (opaque): -ffast-math would otherwise expand (a - b) x b to a x b, whose
+    // components cancel where a ~ b.
+    const glm::vec<3, T, Q> d{ieee::opaque(a.x - b.x), ieee::opaque(a.y - b.y), ieee::opaque(a.z - b.z)};
+    const glm::vec<3, T, Q> x = detail::cross(d, b);
     return detail::dot(x, x) / (T(1) + cos_ab);
 }
 
@@ -181,7 +185,7 @@ PHONG_INLINE constexpr T one_minus_cos(const glm::vec<3, T, Q>& a, const glm::ve
 template <class W>
 PHONG_INLINE constexpr W log1p_minus(W x)
 {
-    const W y = W(1) - x;
+    const W y = ieee::opaque(W(1) - x); // opaque: -ffast-math would fold (y - 1) + x to 0
     if (y == W(1)) return -x;
     return detail::log(y) - ((y - W(1)) + x) / y;
 }
@@ -226,7 +230,8 @@ PHONG_INLINE constexpr T lobe_power(T x, T m)
             // (truncation under s^12 / 13 < 2^-62 relative). Both are evaluated (no branch); one is kept.
             const double s = xc / (2.0 - xc), s2 = s * s;
             const double near = -2.0 * inv_ln2 * s * (1.0 + s2 * (1.0 / 3 + s2 * (1.0 / 5 + s2 * (1.0 / 7 + s2 * (1.0 / 9 + s2 * (1.0 / 11))))));
-            const double far = power::log2_normal(y) - ((y - 1.0) + xc) / y * inv_ln2;
+            const double yo = ieee::opaque(y); // -ffast-math would fold (y - 1) + x to 0
+            const double far = power::log2_normal(yo) - ((yo - 1.0) + xc) / yo * inv_ln2;
             const double v = m * (xc < 0x1p-4 ? near : far);
             const double p = power::exp2_tabulated(detail::max(v, least));
             return v >= least ? p : 0.0;
