@@ -277,7 +277,11 @@ TEST_CASE_TEMPLATE("bsdf: reciprocity f(wo, wi) = f(wi, wo)", T, float, double)
             CHECK(rel(fa, fb) <= 64 * double(std::numeric_limits<T>::epsilon()) * (1 + double(m) * 4e-3) + 1e-300);
             for (const auto kind : {blinn_normalization::exact, blinn_normalization::approximate, blinn_normalization::three_js}) {
                 const phong::blinn_phong_bsdf<T> bl(mat, kind);
+#if defined(__FAST_MATH__) // CI step 36: -ffast-math may round the two calls' sums differently
+                CHECK(rel(double(bl.eval(a, b).x), double(bl.eval(b, a).x)) <= 4 * double(std::numeric_limits<T>::epsilon()));
+#else
                 CHECK(bl.eval(a, b).x == bl.eval(b, a).x); // h = (wo + wi) / |wo + wi|: the same bits
+#endif
             }
         }
     }

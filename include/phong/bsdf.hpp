@@ -434,7 +434,9 @@ PHONG_INLINE constexpr T blinn_phong_normalization(T m, blinn_normalization kind
     constexpr T inv_8pi = detail::bsdf::inv_pi<T> / T(8);
     if (kind == blinn_normalization::approximate) return (m + T(8)) * inv_8pi;
     if (kind == blinn_normalization::three_js) return (m + T(2)) * inv_8pi;
-    return (m + T(2)) * inv_8pi * ((m + T(4)) / (detail::exp(-m / T(2) * detail::bsdf::ln2<T>) + m));
+    // The ratio first and opaque: -ffast-math would reorder to (m+2)(m+4), which overflows float.
+    const T ratio = detail::ieee::opaque((m + T(4)) / (detail::exp(-m / T(2) * detail::bsdf::ln2<T>) + m));
+    return (m + T(2)) * inv_8pi * ratio;
 }
 
 /// The normalized Blinn-Phong BSDF with a Lambertian lobe:
@@ -520,7 +522,9 @@ struct blinn_phong_bsdf {
             const glm::vec<2, T> cs = detail::bsdf::cos_sin_turns(u0);
             const vec3 h{cone.sin * cs.x, cone.sin * cs.y, cone.cos};
             const T oh = detail::dot(wo, h);
-            out.wi = h * (T(2) * oh) - wo;
+            const vec3 wi = h * (T(2) * oh) - wo;
+            // opaque: -ffast-math would fold wo + wi below to 2 (wo.h) h, not pdf()'s sum of the rounded wi
+            out.wi = vec3(detail::ieee::opaque(wi.x), detail::ieee::opaque(wi.y), detail::ieee::opaque(wi.z));
             if (!(oh > T(0) && out.wi.z > T(0))) return out;
         } else {
             out.wi = detail::bsdf::sample_cosine<T, Q>(u0, u.y);
