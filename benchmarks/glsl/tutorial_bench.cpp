@@ -81,9 +81,9 @@ void main()
 }
 )";
 
-// The tutorial's shape, written by hand: a function per light kind, each sampling the maps.
-const char* const hand_six = R"(#version 330 core
-out vec4 FragColor;
+// The tutorial's six-light interface: its structs, inputs and uniforms, which the hand-written
+// shader and its port both read.
+const std::string tutorial_six_interface = R"(
 struct Material { sampler2D diffuse; sampler2D specular; float shininess; };
 struct DirLight { vec3 direction; vec3 ambient; vec3 diffuse; vec3 specular; };
 struct PointLight { vec3 position; float constant; float linear; float quadratic; vec3 ambient; vec3 diffuse; vec3 specular; };
@@ -95,12 +95,16 @@ struct SpotLight {
 in vec3 FragPos;
 in vec3 Normal;
 in vec2 TexCoords;
+out vec4 FragColor;
 uniform vec3 viewPos;
 uniform DirLight dirLight;
 uniform PointLight pointLights[NR_POINT_LIGHTS];
 uniform SpotLight spotLight;
 uniform Material material;
+)";
 
+// The tutorial's shape, written by hand: a function per light kind, each sampling the maps.
+const std::string hand_six = "#version 330 core\n" + tutorial_six_interface + R"(
 vec3 CalcDirLight(DirLight light, vec3 normal, vec3 viewDir)
 {
     vec3 lightDir = normalize(-light.direction);
@@ -158,7 +162,9 @@ void main()
 
 // The tutorial's shader ported to phong_shade: its uniforms kept, phong_shade's arguments built from
 // them (the flashlight first, then the point lights, then the directional light).
-const char* const port_six_defines = R"(#define PHONG_SCENE_AMBIENT 0
+// The world-space recipe's defines for six lights, every light allowed a cone (PHONG_SPOT_LIGHTS at
+// its default, 6).
+const std::string six_defines = R"(#define PHONG_SCENE_AMBIENT 0
 #define PHONG_LIGHT_AMBIENT 1
 #define PHONG_SPECULAR_GATE 0
 #define PHONG_ATTENUATION PHONG_ATTENUATION_POLYNOMIAL
@@ -166,24 +172,7 @@ const char* const port_six_defines = R"(#define PHONG_SCENE_AMBIENT 0
 #define PHONG_VIEW PHONG_VIEW_EYE_POINT
 #define PHONG_MAX_LIGHTS 6
 )";
-const char* const port_six_body = R"(
-struct Material { sampler2D diffuse; sampler2D specular; float shininess; };
-struct DirLight { vec3 direction; vec3 ambient; vec3 diffuse; vec3 specular; };
-struct PointLight { vec3 position; float constant; float linear; float quadratic; vec3 ambient; vec3 diffuse; vec3 specular; };
-struct SpotLight {
-    vec3 position; vec3 direction; float cutOff; float outerCutOff;
-    float constant; float linear; float quadratic; vec3 ambient; vec3 diffuse; vec3 specular;
-};
-#define NR_POINT_LIGHTS 4
-in vec3 FragPos;
-in vec3 Normal;
-in vec2 TexCoords;
-out vec4 FragColor;
-uniform vec3 viewPos;
-uniform DirLight dirLight;
-uniform PointLight pointLights[NR_POINT_LIGHTS];
-uniform SpotLight spotLight;
-uniform Material material;
+const std::string port_six_body = tutorial_six_interface + R"(
 void main()
 {
     phong_light lights[6];
@@ -226,25 +215,9 @@ void main()
 
 // The same lighting with the lights as the twin's uniform array (the world-space recipe's layout):
 // the maps give the material, the lights are phong_light uniforms.
-const char* const twin_six_defines = R"(#define PHONG_SCENE_AMBIENT 0
-#define PHONG_LIGHT_AMBIENT 1
-#define PHONG_SPECULAR_GATE 0
-#define PHONG_ATTENUATION PHONG_ATTENUATION_POLYNOMIAL
-#define PHONG_SPOT PHONG_SPOT_LINEAR
-#define PHONG_VIEW PHONG_VIEW_EYE_POINT
-#define PHONG_MAX_LIGHTS 6
-#define PHONG_SPOT_LIGHTS 1
-)";
-// The same with every light allowed a cone (PHONG_SPOT_LIGHTS left at its default, 6): the five
-// without one have their spot uniforms at 0.
-const char* const twin_six_all_cones_defines = R"(#define PHONG_SCENE_AMBIENT 0
-#define PHONG_LIGHT_AMBIENT 1
-#define PHONG_SPECULAR_GATE 0
-#define PHONG_ATTENUATION PHONG_ATTENUATION_POLYNOMIAL
-#define PHONG_SPOT PHONG_SPOT_LINEAR
-#define PHONG_VIEW PHONG_VIEW_EYE_POINT
-#define PHONG_MAX_LIGHTS 6
-)";
+// The cone on the first light only; six_defines alone: every light allowed a cone, the five
+// without one having their spot uniforms at 0.
+const std::string twin_six_defines = six_defines + "#define PHONG_SPOT_LIGHTS 1\n";
 const char* const twin_body = R"(
 in vec3 FragPos;
 in vec3 Normal;
@@ -544,9 +517,9 @@ int main(int argc, char** argv)
         std::printf("%s: %s (EGL %s), LP_NUM_THREADS=%s, %dx%d\n", c.renderer().c_str(), c.version().c_str(), c.platform().c_str(),
                     std::getenv("LP_NUM_THREADS"), width, height);
         const std::string twin = phong::glsl::source();
-        frame_program hand6(c, hand_six), port6(c, phong::glsl::shader("#version 330 core", port_six_defines, twin, port_six_body));
+        frame_program hand6(c, hand_six), port6(c, phong::glsl::shader("#version 330 core", six_defines, twin, port_six_body));
         frame_program twin6(c, phong::glsl::shader("#version 330 core", twin_six_defines, twin, twin_body));
-        frame_program twin6all(c, phong::glsl::shader("#version 330 core", twin_six_all_cones_defines, twin, twin_body));
+        frame_program twin6all(c, phong::glsl::shader("#version 330 core", six_defines, twin, twin_body));
         frame_program hand1(c, hand_one), port1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, port_one_body));
         frame_program twin1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, twin_one_body));
         // The target: 800x600 RGBA8, no depth (the height field does not overlap itself from this camera).
