@@ -209,36 +209,32 @@ PHONG_INLINE constexpr float float_power(double c, double m, double g = 0.0)
 }
 
 /// cos^m a = exp(m log1p(-x)) for x = 1 - cos a in [0, 1), x clamped below 1 (m = 0 gives 1, not
-/// 0 * -inf); m >= 0 finite. Relative error about (1 + m x) ulps beyond x's. float: (1 - x)^m in
-/// double (float_power). double: branch-free, 2^(m log2(1 - x)) by pow_unit's exp2 table; log2(1 - x)
-/// by the atanh series for x < 2^-4, else by the log2 table with y = 1 - x rounded and its rounding
-/// corrected to first order, log2 y - ((y - 1) + x) / (y ln 2); results below the power floor 2^-996 are 0.
+/// 0 * -inf); m >= 0 finite; the double lobes' power (float's: float_power). Relative error about
+/// (1 + m x) ulps beyond x's. double: branch-free, 2^(m log2(1 - x)) by pow_unit's exp2 table;
+/// log2(1 - x) by the atanh series for x < 2^-4, else by the log2 table with y = 1 - x rounded and its
+/// rounding corrected to first order, log2 y - ((y - 1) + x) / (y ln 2); results below the power floor
+/// 2^-996 are 0.
 template <class T>
 PHONG_INLINE constexpr T lobe_power(T x, T m)
 {
     constexpr T below_one = T(1) - std::numeric_limits<T>::epsilon() / 2;
-    if constexpr (std::is_same_v<T, float>) {
-        // c = 1 - x in double: m 2^-53 / c relative, below a float ulp for m < 2^29 c.
-        return float_power(1.0 - double(detail::min(x, below_one)), double(m));
-    } else {
 #if !defined(__CUDA_ARCH__) // device code: the exp and log1p below (power.hpp's tables are host code)
-        if constexpr (std::is_same_v<T, double>) {
-            constexpr double least = double(ieee::power_floor_log2<double>), inv_ln2 = 1 / ln2<double>;
-            const double xc = detail::clamp(x, 0.0, below_one), y = 1.0 - xc; // y >= 2^-53: normal
-            // Near 1 (x < 2^-4), where the table's log2 has an absolute error of 2^-53 (large relative to
-            // log2 y ~ -1.44 x): ln(1 - x) = -2 atanh(s), s = x / (2 - x) < 2^-4.9, its series to s^11
-            // (truncation under s^12 / 13 < 2^-62 relative). Both are evaluated (no branch); one is kept.
-            const double s = xc / (2.0 - xc), s2 = s * s;
-            const double near = -2.0 * inv_ln2 * s * (1.0 + s2 * (1.0 / 3 + s2 * (1.0 / 5 + s2 * (1.0 / 7 + s2 * (1.0 / 9 + s2 * (1.0 / 11))))));
-            const double yo = ieee::opaque(y); // -ffast-math would fold (y - 1) + x to 0
-            const double far = power::log2_normal(yo) - ((yo - 1.0) + xc) / yo * inv_ln2;
-            const double v = m * (xc < 0x1p-4 ? near : far);
-            const double p = power::exp2_tabulated(detail::max(v, least));
-            return v >= least ? p : 0.0;
-        }
-#endif
-        return detail::exp(m * log1p_minus(detail::min(x, below_one)));
+    if constexpr (std::is_same_v<T, double>) {
+        constexpr double least = double(ieee::power_floor_log2<double>), inv_ln2 = 1 / ln2<double>;
+        const double xc = detail::clamp(x, 0.0, below_one), y = 1.0 - xc; // y >= 2^-53: normal
+        // Near 1 (x < 2^-4), where the table's log2 has an absolute error of 2^-53 (large relative to
+        // log2 y ~ -1.44 x): ln(1 - x) = -2 atanh(s), s = x / (2 - x) < 2^-4.9, its series to s^11
+        // (truncation under s^12 / 13 < 2^-62 relative). Both are evaluated (no branch); one is kept.
+        const double s = xc / (2.0 - xc), s2 = s * s;
+        const double near = -2.0 * inv_ln2 * s * (1.0 + s2 * (1.0 / 3 + s2 * (1.0 / 5 + s2 * (1.0 / 7 + s2 * (1.0 / 9 + s2 * (1.0 / 11))))));
+        const double yo = ieee::opaque(y); // -ffast-math would fold (y - 1) + x to 0
+        const double far = power::log2_normal(yo) - ((yo - 1.0) + xc) / yo * inv_ln2;
+        const double v = m * (xc < 0x1p-4 ? near : far);
+        const double p = power::exp2_tabulated(detail::max(v, least));
+        return v >= least ? p : 0.0;
     }
+#endif
+    return detail::exp(m * log1p_minus(detail::min(x, below_one)));
 }
 
 /// Choose the lobe with u0 and stretch u0 back onto [0, 1) for the lobe's own use.
@@ -332,12 +328,12 @@ struct modified_phong_bsdf {
             const double ec = detail::clamp(e, -0x1p-20, 0x1p-20);
             constexpr double k = 1 / (4 * detail::bsdf::ln2<double>); // log2(1 / sqrt(1 + e)) = -2k (e - e^2 / 2 + ...)
             return detail::bsdf::float_power(c, double(shininess), ec * (-2 * k + ec * k));
+        } else { // double: branch-free as well (a c <= 0 only selects 0 at the end)
+            const vec3 r{-wo.x, -wo.y, wo.z};
+            const T c = detail::dot(wi, r);
+            const T pw = detail::bsdf::lobe_power(detail::bsdf::one_minus_cos(wi, r, detail::max(c, T(0))), shininess);
+            return c > T(0) ? pw : T(0);
         }
-        // double: branch-free as well (a c <= 0 only selects 0 at the end).
-        const vec3 r{-wo.x, -wo.y, wo.z};
-        const T c = detail::dot(wi, r);
-        const T pw = detail::bsdf::lobe_power(detail::bsdf::one_minus_cos(wi, r, detail::max(c, T(0))), shininess);
-        return c > T(0) ? pw : T(0);
     }
 
 /// f(wo, wi) as above; 0 unless wo.z > 0 and wi.z > 0. Pre: wo, wi unit. Finite for finite m >= 0.
@@ -473,15 +469,16 @@ struct blinn_phong_bsdf {
     PHONG_INLINE constexpr glm::vec<2, T> half_power(const vec3& wo, const vec3& wi) const
     {
         if constexpr (std::is_same_v<T, float>) {
-            // float: H and n.h = H.z / |H| in double (H exact), then pow_unit's double kernel.
+            // float: H and n.h = H.z / |H| in double (H exact), then float_power.
             const double hx = double(wo.x) + double(wi.x), hy = double(wo.y) + double(wi.y), hz = double(wo.z) + double(wi.z);
             const double len = detail::sqrt(hx * hx + hy * hy + hz * hz);
             const double c = len > 0.0 ? detail::min(hz / len, 1.0) : 1.0;
             return {detail::bsdf::float_power(c, double(shininess)), float(len)};
+        } else {
+            const vec3 H = wo + wi;
+            const T xy = H.x * H.x + H.y * H.y, len = detail::sqrt(xy + H.z * H.z);
+            return {detail::bsdf::lobe_power(xy > T(0) ? xy / (len * (len + H.z)) : T(0), shininess), len};
         }
-        const vec3 H = wo + wi;
-        const T xy = H.x * H.x + H.y * H.y, len = detail::sqrt(xy + H.z * H.z);
-        return {detail::bsdf::lobe_power(xy > T(0) ? xy / (len * (len + H.z)) : T(0), shininess), len};
     }
     /// The specular lobe's density (m+1)/(2 pi) (n.h)^m / (4 wo.h), 4 wo.h = 2 |H|; it diverges as
     /// wo.h -> 0 (wo and wi opposite, both on the horizon): clamped to the largest finite T.
