@@ -3,7 +3,8 @@
 # presets, the three modes, arrays, spans, masked lists, a light_traits adaptor) compiled with
 # g++ and clang++ at -O2 and at -O3 -march=native, debug (assertions on) and NDEBUG; the object file
 # must define no function of namespace phong (every one inlined into the extern "C" loops) other
-# than the precondition handler's (called only when a debug check fails); and the same loop written
+# than the precondition handler's (called only when a debug check fails) and, without NDEBUG, the
+# debug checks' bodies (validate() of the parameters and lights, out of line by design); and the same loop written
 # with a renderer's own vector type through phong::vec3_of has as many instructions as with
 # glm::vec3 (within 10 %). Compile only.
 # Usage: tests/inlining/check.sh [compiler...]   (default: g++ clang++)
@@ -13,8 +14,11 @@ compilers=("$@")
 ((${#compilers[@]})) || compilers=(g++ clang++)
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-# the entry points that may stay out of line: the precondition machinery of detail/config.hpp
-allowed='^phong::(set_precondition_handler|get_precondition_handler|detail::default_precondition_handler|detail::precondition_failed|detail::load_handler|detail::exchange_handler)\('
+# the entry points that may stay out of line: the precondition machinery of core/config.hpp, and
+# the debug-build checks' bodies (validate() of the parameters and of each light, out of line by
+# design: PHONG_DETAIL_OUT_OF_LINE; never under NDEBUG)
+allowed='^phong::(set_precondition_handler|get_precondition_handler|detail::default_precondition_handler|detail::precondition_failed|detail::load_handler|detail::exchange_handler)\(|^void phong::detail::validate_(parameters|light)_or_fail<'
+ndebug_allowed='^phong::(set_precondition_handler|get_precondition_handler|detail::default_precondition_handler|detail::precondition_failed|detail::load_handler|detail::exchange_handler)\('
 status=0
 for cxx in "${compilers[@]}"; do
   for opt in "-O2" "-O3 -march=native"; do
@@ -26,7 +30,7 @@ for cxx in "${compilers[@]}"; do
       # members _ZNK5phong..., lambdas and locals inside phong functions _ZZN5phong...; a user's
       # function with phong types in its signature or template arguments does not count
       left=$(nm --defined-only "$obj" | awk '$2 ~ /^[TtWw]$/ && $3 ~ /^_ZZ?NK?5phong/ { print $3 }' | c++filt |
-             grep -Ev "$allowed" || true)
+             grep -Ev "$([[ -n $ndebug ]] && echo "$ndebug_allowed" || echo "$allowed")" || true)
       label="$cxx $opt${ndebug:+ $ndebug}"
       # a renderer's own vector type through phong::vec3_of adds no conversion: the fragment written
       # with it has as many instructions as with glm::vec3, within 10 % (clang++ loads the
@@ -44,7 +48,8 @@ for cxx in "${compilers[@]}"; do
         sed 's/^/  /' <<<"$left"
         status=1
       else
-        echo "inlining: $label: no phong function out of line; fragment through vec3_of $own_n instructions, with glm::vec3 $glm_n"
+        but=" but the debug checks' bodies"; [[ -n $ndebug ]] && but=
+        echo "inlining: $label: no phong function out of line$but; fragment through vec3_of $own_n instructions, with glm::vec3 $glm_n"
       fi
     done
   done

@@ -47,6 +47,20 @@
 #  endif
 #endif
 
+/// PHONG_DETAIL_OUT_OF_LINE marks the run-time body of a debug-build check (validate() of the
+/// material, the environment, each light): one out-of-line copy per type instead of a copy at every
+/// call, in builds without NDEBUG (the checks' messages and branches were most of an inlined
+/// shade<F>'s code there). Constant evaluation runs it as any constexpr function.
+#if defined(__CUDACC__)
+#  define PHONG_DETAIL_OUT_OF_LINE PHONG_HD inline
+#elif defined(_MSC_VER) && !defined(__clang__)
+#  define PHONG_DETAIL_OUT_OF_LINE inline __declspec(noinline)
+#elif defined(__GNUC__) || defined(__clang__)
+#  define PHONG_DETAIL_OUT_OF_LINE inline __attribute__((noinline))
+#else
+#  define PHONG_DETAIL_OUT_OF_LINE inline
+#endif
+
 /// PHONG_DETAIL_LAMBDA_INLINE: PHONG_INLINE's decision for a lambda (after its parameter list).
 #if !defined(PHONG_NO_FORCE_INLINE) && !defined(PHONG_DETAIL_ASAN) && !defined(__CUDACC__) && (defined(__GNUC__) || defined(__clang__)) && \
     defined(__OPTIMIZE__)

@@ -44,15 +44,21 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const frame_t<F, T, Q>& 
 template <class R> struct is_std_array : std::false_type {};
 template <class X, std::size_t N> struct is_std_array<std::array<X, N>> : std::true_type {};
 
+/// check_light's body, out of line (PHONG_DETAIL_OUT_OF_LINE).
+template <class Light>
+PHONG_DETAIL_OUT_OF_LINE constexpr void validate_light_or_fail(const Light& L)
+{
+    const validation v = phong::validate(phong::to_light(L));
+    require(static_cast<bool>(v), v.message());
+}
+
 /// Checks one light against validate() as it is shaded, as the light<U> it stands for: a compile
 /// error in constant evaluation, an assertion in debug builds, nothing under NDEBUG.
 template <class Light>
 PHONG_INLINE constexpr void check_light([[maybe_unused]] const Light& L)
 {
     if constexpr (std::is_floating_point_v<light_scalar_t<Light>>) {
-        if (!value_checks_on()) return;
-        const validation v = phong::validate(phong::to_light(L));
-        require(static_cast<bool>(v), v.message());
+        if (value_checks_on()) validate_light_or_fail(L);
     }
 }
 

@@ -23,17 +23,23 @@ namespace phong {
 
 namespace detail {
 
+/// check_parameters' body, out of line (PHONG_DETAIL_OUT_OF_LINE).
+template <class T, glm::qualifier Q>
+PHONG_DETAIL_OUT_OF_LINE constexpr void validate_parameters_or_fail(const material<T, Q>& mat, const environment<T, Q>& env)
+{
+    const validation vm = phong::validate(mat);
+    require(static_cast<bool>(vm), vm.message());
+    const validation ve = phong::validate(env);
+    require(static_cast<bool>(ve), ve.message());
+}
+
 /// validate(material) and validate(environment): a compile error in constant evaluation, an
 /// assertion in debug builds, nothing under NDEBUG (not even evaluated).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr void check_parameters([[maybe_unused]] const material<T, Q>& mat, [[maybe_unused]] const environment<T, Q>& env)
 {
     if constexpr (std::is_floating_point_v<T>) {
-        if (!value_checks_on()) return;
-        const validation vm = phong::validate(mat);
-        require(static_cast<bool>(vm), vm.message());
-        const validation ve = phong::validate(env);
-        require(static_cast<bool>(ve), ve.message());
+        if (value_checks_on()) validate_parameters_or_fail(mat, env);
     }
 }
 
