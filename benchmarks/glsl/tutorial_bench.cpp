@@ -12,7 +12,9 @@
 //    every light allowed a cone (the default), the point lights' spot uniforms left at 0.
 //  * one light: the tutorial's basic specular shader (one point light, ambient 0.1, specular 0.5,
 //    shininess 32, an object colour), and the same through phong_shade: with the tutorial's
-//    uniforms (a light colour, an object colour), and with phong_material / phong_light uniforms.
+//    uniforms (a light colour, an object colour), and with phong_material / phong_light uniforms,
+//    against the tutorial's Materials-chapter shader (the same lighting from the same uniforms: a
+//    colour per term in the material and the light) and against the basic one.
 // Each frame is a clear, one draw of a tessellated height field that covers the viewport, and
 // glFinish. The frames alternate between the programs in blocks (the order rotates each round),
 // timed in this thread's CPU time with llvmpipe shading on the calling thread (LP_NUM_THREADS=0,
@@ -327,6 +329,36 @@ void main()
 }
 )";
 
+// The tutorial's Materials chapter by hand: the basic shader's lighting with a colour per term in
+// the material and in the light (ambient, diffuse, specular) and the shininess as uniforms, the
+// uniforms the twin's phong_material / phong_light rows read; named as the twin's (ka, kd, ks;
+// a vec4 position and eye) so that one setter serves both.
+const char* const hand_one_materials = R"(#version 330 core
+struct Material { vec3 ka; vec3 kd; vec3 ks; float shininess; };
+struct Light { vec4 position; vec3 ambient; vec3 diffuse; vec3 specular; };
+struct Environment { vec4 eye; };
+out vec4 FragColor;
+in vec3 Normal;
+in vec3 FragPos;
+in vec2 TexCoords;
+uniform Material material;
+uniform Light lights[1];
+uniform Environment environment;
+void main()
+{
+    vec3 ambient = lights[0].ambient * material.ka;
+    vec3 norm = normalize(Normal);
+    vec3 lightDir = normalize(lights[0].position.xyz - FragPos);
+    float diff = max(dot(norm, lightDir), 0.0);
+    vec3 diffuse = lights[0].diffuse * (diff * material.kd);
+    vec3 viewDir = normalize(environment.eye.xyz - FragPos);
+    vec3 reflectDir = reflect(-lightDir, norm);
+    float spec = pow(max(dot(viewDir, reflectDir), 0.0), material.shininess);
+    vec3 specular = lights[0].specular * (spec * material.ks);
+    FragColor = vec4(ambient + diffuse + specular, 1.0);
+}
+)";
+
 /// A height field z = 0.15 sin(3x) cos(2y) over [-2, 2] x [-1.5, 1.5], n x n quads, as triangles:
 /// position, normal, texture coordinate (two repeats of the maps).
 std::vector<float> height_field(int n)
@@ -521,7 +553,7 @@ int main(int argc, char** argv)
         frame_program twin6(c, phong::glsl::shader("#version 330 core", twin_six_defines, twin, twin_body));
         frame_program twin6all(c, phong::glsl::shader("#version 330 core", six_defines, twin, twin_body));
         frame_program hand1(c, hand_one), port1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, port_one_body));
-        frame_program twin1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, twin_one_body));
+        frame_program hand1m(c, hand_one_materials), twin1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, twin_one_body));
         // The target: 800x600 RGBA8, no depth (the height field does not overlap itself from this camera).
         GLuint fbo = 0, rb = 0;
         gl.glGenFramebuffers(1, &fbo);
@@ -567,6 +599,7 @@ int main(int argc, char** argv)
         set_twin_six(c, twin6all.program, s);
         set_hand_one(c, hand1.program, s);
         set_hand_one(c, port1.program, s);
+        set_twin_one(c, hand1m.program, s); // the twin's uniform names
         set_twin_one(c, twin1.program, s);
         const auto frame = [&](const glt::feedback_program& p) {
             gl.glUseProgram(p.id());
@@ -631,7 +664,10 @@ int main(int argc, char** argv)
         }
         if (!only || std::string(only) == "one") {
             report("one light (basic specular), the tutorial's uniforms", hand1.program, port1.program);
-            report("one light, phong_material / phong_light uniforms", hand1.program, twin1.program);
+            report("one light, phong_material / phong_light uniforms, against the Materials chapter's shader (the same uniforms)",
+                   hand1m.program, twin1.program);
+            report("one light, phong_material / phong_light uniforms, against the basic shader (two colour uniforms)", hand1.program,
+                   twin1.program);
         }
         gl.glBindVertexArray(0);
         gl.glDeleteVertexArrays(1, &vao);

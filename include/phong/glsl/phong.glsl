@@ -331,10 +331,12 @@ vec3 phong_normalize(vec3 v)
 /// Accuracy: the driver's pow.
 float phong_pow_unit(float x, float m)
 {
-    // Selects, not branches: pow's value where x <= 0 (undefined in GLSL) is never used. For x > 0,
-    // pow(x, 0) = 1 already: m is tested only where x <= 0.
-    float p = pow(min(x, 1.0), m);
-    return x > 0.0 ? p : (m == 0.0 ? 1.0 : 0.0);
+    // pow(max(x, 0), m): defined for m > 0 (0 at a base <= 0); pow's undefined value at m = 0 is
+    // never selected. min(..., 1) gives 1 for a base above 1, as its clamp to 1 would (1^m = 1),
+    // and stays finite where pow overflows. The form a hand-written shader uses (pow(max(r.v, 0),
+    // m)), which a shader compiler handles best: a select on x's sign after pow cost llvmpipe more.
+    float p = min(pow(max(x, 0.0), m), 1.0);
+    return m == 0.0 ? 1.0 : p;
 }
 
 /// phong::toward: the unit vector from the point q toward the homogeneous point P,
