@@ -49,8 +49,8 @@
 
 /// PHONG_DETAIL_OUT_OF_LINE marks the run-time body of a debug-build check (validate() of the
 /// material, the environment, each light): one out-of-line copy per type instead of a copy at every
-/// call, in builds without NDEBUG (the checks' messages and branches were most of an inlined
-/// shade<F>'s code there). Constant evaluation runs it as any constexpr function.
+/// call, in builds without NDEBUG (inlined, the checks' messages and branches are most of a
+/// shade<F> call's code there). Constant evaluation runs it as any constexpr function.
 #if defined(__CUDACC__)
 #  define PHONG_DETAIL_OUT_OF_LINE PHONG_HD inline
 #elif defined(_MSC_VER) && !defined(__clang__)
