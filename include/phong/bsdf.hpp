@@ -141,7 +141,7 @@ PHONG_INLINE constexpr cone<T> sample_cone(T u, T m)
 template <class T>
 PHONG_INLINE constexpr glm::vec<2, T> cos_sin_turns(T u)
 {
-    if (std::is_constant_evaluated()) {
+    if (PHONG_DETAIL_CONSTANT_EVALUATED()) {
 #if defined(__CUDA_ARCH__)
         using W = double; // device code has no long double
 #else

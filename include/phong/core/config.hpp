@@ -13,6 +13,19 @@
 #  endif
 #endif
 
+/// PHONG_DETAIL_CONSTANT_EVALUATED(): std::is_constant_evaluated(), spelled as the compiler's
+/// builtin where it has one (the library's own definition of std::is_constant_evaluated): g++ then
+/// drops a constant-evaluation-only branch when it parses the function, instead of compiling the
+/// branch's callees until the call to std::is_constant_evaluated is inlined.
+#if defined(__has_builtin)
+#  if __has_builtin(__builtin_is_constant_evaluated)
+#    define PHONG_DETAIL_CONSTANT_EVALUATED() __builtin_is_constant_evaluated()
+#  endif
+#endif
+#if !defined(PHONG_DETAIL_CONSTANT_EVALUATED)
+#  define PHONG_DETAIL_CONSTANT_EVALUATED() std::is_constant_evaluated()
+#endif
+
 /// PHONG_HD marks every function so the headers compile in CUDA device code.
 /// Empty unless compiled by nvcc (or clang in CUDA mode).
 #if defined(__CUDACC__)
@@ -171,7 +184,7 @@ PHONG_INLINE constexpr void precondition_failed_see_phong_validate(const char* m
 PHONG_INLINE constexpr void require(bool ok, const char* message, const char* file = PHONG_DETAIL_CALLER_FILE,
                                 int line = PHONG_DETAIL_CALLER_LINE) noexcept
 {
-    if (std::is_constant_evaluated()) {
+    if (PHONG_DETAIL_CONSTANT_EVALUATED()) {
         if (!ok) precondition_failed_see_phong_validate(message);
     } else {
 #if !defined(__CUDA_ARCH__)
@@ -189,7 +202,7 @@ PHONG_INLINE constexpr void require(bool ok, const char* message, const char* fi
 PHONG_INLINE constexpr bool value_checks_on() noexcept
 {
 #if defined(NDEBUG)
-    return std::is_constant_evaluated();
+    return PHONG_DETAIL_CONSTANT_EVALUATED();
 #else
     return true;
 #endif

@@ -132,7 +132,7 @@ PHONG_INLINE constexpr V pow_unit(V x, V m)
     using S = phong::detail::scalar_t<V>;
 #if defined(__CUDA_ARCH__)
     if constexpr (std::is_same_v<V, float>)
-        if (!std::is_constant_evaluated()) return detail::pow_unit_sfu(x, m);
+        if (!PHONG_DETAIL_CONSTANT_EVALUATED()) return detail::pow_unit_sfu(x, m);
 #endif
     const V y = m * detail::log2_estrin(x);
     const V p = detail::exp2_estrin(phong::detail::min(y, V(S(0))));
@@ -244,11 +244,11 @@ PHONG_INLINE constexpr V rsqrt(V x)
     } else {
 #if defined(__CUDA_ARCH__)
         if constexpr (std::is_same_v<V, float>)
-            if (!std::is_constant_evaluated()) return rsqrtf(x);
+            if (!PHONG_DETAIL_CONSTANT_EVALUATED()) return rsqrtf(x);
 #endif
 #if PHONG_FAST_X86_RSQRT
         if constexpr (std::is_same_v<V, float>) {
-            if (!std::is_constant_evaluated()) {
+            if (!PHONG_DETAIL_CONSTANT_EVALUATED()) {
                 float r0;
 #  if defined(__AVX__) // three operands: the upper lanes come from x itself, no false dependency
                 __asm__("vrsqrtss %1, %1, %0" : "=x"(r0) : "x"(x));

@@ -26,7 +26,7 @@ namespace phong::detail::ieee {
 template <class V> PHONG_INLINE constexpr V barrier(V x)
 {
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
-    if (!std::is_constant_evaluated()) {
+    if (!PHONG_DETAIL_CONSTANT_EVALUATED()) {
         if constexpr (std::is_floating_point_v<V>) {
 #  if defined(__x86_64__) || defined(__i386__)
             __asm__("" : "+x"(x));

@@ -74,7 +74,7 @@ struct math_traits {
     /// The correctly rounded square root (IEEE); constant evaluation: detail::ce::sqrt.
     PHONG_INLINE static constexpr V sqrt(V x)
     {
-        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::sqrt(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::sqrt(x));
 #if PHONG_X86_SQRT
         // std::sqrt's value without its errno path (a libm call whose clobbers cost moves in the loop).
         if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
@@ -96,37 +96,37 @@ struct math_traits {
     PHONG_INLINE static constexpr V rsqrt(V x)
     {
         // 1/0 is not a constant expression: rsqrt(0) = inf explicitly.
-        if (std::is_constant_evaluated() && x == V(0)) return std::numeric_limits<V>::infinity();
+        if (PHONG_DETAIL_CONSTANT_EVALUATED() && x == V(0)) return std::numeric_limits<V>::infinity();
         return V(1) / sqrt(x);
     }
     /// e^x (std::exp; constant evaluation: detail::ce::exp).
     PHONG_INLINE static constexpr V exp(V x)
     {
-        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::exp(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::exp(x));
         return std::exp(x);
     }
     /// The natural logarithm (std::log; constant evaluation: detail::ce::log).
     PHONG_INLINE static constexpr V log(V x)
     {
-        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::log(x));
         return std::log(x);
     }
     /// log(1 + x), accurate for small x (std::log1p; constant evaluation: detail::ce::log1p).
     PHONG_INLINE static constexpr V log1p(V x)
     {
-        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::log1p(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::log1p(x));
         return std::log1p(x);
     }
     /// e^x - 1, accurate for small x (std::expm1; constant evaluation: detail::ce::expm1).
     PHONG_INLINE static constexpr V expm1(V x)
     {
-        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::expm1(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::expm1(x));
         return std::expm1(x);
     }
     /// x^y (std::pow; constant evaluation: detail::ce::pow).
     PHONG_INLINE static constexpr V pow(V x, V y)
     {
-        if (std::is_constant_evaluated()) return static_cast<V>(detail::ce::pow(x, y));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::pow(x, y));
         return std::pow(x, y);
     }
     /// x^m for x in [0, 1], m >= 0: float and double by power.hpp; else (and CUDA) pow.
@@ -145,7 +145,7 @@ struct math_traits {
     /// a * b + c with one rounding. Constant evaluation: exact through Dekker's product.
     PHONG_INLINE static constexpr V fma(V a, V b, V c)
     {
-        if (std::is_constant_evaluated()) {
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) {
             if constexpr (std::numeric_limits<V>::digits * 2 <= std::numeric_limits<detail::ce::wide>::digits) {
                 return static_cast<V>(static_cast<detail::ce::wide>(a) * b + c); // exact product
             } else {

@@ -197,7 +197,7 @@ PHONG_INLINE constexpr F outside_domain(F x, F m)
     if constexpr (!Ieee) {
         return std::numeric_limits<F>::quiet_NaN();
     } else {
-        if (std::is_constant_evaluated()) return static_cast<F>(ce::pow(x, m));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<F>(ce::pow(x, m));
         return std::pow(x, m);
     }
 }

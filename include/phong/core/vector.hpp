@@ -54,7 +54,7 @@ template <glm::length_t L, class T, glm::qualifier Q>
 PHONG_INLINE constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>& b)
 {
     if constexpr (std::is_same_v<T, float> || std::is_same_v<T, double>)
-        if (std::is_constant_evaluated())
+        if (PHONG_DETAIL_CONSTANT_EVALUATED())
             if (const T overflow = detail::constant_dot_overflow(a, b); overflow != T(0)) return overflow;
     // Named components, not v[k]: GLM's operator[] is a switch that misleads g++'s block layout.
     T sum = a.x * b.x;
