@@ -117,14 +117,14 @@ gen() { # gen DIR KIND: the N + 1 sources of one side
       echo "    const $L lights[2] = {{glm::vec4(1, 2, 3, 1), glm::vec3(1), glm::vec3(1), glm::vec3(1, 0.1f, 0.01f)}, {glm::vec4(0, 0, 1, 0), glm::vec3(0.5f), glm::vec3(0.5f), glm::vec3(1, 0, 0)}};"
       echo "    const $M m{glm::vec3(0.1f), glm::vec3(0.6f), glm::vec3(0.3f), 16.0f, 1.0f};"
     else
-      echo "    const $L lights[2] = {$L::with_strength(glm::vec4(1, 2, 3, 1), glm::vec3(1)), $L::with_strength(glm::vec4(0, 0, 1, 0), glm::vec3(0.5f))};"
+      echo "    const $L lights[2] = {$L::with_strength(glm::vec4(1, 2, 3, 1), glm::vec3(1), {1, 0.1f, 0.01f}), $L::with_strength(glm::vec4(0, 0, 1, 0), glm::vec3(0.5f))};"
       echo "    const $M m{.ka = glm::vec3(0.1f), .kd = glm::vec3(0.6f), .ks = glm::vec3(0.3f), .shininess = 16};"
     fi
     echo "    glm::vec3 Q[5];"
     echo "    for (int k = 0; k < 5; ++k) Q[k] = glm::vec3(0.1f * float(k), 0.2f * float(argc), -2.0f);"
     echo "    glm::vec4 c(0.0f);"
     for ((i = 0; i < N; ++i)); do echo "    c += tu$i(Q, glm::vec3(0, 0, 1), m, lights);"; done
-    echo "    std::printf(\"%g %g %g %g\\n\", double(c.r), double(c.g), double(c.b), double(c.a));"
+    echo "    std::printf(\"%.5g %.5g %.5g %.5g\\n\", double(c.r), double(c.g), double(c.b), double(c.a));"
     echo "}"
   } >"$dir/main.cpp"
   [[ $kind == hand ]] && cp "$src/hand.hpp" "$dir/"
@@ -132,26 +132,35 @@ gen() { # gen DIR KIND: the N + 1 sources of one side
 }
 gen "$tmp/hand" hand
 gen "$tmp/phong" phong
-script() { # script CXX OPT DIR: a shell script that compiles every TU and links, one after the other
-  local cxx=$1 opt=$2 dir=$3 f
+script() { # script CXX OPT DIR [FLAGS]: a shell script that compiles every TU and links, one after the other
+  local cxx=$1 opt=$2 dir=$3 flags=${4:-} f
   echo "set -e"
-  for f in "$dir"/*.cpp; do echo "$cxx ${std[*]} $opt -c $f -o ${f%.cpp}.o"; done
+  for f in "$dir"/*.cpp; do echo "$cxx ${std[*]} $opt $flags -c $f -o ${f%.cpp}.o"; done
   echo "$cxx $opt $dir/*.o -o $dir/app"
 }
+gen "$tmp/small" phong
+# The same files with -DPHONG_NO_FORCE_INLINE: the compiler's own inlining decisions (a call per
+# point where it keeps shade<F> out of line), phong's opt-in for code size.
 echo
-echo "| $N TUs x 5 calls (+ main) | build s, hand | build s, phong | x hand | stripped bytes, hand | stripped bytes, phong | x hand |"
-echo "|---|--:|--:|--:|--:|--:|--:|"
+echo "Build: CPU seconds, one run; size: stripped bytes. phong: the default build (per-point functions forced inline); small: -DPHONG_NO_FORCE_INLINE. Every build prints the same colour (checked)."
+echo
+echo "| $N TUs x 5 calls (+ main) | build s, hand | build s, phong | x hand | build s, small | x hand | bytes, hand | bytes, phong | x hand | bytes, small | x hand |"
+echo "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
 for cxx in "${compilers[@]}"; do
   for opt in -O0 -O2; do
     row="| $cxx $opt"
     declare -A t=() s=()
-    for kind in hand phong; do
-      script "$cxx" "$opt" "$tmp/$kind" >"$tmp/build.sh"
+    for kind in hand phong small; do
+      flags=; [[ $kind == small ]] && flags=-DPHONG_NO_FORCE_INLINE
+      script "$cxx" "$opt" "$tmp/$kind" "$flags" >"$tmp/build.sh"
       t[$kind]=$(cpu bash "$tmp/build.sh")
       "$tmp/$kind/app" >"$tmp/$kind.out"
       strip -o "$tmp/$kind/app.stripped" "$tmp/$kind/app"
       s[$kind]=$(stat -c %s "$tmp/$kind/app.stripped")
     done
-    echo "$row | ${t[hand]} | ${t[phong]} | $(ratio "${t[phong]}" "${t[hand]}") | ${s[hand]} | ${s[phong]} | $(ratio "${s[phong]}" "${s[hand]}") |"
+    for kind in phong small; do
+      cmp -s "$tmp/hand.out" "$tmp/$kind.out" || { echo "$cxx $opt: $kind printed $(cat "$tmp/$kind.out"), hand $(cat "$tmp/hand.out")" >&2; exit 1; }
+    done
+    echo "$row | ${t[hand]} | ${t[phong]} | $(ratio "${t[phong]}" "${t[hand]}") | ${t[small]} | $(ratio "${t[small]}" "${t[hand]}") | ${s[hand]} | ${s[phong]} | $(ratio "${s[phong]}" "${s[hand]}") | ${s[small]} | $(ratio "${s[small]}" "${s[hand]}") |"
   done
 done

@@ -6,7 +6,9 @@
 # than the precondition handler's (called only when a debug check fails) and, without NDEBUG, the
 # debug checks' bodies (validate() of the parameters and lights, out of line by design); and the same loop written
 # with a renderer's own vector type through phong::vec3_of has as many instructions as with
-# glm::vec3 (within 10 %). Compile only.
+# glm::vec3 (within 10 %). And with -DPHONG_NO_FORCE_INLINE (the size configuration, -O2, debug and
+# NDEBUG): no per-file clone of a phong function (g++'s IPA-SRA / IPA-CP `.isra.N` / `.constprop.N`,
+# or a split-off `.part.N`), which the linker could not merge across files. Compile only.
 # Usage: tests/inlining/check.sh [compiler...]   (default: g++ clang++)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -52,6 +54,22 @@ for cxx in "${compilers[@]}"; do
         echo "inlining: $label: no phong function out of line$but; fragment through vec3_of $own_n instructions, with glm::vec3 $glm_n"
       fi
     done
+  done
+done
+for cxx in "${compilers[@]}"; do
+  for ndebug in "" "-DNDEBUG"; do
+    obj="$out/user_loop_small.o"
+    # shellcheck disable=SC2086
+    "$cxx" -std=c++20 -O2 -DPHONG_NO_FORCE_INLINE $ndebug -Wall -Wextra -Wpedantic -Werror -I include -c tests/inlining/user_loop.cpp -o "$obj"
+    clones=$(nm --defined-only "$obj" | awk '$2 ~ /^[Tt]$/ && $3 ~ /^_ZZ?NK?5phong/ && $3 ~ /\.(isra|constprop|part)\.[0-9]+$/ { print $3 }' | c++filt || true)
+    label="$cxx -O2 -DPHONG_NO_FORCE_INLINE${ndebug:+ $ndebug}"
+    if [[ -n "$clones" ]]; then
+      echo "inlining: $label: $(wc -l <<<"$clones") per-file clone(s) of phong functions:"
+      sed 's/^/  /' <<<"$clones" | cut -c1-200
+      status=1
+    else
+      echo "inlining: $label: no per-file clone of a phong function"
+    fi
   done
 done
 exit $status

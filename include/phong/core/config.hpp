@@ -38,7 +38,8 @@
 /// is one function whatever the inliner's heuristics (includes PHONG_HD). g++/clang++ when
 /// optimizing: always_inline (plain inline at -O0 and under AddressSanitizer; docs/compilers.md,
 /// "Inlining"); MSVC: __forceinline; CUDA: __forceinline__. PHONG_NO_FORCE_INLINE gives plain
-/// `inline`; or define PHONG_INLINE yourself before any phong header.
+/// `inline` (smaller code, a call per point; g++: also noclone); or define PHONG_INLINE yourself
+/// before any phong header.
 #if defined(__SANITIZE_ADDRESS__) // g++
 #  define PHONG_DETAIL_ASAN 1
 #elif defined(__has_feature)
@@ -47,7 +48,12 @@
 #  endif
 #endif
 #if !defined(PHONG_INLINE)
-#  if defined(PHONG_NO_FORCE_INLINE) || defined(PHONG_DETAIL_ASAN)
+#  if (defined(PHONG_NO_FORCE_INLINE) || defined(PHONG_DETAIL_ASAN)) && defined(__GNUC__) && !defined(__clang__) && \
+      !defined(__CUDACC__)
+// noclone: g++'s IPA-SRA would otherwise give every file that calls shade<F> a local copy of it
+// with a rewritten signature, where the linker keeps one copy of an inline function.
+#    define PHONG_INLINE inline __attribute__((noclone))
+#  elif defined(PHONG_NO_FORCE_INLINE) || defined(PHONG_DETAIL_ASAN)
 #    define PHONG_INLINE PHONG_HD inline
 #  elif defined(__CUDACC__)
 #    define PHONG_INLINE __host__ __device__ __forceinline__
