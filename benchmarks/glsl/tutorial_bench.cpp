@@ -245,6 +245,59 @@ void main()
 }
 )";
 
+// The six-light lighting by hand over the twin's uniform layout (twin_body's names and the
+// phong_light fields, declared here by hand): one loop over light_count lights, the tutorial's
+// formulas per light, w = 0 for the directional light, the linear-edge cone on the first light
+// only (Cone = 0) or on every light with a nonzero axis (Cone = 1). What a renderer author writes
+// over these uniforms without phong: the fair baseline of the twin's uniform rows.
+std::string hand_six_twin_uniforms(bool every_light_cone)
+{
+    return std::string("#version 330 core\n") + (every_light_cone ? "#define CONE_ON(i) (lights[i].spot.direction != vec3(0.0))\n"
+                                                                  : "#define CONE_ON(i) (i == 0)\n") + R"(
+struct Falloff { float constant; float linear; float quadratic; float range; };
+struct SpotCone { vec3 direction; float exponent; float cos_cutoff; float cos_inner; float cos_outer; };
+struct Light { vec4 position; vec3 ambient; vec3 diffuse; vec3 specular; Falloff attenuation; SpotCone spot; };
+struct Environment { vec3 ambient; vec4 eye; };
+in vec3 FragPos;
+in vec3 Normal;
+in vec2 TexCoords;
+out vec4 FragColor;
+uniform sampler2D diffuse_map;
+uniform sampler2D specular_map;
+uniform float shininess;
+uniform Light lights[6];
+uniform int light_count;
+uniform Environment environment;
+void main()
+{
+    vec3 albedo = texture(diffuse_map, TexCoords).rgb;
+    vec3 ks = texture(specular_map, TexCoords).rgb;
+    vec3 norm = normalize(Normal);
+    vec3 viewDir = normalize(environment.eye.xyz - FragPos);
+    vec3 result = vec3(0.0);
+    for (int i = 0; i < light_count; i++) {
+        vec3 toLight = lights[i].position.xyz - lights[i].position.w * FragPos;
+        float distance = length(toLight);
+        vec3 lightDir = toLight / distance;
+        float diff = max(dot(norm, lightDir), 0.0);
+        vec3 reflectDir = reflect(-lightDir, norm);
+        float spec = pow(max(dot(viewDir, reflectDir), 0.0), shininess);
+        float attenuation = 1.0;
+        if (lights[i].position.w != 0.0)
+            attenuation = 1.0 / (lights[i].attenuation.constant + lights[i].attenuation.linear * distance +
+                                 lights[i].attenuation.quadratic * (distance * distance));
+        if (CONE_ON(i)) {
+            float theta = dot(lightDir, -lights[i].spot.direction);
+            float epsilon = lights[i].spot.cos_inner - lights[i].spot.cos_outer;
+            attenuation *= clamp((theta - lights[i].spot.cos_outer) / epsilon, 0.0, 1.0);
+        }
+        result += (lights[i].ambient * albedo + lights[i].diffuse * diff * albedo + lights[i].specular * spec * ks) * attenuation;
+    }
+    FragColor = vec4(result, 1.0);
+}
+)";
+}
+
 // The tutorial's basic specular shader (one light, an object colour), by hand.
 const char* const hand_one = R"(#version 330 core
 out vec4 FragColor;
@@ -552,6 +605,7 @@ int main(int argc, char** argv)
         frame_program hand6(c, hand_six), port6(c, phong::glsl::shader("#version 330 core", six_defines, twin, port_six_body));
         frame_program twin6(c, phong::glsl::shader("#version 330 core", twin_six_defines, twin, twin_body));
         frame_program twin6all(c, phong::glsl::shader("#version 330 core", six_defines, twin, twin_body));
+        frame_program hand6u(c, hand_six_twin_uniforms(false)), hand6uall(c, hand_six_twin_uniforms(true));
         frame_program hand1(c, hand_one), port1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, port_one_body));
         frame_program hand1m(c, hand_one_materials), twin1(c, phong::glsl::shader("#version 330 core", twin_one_defines, twin, twin_one_body));
         // The target: 800x600 RGBA8, no depth (the height field does not overlap itself from this camera).
@@ -597,6 +651,8 @@ int main(int argc, char** argv)
         set_hand_six(c, port6.program, s); // the ports keep the tutorial's uniforms
         set_twin_six(c, twin6.program, s);
         set_twin_six(c, twin6all.program, s);
+        set_twin_six(c, hand6u.program, s); // the twin's uniform names
+        set_twin_six(c, hand6uall.program, s);
         set_hand_one(c, hand1.program, s);
         set_hand_one(c, port1.program, s);
         set_twin_one(c, hand1m.program, s); // the twin's uniform names
@@ -661,6 +717,10 @@ int main(int argc, char** argv)
             report("six lights, phong_light uniforms, PHONG_SPOT_LIGHTS 1", hand6.program, twin6.program);
             report("six lights, phong_light uniforms, every light allowed a cone (PHONG_SPOT_LIGHTS = PHONG_MAX_LIGHTS)", hand6.program,
                    twin6all.program);
+            report("six lights, phong_light uniforms, PHONG_SPOT_LIGHTS 1, against the same loop by hand over the same uniforms",
+                   hand6u.program, twin6.program);
+            report("six lights, phong_light uniforms, every light allowed a cone, against the same loop by hand over the same uniforms",
+                   hand6uall.program, twin6all.program);
         }
         if (!only || std::string(only) == "one") {
             report("one light (basic specular), the tutorial's uniforms", hand1.program, port1.program);
