@@ -138,9 +138,9 @@ script() { # script CXX OPT DIR [FLAGS]: a shell script that compiles every TU a
   for f in "$dir"/*.cpp; do echo "$cxx ${std[*]} $opt $flags -c $f -o ${f%.cpp}.o"; done
   echo "$cxx $opt $dir/*.o -o $dir/app"
 }
-gen "$tmp/small" phong
-# The same files with -DPHONG_NO_FORCE_INLINE: the compiler's own inlining decisions (a call per
-# point where it keeps shade<F> out of line), phong's opt-in for code size.
+# "small": phong's files again, built with -DPHONG_NO_FORCE_INLINE: the compiler's own inlining
+# decisions (a call per point where it keeps shade<F> out of line), phong's opt-in for code size.
+cp -r "$tmp/phong" "$tmp/small"
 echo
 echo "Build: CPU seconds, one run; size: stripped bytes. phong: the default build (per-point functions forced inline); small: -DPHONG_NO_FORCE_INLINE. Every build prints the same colour (checked)."
 echo

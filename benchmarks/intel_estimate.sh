@@ -60,14 +60,12 @@ else:
     most = max(l[0] for l in loops)
     lines = min((l for l in loops if l[0] >= 0.8 * most), key=lambda l: l[1])[2]
 print('.Lbody:')
-if True:
-    for text in lines:
-        t = re.sub(r'<[^>]*>', '', text.split('#')[0]).strip()
-        t = re.sub(r'^(j\w+)\s+[0-9a-f]+$', r'\1 .Lbody', t) # branches: llvm-mca ignores where they go
-        print('  ' + t)
+for text in lines:
+    t = re.sub(r'<[^>]*>', '', text.split('#')[0]).strip()
+    t = re.sub(r'^(j\w+)\s+[0-9a-f]+$', r'\1 .Lbody', t) # branches: llvm-mca ignores where they go
+    print('  ' + t)
 PY
-      c=$(llvm-mca-14 -mtriple=x86_64 -mcpu="$cpu" -iterations=500 "$tmp/body.s" | awk '/^Total Cycles:/ {print $3 / 500}')
-      cycles[$kernel]=$c
+      cycles[$kernel]=$(llvm-mca-14 -mtriple=x86_64 -mcpu="$cpu" -iterations=500 "$tmp/body.s" | awk '/^Total Cycles:/ {print $3 / 500}')
     done
     echo "| $mode | $K | ${cycles[hand]} | ${cycles[batch]} | $(awk -v a="${cycles[batch]}" -v b="${cycles[hand]}" 'BEGIN {printf "%.2f", a / b}') |"
   done

@@ -9,7 +9,8 @@
 //    phong_lights, the material, the environment) from them; PHONG_SPOT_LINEAR, lights of any
 //    kind. And the lights as the twin's uniform array (the world-space recipe's layout, every
 //    light in phong_light uniforms): the flashlight first with PHONG_SPOT_LIGHTS 1, and with
-//    every light allowed a cone (the default), the point lights' spot uniforms left at 0.
+//    every light allowed a cone (the default), the point lights' spot uniforms left at 0; both
+//    against the tutorial's shader and against the same loop written by hand over those uniforms.
 //  * one light: the tutorial's basic specular shader (one point light, ambient 0.1, specular 0.5,
 //    shininess 32, an object colour), and the same through phong_shade: with the tutorial's
 //    uniforms (a light colour, an object colour), and with phong_material / phong_light uniforms,
@@ -248,7 +249,7 @@ void main()
 // The six-light lighting by hand over the twin's uniform layout (twin_body's names and the
 // phong_light fields, declared here by hand): one loop over light_count lights, the tutorial's
 // formulas per light, w = 0 for the directional light, the linear-edge cone on the first light
-// only (Cone = 0) or on every light with a nonzero axis (Cone = 1). What a renderer author writes
+// only, or (every_light_cone) on every light with a nonzero axis. What a renderer author writes
 // over these uniforms without phong: the fair baseline of the twin's uniform rows.
 std::string hand_six_twin_uniforms(bool every_light_cone)
 {

@@ -334,7 +334,7 @@ float phong_pow_unit(float x, float m)
     // pow(max(x, 0), m): defined for m > 0 (0 at a base <= 0); pow's undefined value at m = 0 is
     // never selected. min(..., 1) gives 1 for a base above 1, as its clamp to 1 would (1^m = 1),
     // and stays finite where pow overflows. The form a hand-written shader uses (pow(max(r.v, 0),
-    // m)), which a shader compiler handles best: a select on x's sign after pow cost llvmpipe more.
+    // m)); docs/glsl.md compares it with the other forms.
     float p = min(pow(max(x, 0.0), m), 1.0);
     return m == 0.0 ? 1.0 : p;
 }
