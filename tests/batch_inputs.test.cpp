@@ -33,10 +33,10 @@ template <class T> double batch_tolerance(const features& F, double m)
 }
 
 /// Relative difference of two colours, per channel, against the largest channel of the reference.
-template <class T, int N> double channel_difference(const glm::vec<N, T>& a, const glm::vec<N, T>& b)
+template <class T, glm::length_t N> double channel_difference(const glm::vec<N, T>& a, const glm::vec<N, T>& b)
 {
     double scale = 0, diff = 0;
-    for (int k = 0; k < N; ++k) {
+    for (glm::length_t k = 0; k < N; ++k) {
         scale = std::max(scale, double(std::abs(b[k])));
         diff = std::max(diff, double(std::abs(a[k] - b[k])));
     }

@@ -23,6 +23,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "core/diagnostics_push.hpp"
+
 namespace phong {
 
 // ---- The local frame ----------------------------------------------------------------------------
@@ -593,7 +595,7 @@ PHONG_INLINE constexpr validation validate_common(const B& b)
     if (!finite_non_negative(b.kd)) return {"bsdf.kd (material.kd): negative, NaN or inf"};
     if (!finite_non_negative(b.ks)) return {"bsdf.ks (material.ks): negative, NaN or inf"};
     if (!finite_non_negative(b.shininess)) return {"bsdf.shininess (material.shininess): must be finite and >= 0"};
-    for (int c = 0; c < 3; ++c)
+    for (glm::length_t c = 0; c < 3; ++c)
         if (b.kd[c] + b.ks[c] > T(1))
             return {"material.kd + material.ks: above 1 in a channel, the BSDF would reflect more light than it receives"};
     const T p = b.specular_probability;
@@ -626,3 +628,4 @@ PHONG_INLINE constexpr validation validate(const blinn_phong_bsdf<T, Q>& b)
 }
 
 } // namespace phong
+#include "core/diagnostics_pop.hpp"

@@ -8,6 +8,8 @@
 #include "inputs/features.hpp"
 #endif
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -15,6 +17,20 @@
 #include <string_view>
 
 namespace phong::glsl {
+
+namespace detail {
+/// Throws E(message); built without exceptions (-fno-exceptions), prints the message to stderr and
+/// aborts instead.
+template <class E> [[noreturn]] inline void fail(const std::string& message)
+{
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
+    throw E(message);
+#else
+    std::fprintf(stderr, "%s\n", message.c_str());
+    std::abort();
+#endif
+}
+} // namespace detail
 
 /// The directory that holds phong.glsl: PHONG_GLSL_DIR (defined by the CMake target phong::phong),
 /// else the folder glsl beside this header as __FILE__ names it; "" when __FILE__ names no folder.
@@ -30,26 +46,27 @@ inline std::string directory()
 }
 
 /// The text of phong.glsl in `dir` (default: directory()). Throws std::runtime_error naming the
-/// path when the file cannot be read (or when no directory is known).
+/// path when the file cannot be read (or when no directory is known); without exceptions, prints
+/// that message and aborts.
 inline std::string source(const std::string& dir = directory())
 {
     if (dir.empty())
-        throw std::runtime_error("phong::glsl::source: no directory known (link phong::phong, use pkg-config's glsldir, or pass the directory)");
+        detail::fail<std::runtime_error>("phong::glsl::source: no directory known (link phong::phong, use pkg-config's glsldir, or pass the directory)");
     const std::string path = dir + "/phong.glsl";
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("phong::glsl::source: cannot read " + path);
+    if (!in) detail::fail<std::runtime_error>("phong::glsl::source: cannot read " + path);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 #if __cplusplus >= 202002L
 /// The #define lines that select F in phong.glsl (every field written out, no preset needed), then
 /// PHONG_MAX_LIGHTS max_lights. Throws std::invalid_argument for evaluation::stable (C++ only: GLSL
-/// ES has no double) and for max_lights < 1.
+/// ES has no double) and for max_lights < 1 (without exceptions: prints the message and aborts).
 inline std::string defines(const features& F, int max_lights = 8)
 {
     if (F.mode == evaluation::stable)
-        throw std::invalid_argument("phong::glsl::defines: features::mode = evaluation::stable has no GLSL twin (exact or fast)");
-    if (max_lights < 1) throw std::invalid_argument("phong::glsl::defines: max_lights must be at least 1");
+        detail::fail<std::invalid_argument>("phong::glsl::defines: features::mode = evaluation::stable has no GLSL twin (exact or fast)");
+    if (max_lights < 1) detail::fail<std::invalid_argument>("phong::glsl::defines: max_lights must be at least 1");
     const auto flag = [](bool b) { return b ? "1" : "0"; };
     const char* specular[] = {"PHONG_SPECULAR_NONE", "PHONG_SPECULAR_PHONG", "PHONG_SPECULAR_BLINN"};
     const char* lights[] = {"PHONG_LIGHTS_ANY", "PHONG_LIGHTS_POSITIONAL", "PHONG_LIGHTS_DIRECTIONAL"};

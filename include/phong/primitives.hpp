@@ -9,6 +9,8 @@
 
 #include <limits>
 
+#include "core/diagnostics_push.hpp"
+
 namespace phong {
 
 // ---- normals at a generic hit point -------------------------------------------------------
@@ -146,7 +148,7 @@ PHONG_HD constexpr bool ray_box(const glm::vec<3, T, Q>& S, const glm::vec<3, T,
     const T inf = std::numeric_limits<T>::infinity();
     enter = -inf;
     leave = inf;
-    for (int a = 0; a < 3; ++a) {
+    for (glm::length_t a = 0; a < 3; ++a) {
         if (c[a] == T(0)) {
             if (!(S[a] >= lo[a] && S[a] <= hi[a])) return false;
             continue;
@@ -327,3 +329,4 @@ PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_normal(const glm::vec<3, T
 }
 
 } // namespace phong
+#include "core/diagnostics_pop.hpp"

@@ -161,7 +161,7 @@ inline void precondition_failed(const char* message, const char* file, int line)
 #    define PHONG_DETAIL_ASSERT_AT(cond, msg, file, line) assert((cond) && (msg))
 #  else
 #    define PHONG_DETAIL_ASSERT_AT(cond, msg, file, line) \
-        (static_cast<bool>(cond) ? void(0) : ::phong::detail::precondition_failed((msg), (file), (line)))
+        ((cond) ? void(0) : ::phong::detail::precondition_failed((msg), (file), (line)))
 #  endif
 #  define PHONG_ASSERT(cond, msg) PHONG_DETAIL_ASSERT_AT(cond, msg, __FILE__, __LINE__)
 #endif

@@ -13,6 +13,8 @@
 #  pragma nv_diag_suppress 20208
 #endif
 
+#include "diagnostics_push.hpp"
+
 namespace phong {
 namespace detail::ce {
 
@@ -155,6 +157,7 @@ PHONG_INLINE constexpr wide pow(wide x, wide y)
 
 } // namespace detail::ce
 } // namespace phong
+#include "diagnostics_pop.hpp"
 
 #if defined(__NVCC__)
 #  pragma nv_diagnostic pop

@@ -20,6 +20,8 @@
 #  define PHONG_FAST_X86_RSQRT 0
 #endif
 
+#include "diagnostics_push.hpp"
+
 namespace phong::fast {
 
 namespace detail {
@@ -146,7 +148,7 @@ inline constexpr unsigned pow_integer_max_exponent = 64;
 
 /// Relative error bound of fast::detail::pow_integer: (n - 1) u for n <= pow_integer_max_exponent,
 /// 63 u = 3.8e-6 in float, within pow_unit_max_rel (derivation: docs/accuracy.md#fast-mode).
-template <class T> inline constexpr double pow_integer_max_rel = double(pow_integer_max_exponent - 1) * std::numeric_limits<phong::detail::scalar_t<T>>::epsilon() / 2;
+template <class T> inline constexpr double pow_integer_max_rel = double(pow_integer_max_exponent - 1) * double(std::numeric_limits<phong::detail::scalar_t<T>>::epsilon()) / 2;
 
 /// pow_integer's schedule for one exponent n, made once where many powers share n.
 struct pow_integer_plan {
@@ -266,3 +268,4 @@ PHONG_INLINE constexpr V rsqrt(V x)
 }
 
 } // namespace phong::fast
+#include "diagnostics_pop.hpp"

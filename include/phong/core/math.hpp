@@ -28,6 +28,8 @@
 #  pragma nv_diag_suppress 20208
 #endif
 
+#include "diagnostics_push.hpp"
+
 namespace phong {
 namespace detail {
 
@@ -74,7 +76,7 @@ struct math_traits {
     /// The correctly rounded square root (IEEE); constant evaluation: detail::ce::sqrt.
     PHONG_INLINE static constexpr V sqrt(V x)
     {
-        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::sqrt(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::sqrt(static_cast<detail::ce::wide>(x)));
 #if PHONG_X86_SQRT
         // std::sqrt's value without its errno path (a libm call whose clobbers cost moves in the loop).
         if constexpr (std::is_same_v<V, float> || std::is_same_v<V, double>) {
@@ -102,31 +104,31 @@ struct math_traits {
     /// e^x (std::exp; constant evaluation: detail::ce::exp).
     PHONG_INLINE static constexpr V exp(V x)
     {
-        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::exp(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::exp(static_cast<detail::ce::wide>(x)));
         return std::exp(x);
     }
     /// The natural logarithm (std::log; constant evaluation: detail::ce::log).
     PHONG_INLINE static constexpr V log(V x)
     {
-        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::log(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::log(static_cast<detail::ce::wide>(x)));
         return std::log(x);
     }
     /// log(1 + x), accurate for small x (std::log1p; constant evaluation: detail::ce::log1p).
     PHONG_INLINE static constexpr V log1p(V x)
     {
-        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::log1p(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::log1p(static_cast<detail::ce::wide>(x)));
         return std::log1p(x);
     }
     /// e^x - 1, accurate for small x (std::expm1; constant evaluation: detail::ce::expm1).
     PHONG_INLINE static constexpr V expm1(V x)
     {
-        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::expm1(x));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::expm1(static_cast<detail::ce::wide>(x)));
         return std::expm1(x);
     }
     /// x^y (std::pow; constant evaluation: detail::ce::pow).
     PHONG_INLINE static constexpr V pow(V x, V y)
     {
-        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::pow(x, y));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<V>(detail::ce::pow(static_cast<detail::ce::wide>(x), static_cast<detail::ce::wide>(y)));
         return std::pow(x, y);
     }
     /// x^m for x in [0, 1], m >= 0: float and double by power.hpp; else (and CUDA) pow.
@@ -147,7 +149,8 @@ struct math_traits {
     {
         if (PHONG_DETAIL_CONSTANT_EVALUATED()) {
             if constexpr (std::numeric_limits<V>::digits * 2 <= std::numeric_limits<detail::ce::wide>::digits) {
-                return static_cast<V>(static_cast<detail::ce::wide>(a) * b + c); // exact product
+                using W = detail::ce::wide;
+                return static_cast<V>(W(a) * W(b) + W(c)); // exact product
             } else {
                 return detail::dekker_fma(a, b, c);
             }
@@ -292,6 +295,7 @@ template <class V> PHONG_INLINE constexpr V cos_degrees(V degrees)
 } // namespace detail
 
 } // namespace phong
+#include "diagnostics_pop.hpp"
 
 #if defined(__NVCC__)
 #  pragma nv_diagnostic pop

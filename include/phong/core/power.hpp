@@ -25,6 +25,8 @@
 #  pragma nv_diag_suppress 20208
 #endif
 
+#include "diagnostics_push.hpp"
+
 namespace phong::detail {
 
 /// 0^m for m >= 0: 1 for m = 0, 0 for m > 0 (IEEE pow(0, 0) = 1), the value of every power of the
@@ -163,12 +165,12 @@ PHONG_INLINE constexpr double log2_normal(double x)
     const int i = static_cast<int>((tmp >> (52 - log_table_bits)) % (1u << log_table_bits));
     const double k = static_cast<double>(static_cast<std::int64_t>(tmp) >> 52); // arithmetic shift (C++20)
     const double z = std::bit_cast<double>(u - (tmp & (u64(0xfff) << 52)));
-    const double r = ieee::opaque(mul(z, log2_table[i].inv_c) - 1.0); // exact for the interval holding 1 (inv_c = 1)
+    const double r = ieee::opaque(mul(z, log2_table[std::size_t(i)].inv_c) - 1.0); // exact for the interval holding 1 (inv_c = 1)
     const double r2 = r * r;
     double p;
     if constexpr (Short) p = mul(r, a1 + mul(r, a2)) + mul(r2 * r, (a3 + mul(r, a4)) + mul(r2, a5));
     else p = mul(r, a1 + mul(r, a2)) + mul(r2 * r, (a3 + mul(r, a4)) + mul(r2, (a5 + mul(r, a6)) + mul(r2, a7)));
-    return (k + log2_table[i].log2_c) + p;
+    return (k + log2_table[std::size_t(i)].log2_c) + p;
 }
 
 /// 2^y for y in [-1022, 0] from the 64-entry table and a polynomial of degree 5 (Short: float's
@@ -197,7 +199,7 @@ PHONG_INLINE constexpr F outside_domain(F x, F m)
     if constexpr (!Ieee) {
         return std::numeric_limits<F>::quiet_NaN();
     } else {
-        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<F>(ce::pow(x, m));
+        if (PHONG_DETAIL_CONSTANT_EVALUATED()) return static_cast<F>(ce::pow(static_cast<ce::wide>(x), static_cast<ce::wide>(m)));
         return std::pow(x, m);
     }
 }
@@ -209,7 +211,7 @@ template <bool Ieee, bool AtMostOne = false>
 PHONG_INLINE constexpr float pow_unit_kernel(float xf, float mf)
 {
     constexpr double least = Ieee ? -1022.0 : double(ieee::power_floor_log2<float>);
-    const double x = xf, m = mf;
+    const double x = double(xf), m = double(mf);
     if (x > 0.0) [[likely]] { // every positive float is a normal double
         const double y = m * log2_normal<true>(x);
         if (y >= least && (AtMostOne || y <= 0.0)) [[likely]] return static_cast<float>(exp2_tabulated<true>(y));
@@ -255,6 +257,7 @@ PHONG_INLINE constexpr double pow_unit_at_most_one(double x, double m) { return 
 #endif
 
 } // namespace phong::detail::power
+#include "diagnostics_pop.hpp"
 
 #if defined(__NVCC__)
 #  pragma nv_diagnostic pop

@@ -58,7 +58,7 @@ PHONG_INLINE constexpr unit_twofold<T, Q> unit_twofold_of(const glm::vec<3, T, Q
     // Renormalize d + dlo first: where d cancels, dlo can be a sizeable fraction of d, and the
     // O(dlo^2) terms dropped below would then leave |hi + lo| off 1.
     vec3 dh(T(0)), dl(T(0));
-    for (int k = 0; k < 3; ++k) {
+    for (glm::length_t k = 0; k < 3; ++k) {
         dh[k] = d[k] + dlo[k];
         dl[k] = twofold_sum_error(d[k], dlo[k], dh[k]);
     }
@@ -66,14 +66,14 @@ PHONG_INLINE constexpr unit_twofold<T, Q> unit_twofold_of(const glm::vec<3, T, Q
     const mask_t<T> in_range = math_traits<T>::both(detail::max_abs(d) <= largest<T>(), largest_d <= largest<T>());
     const T scale = math_traits<T>::inverse_pow2_scale(detail::select(in_range, largest_d, T(1)));
     vec3 a(T(0)), al(T(0));
-    for (int k = 0; k < 3; ++k) {
+    for (glm::length_t k = 0; k < 3; ++k) {
         a[k] = detail::select(in_range, dh[k] * scale, T(0));
         al[k] = detail::select(in_range, dl[k] * scale, T(0)); // NaN when d overflowed
     }
     // S = |a + al|^2 = sh + sl (products exact by fma, sums by TwoSum; al^2 is below eps^2).
     T sh = rounded_product(a[0], a[0]);
     T sl = detail::fma(a[0], a[0], -sh) + T(2) * a[0] * al[0];
-    for (int k = 1; k < 3; ++k) {
+    for (glm::length_t k = 1; k < 3; ++k) {
         const T p = rounded_product(a[k], a[k]);
         const T pe = detail::fma(a[k], a[k], -p);
         const T s = sh + p;
@@ -93,7 +93,7 @@ PHONG_INLINE constexpr unit_twofold<T, Q> unit_twofold_of(const glm::vec<3, T, Q
     const T e = detail::select(nonzero, ((T(1) - th) - tl) - sh * r2l - sl * r2h, T(0));
     const T rl = r * e * T(0.5); // 1/|a| = r + rl + O(e^2)
     unit_twofold<T, Q> u{vec3(T(0)), vec3(T(0)), r, T(0)};
-    for (int k = 0; k < 3; ++k) {
+    for (glm::length_t k = 0; k < 3; ++k) {
         u.hi[k] = rounded_product(a[k], r);
         u.lo[k] = detail::fma(a[k], r, -u.hi[k]) + (a[k] * rl + al[k] * r);
     }
@@ -109,7 +109,7 @@ PHONG_INLINE constexpr void dot_twofold(const glm::vec<3, T, Q>& ah, const glm::
 {
     T p = rounded_product(ah[0], bh[0]);
     T err = detail::fma(ah[0], bh[0], -p) + (ah[0] * bl[0] + al[0] * bh[0]);
-    for (int k = 1; k < 3; ++k) {
+    for (glm::length_t k = 1; k < 3; ++k) {
         const T h = rounded_product(ah[k], bh[k]);
         const T r = detail::fma(ah[k], bh[k], -h);
         const T s = p + h;
@@ -134,7 +134,7 @@ PHONG_INLINE constexpr cosine_complement<T> half_square(const glm::vec<3, T, Q>&
 {
     T hi = rounded_product(c[0], c[0]);
     T lo = detail::fma(c[0], c[0], -hi) + T(2) * c[0] * c_lo[0];
-    for (int k = 1; k < 3; ++k) {
+    for (glm::length_t k = 1; k < 3; ++k) {
         const T p = rounded_product(c[k], c[k]);
         const T s = hi + p;
         lo = lo + (twofold_sum_error(hi, p, s) + detail::fma(c[k], c[k], -p) + T(2) * c[k] * c_lo[k]);
@@ -154,7 +154,7 @@ PHONG_INLINE constexpr cosine_complement<T> one_minus_rv(const glm::vec<3, T, Q>
                                                     const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
 {
     glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
-    for (int k = 0; k < 3; ++k) {
+    for (glm::length_t k = 0; k < 3; ++k) {
         const T q = rounded_product(nl_hi, nh[k]); // (n.l) n_k; 2 q + pe exact below
         const T ph = T(2) * q;
         const T pe = T(2) * (detail::fma(nl_hi, nh[k], -q) + (nl_hi * nlo[k] + nl_lo * nh[k]));
@@ -175,7 +175,7 @@ PHONG_INLINE constexpr cosine_complement<T> one_minus_nh(const glm::vec<3, T, Q>
                                                     const glm::vec<3, T, Q>& hh, const glm::vec<3, T, Q>& hlo)
 {
     glm::vec<3, T, Q> c(T(0)), c_lo(T(0)); // initialized: constant evaluation needs an active union member
-    for (int k = 0; k < 3; ++k) {
+    for (glm::length_t k = 0; k < 3; ++k) {
         const T s = nh[k] - hh[k];
         const T lo = twofold_sum_error(nh[k], -hh[k], s) + (nlo[k] - hlo[k]);
         c[k] = s + lo;
@@ -192,7 +192,7 @@ PHONG_INLINE constexpr cosine_complement<T> one_minus_halfway(const glm::vec<3, 
                                                          const glm::vec<3, T, Q>& vh, const glm::vec<3, T, Q>& vlo)
 {
     glm::vec<3, T, Q> sum(T(0)), sum_lo(T(0));
-    for (int k = 0; k < 3; ++k) {
+    for (glm::length_t k = 0; k < 3; ++k) {
         sum[k] = lh[k] + vh[k];
         sum_lo[k] = twofold_sum_error(lh[k], vh[k], sum[k]) + (llo[k] + vlo[k]);
         // Renormalized: where l and v cancel, lo could exceed hi and overflow in unit_twofold_of.

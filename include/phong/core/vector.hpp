@@ -12,6 +12,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "diagnostics_push.hpp"
+
 namespace phong {
 namespace detail {
 
@@ -26,7 +28,7 @@ PHONG_INLINE constexpr T constant_dot_overflow(const glm::vec<L, T, Q>& a, const
     return T(0);
 #else
     using W = long double;
-    constexpr W max = std::numeric_limits<T>::max(), eps = std::numeric_limits<T>::epsilon();
+    constexpr W max = W(std::numeric_limits<T>::max()), eps = W(std::numeric_limits<T>::epsilon());
     constexpr W threshold = max + max / (W(2) - eps) * eps / 2; // max = (2 - eps) 2^(e-1), ulp = eps 2^(e-1)
     const auto rounded = [](W x) { // x rounded to T, an overflow as +-1 (the sign of the inf)
         return x >= threshold ? W(1) : x <= -threshold ? W(-1) : W(0);
@@ -195,3 +197,4 @@ PHONG_INLINE constexpr glm::vec<L, T, Q> faceforward(const glm::vec<L, T, Q>& n,
 }
 
 } // namespace phong
+#include "diagnostics_pop.hpp"

@@ -10,6 +10,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "../core/diagnostics_push.hpp"
+
 namespace phong {
 
 /// Distance falloff coefficients of one light (OpenGL's constant, linear and quadratic
@@ -240,3 +242,4 @@ PHONG_INLINE constexpr validation validate(const light<T, Q>& L)
 }
 
 } // namespace phong
+#include "../core/diagnostics_pop.hpp"

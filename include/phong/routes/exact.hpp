@@ -14,6 +14,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "../core/diagnostics_push.hpp"
+
 namespace phong::detail::exact {
 
 /// The frame's fields for SIMD lanes only (empty for scalars):
@@ -181,7 +183,8 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
     if constexpr (F.specular != specular_model::none) nv = detail::dot(unit_normal, v.unit);
     lanes_frame<T, Q> lanes{};
     if constexpr (!std::is_floating_point_v<T>) {
-        lanes.minus_position = vec3(opaque_lanes(T(-0.0f) - position.x), opaque_lanes(T(-0.0f) - position.y), opaque_lanes(T(-0.0f) - position.z));
+        const T minus_zero(scalar_t<T>(-0.0f));
+        lanes.minus_position = vec3(opaque_lanes(minus_zero - position.x), opaque_lanes(minus_zero - position.y), opaque_lanes(minus_zero - position.z));
         if constexpr (F.specular == specular_model::blinn)
             lanes.nv_seen = detail::select(v.ok, nv, T(-std::numeric_limits<scalar_t<T>>::infinity()));
     }
@@ -467,7 +470,7 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
     if constexpr (F.spot != spot_model::none) {
         inv = exact_inverse_length(dd);
         l = d * inv;
-        for (int k = 0; k < 3; ++k) l[k] = detail::select(inv > T(0), l[k], T(0)); // an overflowed d: inf * 0
+        for (glm::length_t k = 0; k < 3; ++k) l[k] = detail::select(inv > T(0), l[k], T(0)); // an overflowed d: inf * 0
     }
     T distance = T(0); // only attenuation reads it
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = detail::sqrt(dd);
@@ -517,3 +520,4 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
 }
 
 } // namespace phong::detail::exact
+#include "../core/diagnostics_pop.hpp"

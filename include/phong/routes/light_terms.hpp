@@ -45,7 +45,7 @@ PHONG_INLINE constexpr glm::vec<3, T, Q>& sum_of(folded_sums<T, Q>& sums)
 
 /// A light's vector in the arithmetic type T: the vector itself when it already is (a reference,
 /// no copy), else widened exactly (float lights in the stable mode's double arithmetic).
-template <class T, int N, class U, glm::qualifier Q>
+template <class T, glm::length_t N, class U, glm::qualifier Q>
 PHONG_INLINE constexpr decltype(auto) in_type(const glm::vec<N, U, Q>& v)
 {
     if constexpr (std::is_same_v<U, T>) return (v);
@@ -101,7 +101,7 @@ PHONG_INLINE constexpr T light_factor([[maybe_unused]] const Light& L, [[maybe_u
         decltype(auto) a = attenuation_of(L);
         // The larger floor of T's and the light's: float lights shaded in double get float's formula.
         using S = scalar_t<LightScalar>;
-        using Floor = std::conditional_t<(attenuation_denominator_min<S> > attenuation_denominator_min<scalar_t<T>>), S, scalar_t<T>>;
+        using Floor = std::conditional_t<(double(attenuation_denominator_min<S>) > double(attenuation_denominator_min<scalar_t<T>>)), S, scalar_t<T>>;
         if constexpr (F.attenuation == attenuation_model::polynomial)
             fa = phong::attenuation_polynomial<T, Floor>(distance, T(a.constant), T(a.linear), T(a.quadratic));
         else

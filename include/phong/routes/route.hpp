@@ -14,6 +14,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "../core/diagnostics_push.hpp"
+
 namespace phong::detail {
 
 /// The per-point frame of F's evaluation route.
@@ -212,3 +214,4 @@ PHONG_INLINE constexpr void add_lights(Sums<T, Q>& sums, const frame_t<F, T, Q>&
 }
 
 } // namespace phong::detail
+#include "../core/diagnostics_pop.hpp"

@@ -14,6 +14,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "../core/diagnostics_push.hpp"
+
 namespace phong::detail::stable {
 
 /// Per-point quantities, computed once and shared by every light.
@@ -46,12 +48,12 @@ PHONG_INLINE constexpr twofold_vector<T, Q> difference_twofold(const glm::vec<3,
     twofold_vector<T, Q> d{xyz, glm::vec<3, T, Q>(T(0))};
     if constexpr (K == light_kind::positional) {
         d.hi = xyz - point;
-        for (int k = 0; k < 3; ++k) d.lo[k] = difference_error(xyz[k], point[k], d.hi[k]);
+        for (glm::length_t k = 0; k < 3; ++k) d.lo[k] = difference_error(xyz[k], point[k], d.hi[k]);
     } else if constexpr (K == light_kind::any) {
         glm::vec<3, T, Q> p(T(0));
-        for (int k = 0; k < 3; ++k) p[k] = rounded_product(point[k], w); // not fused into xyz - p
+        for (glm::length_t k = 0; k < 3; ++k) p[k] = rounded_product(point[k], w); // not fused into xyz - p
         d.hi = xyz - p;
-        for (int k = 0; k < 3; ++k) d.lo[k] = difference_error(xyz[k], p[k], d.hi[k]) - detail::fma(w, point[k], -p[k]);
+        for (glm::length_t k = 0; k < 3; ++k) d.lo[k] = difference_error(xyz[k], p[k], d.hi[k]) - detail::fma(w, point[k], -p[k]);
     } else {
         (void)w;
         (void)point;
@@ -97,7 +99,7 @@ PHONG_INLINE constexpr surface_frame<T, Q> prepare(const glm::vec<3, T, Q>& posi
             const mask_t<T> down = b <= T(1);
             const T bu = b * up;
             vec3 position_up(T(0));
-            for (int k = 0; k < 3; ++k) position_up[k] = detail::select(down, position[k] * bu, position_b[k] * up);
+            for (glm::length_t k = 0; k < 3; ++k) position_up[k] = detail::select(down, position[k] * bu, position_b[k] * up);
             e = difference_twofold<light_kind::any>(eye_ab * up, w_a, position_up);
         }
     }
@@ -152,7 +154,7 @@ PHONG_INLINE constexpr light_unit<T, Q> light_rounded_once(const surface_frame<T
     const mask_t<T> in_range = largest_d <= largest<T>(); // an overflowed d has no direction
     const T scale = math_traits<T>::inverse_pow2_scale(detail::select(in_range, largest_d, T(1)));
     vec3 hs(T(0)), ls(T(0));
-    for (int k = 0; k < 3; ++k) {
+    for (glm::length_t k = 0; k < 3; ++k) {
         hs[k] = detail::select(in_range, d.hi[k] * scale, T(0));
         ls[k] = detail::select(in_range, d.lo[k] * scale, T(0)); // lo is NaN when d overflowed
     }
@@ -231,3 +233,4 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
 }
 
 } // namespace phong::detail::stable
+#include "../core/diagnostics_pop.hpp"

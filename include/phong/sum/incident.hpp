@@ -10,6 +10,8 @@
 #include <limits>
 #include <type_traits>
 
+#include "../core/diagnostics_push.hpp"
+
 namespace phong {
 
 /// One light as seen from the shaded point Q, when the renderer has computed it already:
@@ -219,3 +221,4 @@ PHONG_INLINE constexpr color<F, T, Q> shade_incident(const glm::vec<3, T, Q>& no
 }
 
 } // namespace phong
+#include "../core/diagnostics_pop.hpp"

@@ -30,7 +30,7 @@ PHONG_INLINE constexpr T attenuation_polynomial(T d, T c0, T c1, T c2)
 {
     d = detail::min(d, detail::largest<T>()); // inf -> max: keeps c2 * d finite
     const T denominator = c0 + d * (c1 + c2 * d);
-    return T(1) / detail::max(denominator, T(detail::attenuation_denominator_min<Floor>));
+    return T(1) / detail::max(denominator, T(detail::scalar_t<T>(detail::attenuation_denominator_min<Floor>)));
 }
 
 /// Windowed inverse square (Filament, three.js "physically based" falloff):
@@ -44,7 +44,7 @@ PHONG_INLINE constexpr T attenuation_windowed(T d, T range)
     d = detail::min(d, detail::largest<T>());
     const T ratio = detail::min(d / range, T(65536)); // ratio^4 stays finite; window is 0 anyway
     const T window = detail::clamp(T(1) - detail::pow<4>(ratio), T(0), T(1));
-    return window * window / detail::max(d * d, T(detail::attenuation_denominator_min<Floor>));
+    return window * window / detail::max(d * d, T(detail::scalar_t<T>(detail::attenuation_denominator_min<Floor>)));
 }
 
 /// OpenGL spot factor for the unit light direction l (from Q toward the light) and unit axis s:

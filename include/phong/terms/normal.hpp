@@ -9,6 +9,8 @@
 
 #include <type_traits>
 
+#include "../core/diagnostics_push.hpp"
+
 namespace phong {
 
 namespace detail {
@@ -96,3 +98,4 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> transform_normal(const glm::mat<3, 3, T
 }
 
 } // namespace phong
+#include "../core/diagnostics_pop.hpp"

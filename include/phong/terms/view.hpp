@@ -7,6 +7,8 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "../core/diagnostics_push.hpp"
+
 namespace phong {
 
 namespace detail {
@@ -38,10 +40,10 @@ template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<4, T, Q> eye_from_projection(const glm::mat<4, 4, T, Q>& M)
 {
     // Rows of M (column-major: M[c][r]), rescaled so the 3x3 minors neither overflow nor underflow.
-    const auto row = [&](int r) { return detail::rescaled(glm::vec<4, T, Q>(M[0][r], M[1][r], M[2][r], M[3][r])); };
+    const auto row = [&](glm::length_t r) { return detail::rescaled(glm::vec<4, T, Q>(M[0][r], M[1][r], M[2][r], M[3][r])); };
     const glm::vec<4, T, Q> a = row(0), b = row(1), c = row(3), depth = row(2);
     // 3x3 determinant of the columns i, j, k of the rows a, b, c.
-    const auto det3 = [&](int i, int j, int k) {
+    const auto det3 = [&](glm::length_t i, glm::length_t j, glm::length_t k) {
         return a[i] * (b[j] * c[k] - b[k] * c[j]) - a[j] * (b[i] * c[k] - b[k] * c[i]) + a[k] * (b[i] * c[j] - b[j] * c[i]);
     };
     glm::vec<4, T, Q> E(det3(1, 2, 3), -det3(0, 2, 3), det3(0, 1, 3), -det3(0, 1, 2));
@@ -65,3 +67,4 @@ PHONG_INLINE constexpr glm::vec<3, T, Q> view_vector(const glm::vec<4, T, Q>& ey
 }
 
 } // namespace phong
+#include "../core/diagnostics_pop.hpp"

@@ -58,7 +58,7 @@ void stream_inputs(step_stream<V, T>& io, std::size_t i, std::size_t steps, std:
     for (std::size_t k = 0; k < steps && k < B; ++k) {
         step_lanes<V, Q> lanes;
         load_step<F, V, Points, T, Q>(i + k * W, count, points, lanes);
-        for (int c = 0; c < 3; ++c) {
+        for (glm::length_t c = 0; c < 3; ++c) {
             store(lanes.position[c], in_block[k][c]);
             store(lanes.normal[c], in_block[k][3 + c]);
             if constexpr (F.view == view_model::given) store(lanes.view[c], in_block[k][6 + c]);
@@ -98,7 +98,7 @@ void store_blocks(const step_stream<V, T>& io, std::size_t i, std::size_t steps,
     if (io.out[0] != out_block[0][0]) return;
     for (std::size_t k = 0; k < steps && k < B; ++k) {
         color<F, V, Q> c;
-        for (int ch = 0; ch < (F.alpha ? 4 : 3); ++ch) c[ch] = load<V>(out_block[k][ch]);
+        for (glm::length_t ch = 0; ch < (F.alpha ? 4 : 3); ++ch) c[ch] = load<V>(out_block[k][ch]);
         store_step<F, V, T, Q>(c, i + k * W, count, out);
     }
 }

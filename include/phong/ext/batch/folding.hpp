@@ -44,7 +44,7 @@ bool foldable(const material<T, Q>& m, std::span<const light<T, Q>> lights)
         return a == T(0) || b == T(0) || (std::abs(p) >= std::numeric_limits<T>::min() && std::abs(p) <= std::numeric_limits<T>::max());
     };
     for (const light<T, Q>& L : lights)
-        for (int c = 0; c < 3; ++c)
+        for (glm::length_t c = 0; c < 3; ++c)
             if (!fine(m.ka[c], L.ambient[c]) || !fine(m.kd[c], L.diffuse[c]) || !fine(m.ks[c], L.specular[c])) return false;
     return true;
 }

@@ -97,7 +97,10 @@ struct aos8_permutes {
     constexpr aos8_permutes()
     {
         for (int o = 0; o < 3; ++o)
-            for (int k = 0; k < 8; ++k) gather[o][k] = (3 * k + o) % 8, scatter[o][k] = (8 * o + k) / 3;
+            for (int k = 0; k < 8; ++k) {
+                gather[o][k] = (3 * k + o) % 8;
+                scatter[o][k] = (8 * o + k) / 3;
+            }
     }
 };
 inline constexpr aos8_permutes aos8_permute_table{};
@@ -178,7 +181,7 @@ inline glm::vec<3, V, Q> aos_lanes([[maybe_unused]] const T* s)
 #if PHONG_HAS_XSIMD && defined(__AVX512F__)
     if constexpr (avx512_lanes<V, T>) {
         constexpr const aos_permutes<W>& P = aos_permute_table<W>;
-        for (int o = 0; o < 3; ++o) {
+        for (glm::length_t o = 0; o < 3; ++o) {
             if constexpr (std::is_same_v<T, float>) {
                 const __m512 t = _mm512_permutex2var_ps(_mm512_loadu_ps(s), _mm512_load_si512(P.ab[o]), _mm512_loadu_ps(s + W));
                 r[o] = V(_mm512_permutex2var_ps(t, _mm512_load_si512(P.with_c[o]), _mm512_loadu_ps(s + 2 * W)));
@@ -227,7 +230,7 @@ inline void interleave_lanes([[maybe_unused]] const glm::vec<3, V, Q>& c, [[mayb
 #if PHONG_HAS_XSIMD && defined(__AVX512F__)
     if constexpr (avx512_lanes<V, T>) {
         constexpr const aos_permutes<W>& P = aos_permute_table<W>;
-        for (int b = 0; b < 3; ++b) {
+        for (std::size_t b = 0; b < 3; ++b) {
             if constexpr (std::is_same_v<T, float>) {
                 const __m512 t = _mm512_permutex2var_ps(c[0], _mm512_load_si512(P.xy[b]), c[1]);
                 _mm512_storeu_ps(d + b * W, _mm512_permutex2var_ps(t, _mm512_load_si512(P.with_z[b]), c[2]));
@@ -249,7 +252,7 @@ inline void interleave_lanes([[maybe_unused]] const glm::vec<3, V, Q>& c, [[mayb
 }
 
 /// Stores a colour's lanes into count interleaved rgb at out (interleave_lanes or a small buffer).
-template <class V, class T, int N, glm::qualifier Q>
+template <class V, class T, glm::length_t N, glm::qualifier Q>
 void store_interleaved(const glm::vec<N, V, Q>& c, glm::vec<N, T, Q>* out, std::size_t count)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
@@ -257,9 +260,9 @@ void store_interleaved(const glm::vec<N, V, Q>& c, glm::vec<N, T, Q>* out, std::
         if (count == W) return interleave_lanes<V, T, Q>(c, &out->x);
     }
     alignas(64) T buf[4][W];
-    for (int ch = 0; ch < N; ++ch) store(c[ch], buf[ch]);
+    for (glm::length_t ch = 0; ch < N; ++ch) store(c[ch], buf[ch]);
     for (std::size_t k = 0; k < count; ++k)
-        for (int ch = 0; ch < N; ++ch) out[k][ch] = buf[ch][k];
+        for (glm::length_t ch = 0; ch < N; ++ch) out[k][ch] = buf[ch][k];
 }
 
 /// The lanes of one batch step: position, normal, view (view_model::given only), front-facing flags.
@@ -309,8 +312,8 @@ template <class V, class T> struct step_stream {
         if constexpr (Flags && !F.alpha && aos_in_registers<V, T, Q>) {
             if (interleaved_out) return interleave_lanes<V, T, Q>(c, out[0] + k * out_stride);
         }
-        constexpr int channels = F.alpha ? 4 : 3;
-        for (int ch = 0; ch < channels; ++ch) store(c[ch], out[ch] + k * out_stride);
+        constexpr glm::length_t channels = F.alpha ? 4 : 3;
+        for (glm::length_t ch = 0; ch < channels; ++ch) store(c[ch], out[ch] + k * out_stride);
     }
 };
 
@@ -340,10 +343,10 @@ template <features F, class V, class T, glm::qualifier Q, class Output>
 void store_step(const color<F, V, Q>& c, std::size_t i, std::size_t count, const Output& out)
 {
     constexpr std::size_t W = sizeof(V) / sizeof(T);
-    constexpr int channels = F.alpha ? 4 : 3;
+    constexpr glm::length_t channels = F.alpha ? 4 : 3;
     if constexpr (std::is_same_v<Output, soa_rgba<T>>) {
         T* dst[4] = {out.r.data(), out.g.data(), out.b.data(), F.alpha ? out.a.data() : nullptr};
-        for (int ch = 0; ch < channels; ++ch) {
+        for (glm::length_t ch = 0; ch < channels; ++ch) {
             if (count == W) {
                 store(c[ch], dst[ch] + i);
             } else {

@@ -35,7 +35,7 @@ template <class V, glm::qualifier Q> material<V, Q> material_of_fields(const V (
 /// Material m's 14 fields into column k of the field lanes (lane[f][k]): a scalar transpose.
 template <class T, glm::qualifier Q, std::size_t W> void put_fields(T (&lane)[14][W], std::size_t k, const material<T, Q>& m)
 {
-    for (int c = 0; c < 3; ++c) {
+    for (glm::length_t c = 0; c < 3; ++c) {
         lane[c][k] = m.ka[c];
         lane[3 + c][k] = m.kd[c];
         lane[6 + c][k] = m.ks[c];

@@ -26,14 +26,14 @@ template <class V, glm::qualifier Q>
 folded_sums<V, Q> select_sums(const mask_t<V>& lanes, const folded_sums<V, Q>& sums, const folded_sums<V, Q>& before)
 {
     folded_sums<V, Q> r;
-    for (int c = 0; c < 3; ++c) r.total[c] = detail::select(lanes, sums.total[c], before.total[c]);
+    for (glm::length_t c = 0; c < 3; ++c) r.total[c] = detail::select(lanes, sums.total[c], before.total[c]);
     return r;
 }
 template <class V, glm::qualifier Q>
 light_sums<V, Q> select_sums(const mask_t<V>& lanes, const light_sums<V, Q>& sums, const light_sums<V, Q>& before)
 {
     light_sums<V, Q> r;
-    for (int c = 0; c < 3; ++c) {
+    for (glm::length_t c = 0; c < 3; ++c) {
         r.ambient[c] = detail::select(lanes, sums.ambient[c], before.ambient[c]);
         r.diffuse[c] = detail::select(lanes, sums.diffuse[c], before.diffuse[c]);
         r.specular[c] = detail::select(lanes, sums.specular[c], before.specular[c]);

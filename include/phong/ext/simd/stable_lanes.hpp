@@ -166,7 +166,7 @@ struct surface_frame {
 template <class V, glm::qualifier Q>
 inline void widen3(const glm::vec<3, V, Q>& v, glm::vec<3, double_t<V>, Q>& lower, glm::vec<3, double_t<V>, Q>& upper)
 {
-    for (int k = 0; k < 3; ++k) {
+    for (glm::length_t k = 0; k < 3; ++k) {
         const lane_parts<V> h = widen(v[k]);
         lower[k] = h.lower, upper[k] = h.upper;
     }
