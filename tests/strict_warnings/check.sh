@@ -11,7 +11,9 @@
 # Fails on any warning whose location is a phong header (the tests' own lines may warn: not phong's).
 # And tests/strict_warnings/user_builds.cpp, a user's file with every public header, compiled with
 # the same warnings as errors without exceptions and RTTI and under GLM's type-changing macros; and
-# tests/strict_warnings/aligned_glm.cpp run with GLM's 16-byte vec3 (also under ASan and UBSan).
+# tests/strict_warnings/aligned_glm.cpp run with GLM's 16-byte vec3 (also under ASan and UBSan); and
+# handler_library.cpp, a shared library built with -fvisibility=hidden, with handler_app.cpp: the
+# application's precondition handler must see the library's failed check.
 # Usage: tests/strict_warnings/check.sh [test files...]   (default: tests/*.test.cpp)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -79,12 +81,26 @@ for b in "g++|-O2" "g++|-O2 -march=native" "clang++|-O1 -march=native -fsanitize
     rm -f "$out/aligned_glm"
   fi
 done
+# and a shared library built with -fvisibility=hidden: its failed checks reach the handler its
+# executable installed (one handler for the process)
+for cxx in g++ clang++; do
+  k=$((k + 1))
+  log="$out/0/tests/handler.$k.txt"
+  hidden=(-std=c++20 -O2 -Iinclude -Wall -Wextra -Wpedantic -Werror -fvisibility=hidden -fvisibility-inlines-hidden)
+  parse "$log" "$cxx" "${hidden[@]}" -fPIC -shared -o "$out/libhandler.so" tests/strict_warnings/handler_library.cpp
+  parse "$log.app" "$cxx" "${hidden[@]}" -o "$out/handler_app" tests/strict_warnings/handler_app.cpp -L"$out" -lhandler \
+    -Wl,-rpath,"$out"
+  if [[ -x "$out/handler_app" ]]; then
+    "$out/handler_app" >>"$log" 2>&1 || echo "include/phong/(none):0:0: error: handler_app failed with $cxx" >>"$log"
+    rm -f "$out/handler_app" "$out/libhandler.so"
+  fi
+done
 # the warnings located in phong's headers, one line per place and flag
-grep -h -E '(^|/)include/phong/[^:]*:[0-9]+:[0-9]+: (warning|error):' "$out"/*/tests/*.txt |
+grep -h -E '(^|/)include/phong/[^:]*:[0-9]+:[0-9]+: (warning|error):' "$out"/*/tests/*.txt* |
   sed -E 's|^.*(include/phong/)|\1|; :a; s|[A-Za-z_]+/\.\./||; ta' | sort -u >"$out/found" || true
 if [[ -s "$out/found" ]]; then
-  echo "strict warnings: phong's headers warn in a strict user build:"
+  echo "strict warnings: phong's headers warn or fail in a user's build:"
   cat "$out/found"
   exit 1
 fi
-echo "strict warnings: ${#tests[@]} test files x ${#configs[@]} builds, tests/strict_warnings/user_builds.cpp x ${#builds[@]} and aligned_glm.cpp x 3 (run), no warning in phong's headers"
+echo "strict warnings: ${#tests[@]} test files x ${#configs[@]} builds, tests/strict_warnings/user_builds.cpp x ${#builds[@]}, aligned_glm.cpp x 3 and handler_app x 2 (run): no warning in phong's headers, every run right"

@@ -107,8 +107,10 @@ namespace detail {
 }
 
 // The installed handler, atomic: g++/clang++ __atomic builtins (no <atomic> in every translation unit).
+// Default visibility: one handler for the executable and the shared libraries it links, also when
+// they are built with -fvisibility=hidden (else each shared object would keep its own).
 #if defined(__GNUC__) || defined(__clang__)
-inline precondition_handler current_precondition_handler = &default_precondition_handler;
+__attribute__((visibility("default"))) inline precondition_handler current_precondition_handler = &default_precondition_handler;
 inline precondition_handler exchange_handler(precondition_handler h) noexcept
 {
     return __atomic_exchange_n(&current_precondition_handler, h, __ATOMIC_SEQ_CST);
@@ -124,8 +126,11 @@ inline precondition_handler load_handler() noexcept { return current_preconditio
 
 /// Installs the handler failed precondition checks call (debug builds: validate() of every
 /// parameter; every build: shade_batch's span checks) and returns the previous one; nullptr restores
-/// the default. Thread-safe, process-wide. A handler may return (throwing terminates: noexcept
-/// callers): the call goes on as under NDEBUG, result unspecified but no undefined behaviour.
+/// the default. Thread-safe, process-wide: shared by the executable and the shared libraries it links
+/// (g++, clang++: whatever their -fvisibility); a library opened with dlopen shares it only if the
+/// executable exports its symbols (-rdynamic), else it has its own. A handler may return (throwing
+/// terminates: noexcept callers): the call goes on as under NDEBUG, result unspecified but no
+/// undefined behaviour.
 /// Not consulted in constant evaluation (a compile error) nor in CUDA device code (assert).
 inline precondition_handler set_precondition_handler(precondition_handler handler) noexcept
 {
