@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (clang++ 14, Debug,
-# -fno-sanitize-recover=all: the first report fails its test). Zero reports expected.
+# -fno-sanitize-recover=all: the first report fails its test), with libstdc++'s bounds checks
+# (-D_GLIBCXX_ASSERTIONS: std::span, std::array, std::vector indexes). Zero reports expected.
 # This is also CI's clang++ build: Debug with -Wall -Wextra -Wpedantic -Werror, where clang rejects
 # non-constexpr std:: calls in constant evaluation that g++ folds silently (tests/constexpr.test.cpp).
 # A plain clang++ Debug build of the same suite (the test-clang workflow, for contributors) would
