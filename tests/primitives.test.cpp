@@ -62,6 +62,8 @@ TEST_CASE_TEMPLATE("primitives: generic normals are the seed's formulas", T, flo
     CHECK(phong::tapered_cylinder_normal(p, T(0.5), primitive_part::base) == vec3<T>(0, 0, -1));
     CHECK(phong::tapered_cylinder_normal(p, T(0.5), primitive_part::cap) == vec3<T>(0, 0, 1));
     CHECK(phong::tapered_cylinder_normal(p, T(0.5), primitive_part::none) == vec3<T>(0));
+    CHECK(phong::tapered_cylinder_normal(p, T(0.5), primitive_part::surface) == vec3<T>(0));
+    CHECK(phong::tapered_cylinder_normal(p, T(0.5), static_cast<primitive_part>(9)) == vec3<T>(0)); // out of range
     // Cube: the face of the largest |coordinate|, ties to the first axis.
     CHECK(phong::cube_normal(vec3<T>(T(0.3), T(-1), T(0.5))) == vec3<T>(0, -1, 0));
     CHECK(phong::cube_normal(vec3<T>(T(-1), T(0.2), T(0.9))) == vec3<T>(-1, 0, 0));

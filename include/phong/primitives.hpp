@@ -37,7 +37,7 @@ PHONG_HD constexpr glm::vec<3, T, Q> square_normal(const glm::vec<3, T, Q>& /*p*
 }
 
 /// Wall of the generic tapered cylinder F = x^2 + y^2 - (1 + (s - 1) z)^2 = 0, outward:
-///   m' = grad F / 2 = (x, y, -(s - 1)(1 + (s - 1) z))   (TeX: m' = (x,\ y,\ -(s-1)(1+(s-1)z)))
+///   m' = grad F / 2 = (x, y, -(s - 1)(1 + (s - 1) z))
 /// Pre: s >= 0, P' on the wall, 0 <= z <= 1. Edge: a cone's apex (s = 0, z = 1, x = y = 0) gives 0.
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_wall_normal(const glm::vec<3, T, Q>& p, T s)
@@ -316,7 +316,7 @@ PHONG_HD constexpr ray_hit<T> ray_cube(const glm::vec<3, T, Q>& S, const glm::ve
 }
 
 /// The generic normal m' of the tapered cylinder part hit (wall, base or cap) at P'.
-/// Edge: part none or surface gives 0 (no normal).
+/// Edge: part none or surface (or a value outside the enumeration) gives 0 (no normal).
 template <class T, glm::qualifier Q>
 PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_normal(const glm::vec<3, T, Q>& p, T s, primitive_part part)
 {
@@ -324,8 +324,10 @@ PHONG_HD constexpr glm::vec<3, T, Q> tapered_cylinder_normal(const glm::vec<3, T
     case primitive_part::wall: return phong::tapered_cylinder_wall_normal(p, s);
     case primitive_part::base: return phong::tapered_cylinder_base_normal(p);
     case primitive_part::cap: return phong::tapered_cylinder_cap_normal(p);
-    default: return glm::vec<3, T, Q>(T(0));
+    case primitive_part::none:
+    case primitive_part::surface: break;
     }
+    return glm::vec<3, T, Q>(T(0));
 }
 
 } // namespace phong

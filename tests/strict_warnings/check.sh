@@ -5,8 +5,8 @@
 # -Wconversion, -Wsign-conversion, -Wdouble-promotion, -Wfloat-equal, -Wshadow, -Wold-style-cast,
 # -Wcast-qual, -Wextra-semi, -Wzero-as-null-pointer-constant, -Wundef and each compiler's own
 # (g++: -Wuseless-cast, -Wduplicated-cond, -Wlogical-op; clang++: -Wcomma, -Wshorten-64-to-32,
-# -Wdocumentation). The builds: g++ x86-64 -O2 and x86-64-v4 -O0 (g++'s intrinsics are macros
-# without optimization), clang++ x86-64-v3 and -v4 -O2 (the SIMD back ends), clang++ -v4 with GLM's
+# -Wdocumentation; and -Weverything on user_builds.cpp). The builds: g++ x86-64 -O2 and x86-64-v4
+# -O0 (g++'s intrinsics are macros without optimization), clang++ x86-64-v3 and -v4 -O2 (the SIMD back ends), clang++ -v4 with GLM's
 # GLM_FORCE_SIZE_T_LENGTH (vector indexes of type size_t), aarch64 g++ -O2 (NEON).
 # Fails on any warning whose location is a phong header (the tests' own lines may warn: not phong's).
 # And tests/strict_warnings/user_builds.cpp, a user's file with every public header, compiled with
@@ -53,11 +53,16 @@ done
 # exceptions and RTTI, and with GLM's configuration macros that change its types (size_t lengths,
 # explicit constructors, x/y/z/w members only, 16-byte aligned vec3 with SIMD intrinsics); -Werror:
 # its own lines too
+# and clang++'s -Weverything, less the groups no C++20 project keeps (padding, C++98 compatibility)
+# and the user's own prototypes
+everything=(-Weverything -Wno-padded -Wno-c++98-compat -Wno-c++98-compat-pedantic -Wno-c++20-compat
+            -Wno-pre-c++20-compat-pedantic -Wno-missing-prototypes)
 builds=("g++|-fno-exceptions -fno-rtti" "g++|-march=x86-64-v4 -fno-exceptions -fno-rtti"
         "clang++|-fno-exceptions -fno-rtti" "clang++|-march=x86-64-v4 -fno-exceptions -fno-rtti"
         "g++|-march=x86-64-v4 -DGLM_FORCE_SIZE_T_LENGTH" "clang++|-march=x86-64-v3 -DGLM_FORCE_SIZE_T_LENGTH"
         "g++|-march=x86-64-v3 -DGLM_FORCE_EXPLICIT_CTOR -DGLM_FORCE_XYZW_ONLY"
-        "clang++|-march=x86-64-v4 -DGLM_FORCE_DEFAULT_ALIGNED_GENTYPES -DGLM_FORCE_INTRINSICS")
+        "clang++|-march=x86-64-v4 -DGLM_FORCE_DEFAULT_ALIGNED_GENTYPES -DGLM_FORCE_INTRINSICS"
+        "clang++|-march=x86-64-v4 ${everything[*]}")
 k=0
 for b in "${builds[@]}"; do
   k=$((k + 1))

@@ -77,8 +77,7 @@ PHONG_INLINE constexpr T spot_smooth(const glm::vec<3, T, Q>& l, const glm::vec<
 }
 
 /// Linear spot factor (LearnOpenGL, Unity, Godot): a straight ramp in the cosine,
-///   spot = clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1),  c = dot(-l, s)
-///   (TeX: \mathrm{clamp}\big(\frac{c - \cos\theta_o}{\cos\theta_i - \cos\theta_o}, 0, 1\big)).
+///   spot = clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1),  c = dot(-l, s).
 /// Pre: l, s unit; -1 <= cos_outer <= cos_inner <= 1. Edge: cos_inner == cos_outer gives a hard
 /// edge (no division by zero); both -1 give 1; l = 0 gives c = 0. Bound: spot in [0, 1]; an
 /// error E in c moves it by at most E / (cos_inner - cos_outer).

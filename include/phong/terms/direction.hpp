@@ -45,7 +45,7 @@ struct direction_and_distance {
 } // namespace detail
 
 /// The unit vector from Q toward the homogeneous point P:
-///   direction = normalize(P.xyz - P.w Q)      (TeX: \hat l = (P_{xyz} - P_w Q) / |P_{xyz} - P_w Q|)
+///   direction = normalize(P.xyz - P.w Q)
 ///   distance  = |P.xyz - P.w Q| / P.w for P.w > 0, +inf for P.w = 0.
 /// Lights (w = 1 positional, w = 0 directional) and eyes alike, no branch on w.
 /// Pre: P.w >= 0, finite. Edge: P at Q (w > 0) gives direction 0, distance 0; P.xyz = 0 with
@@ -65,7 +65,7 @@ PHONG_INLINE constexpr detail::direction_and_distance<T, Q> toward(const glm::ve
 }
 
 namespace detail {
-/// classic Phong's light direction \hat l_i from a homogeneous light position L (w = 1 or 0), eye coords.
+/// classic Phong's light direction l_i (unit) from a homogeneous light position L (w = 1 or 0), eye coords.
 /// The same as toward(L, Q).direction; see there for domain and edges.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr glm::vec<3, T, Q> light_direction(const glm::vec<4, T, Q>& L, const glm::vec<3, T, Q>& point)

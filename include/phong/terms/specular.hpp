@@ -86,9 +86,8 @@ PHONG_INLINE constexpr T one_minus_halfway_cosine(const glm::vec<3, T, Q>& n, co
 } // namespace detail
 
 /// Phong's reflection-based specular factor (classic Phong, the GLSL ADS shader):
-///   r = reflect(-l, n) = 2 (n.l) n - l,   s = [n.l > 0] max(r.v, 0)^m   (base clamped to [0, 1])
-/// (TeX: s = [\hat n\cdot\hat l > 0]\,\max(\hat r\cdot\hat v, 0)^m). Pre: n, l, v unit (or 0);
-/// m >= 0 finite. Edge: 0 when n.l <= 0; m = 0 gives 1 where lit; l = 0 or v = 0 give 0 (m > 0).
+///   r = reflect(-l, n) = 2 (n.l) n - l,   s = [n.l > 0] max(r.v, 0)^m   (base clamped to [0, 1]).
+/// Pre: n, l, v unit (or 0); m >= 0 finite. Edge: 0 when n.l <= 0; m = 0 gives 1 where lit; l = 0 or v = 0 give 0 (m > 0).
 /// Accuracy: the exact mode's (phong/accuracy.hpp; m amplifies r.v's rounding).
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T specular_reflection(const glm::vec<3, T, Q>& n, const glm::vec<3, T, Q>& l,
