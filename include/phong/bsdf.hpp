@@ -98,6 +98,17 @@ PHONG_INLINE constexpr T luminance(const glm::vec<3, T, Q>& c)
     return T(0.212671) * c.x + T(0.715160) * c.y + T(0.072169) * c.z;
 }
 
+/// The sample weight f cos / pdf, f <= C pdf. Below 2^-64, f and pdf are scaled by 2^64 first (exact,
+/// the same quotient): -freciprocal-math turns the three divisions into f * (1 / pdf), and 1 / pdf
+/// overflows for a subnormal pdf. opaque: -ffast-math may not regroup the scale out again.
+template <class T, glm::qualifier Q>
+PHONG_INLINE constexpr glm::vec<3, T, Q> sample_weight(const glm::vec<3, T, Q>& f, T pdf, T cos)
+{
+    const T scale = pdf < T(0x1p-64) ? T(0x1p64) : T(1);
+    const glm::vec<3, T, Q> scaled_f(ieee::opaque(f.x * scale), ieee::opaque(f.y * scale), ieee::opaque(f.z * scale));
+    return scaled_f / ieee::opaque(pdf * scale) * cos;
+}
+
 /// Mitsuba 0.6's lobe choice: lum(ks) / (lum(kd) + lum(ks)); 0 when both are black.
 template <class T, glm::qualifier Q>
 PHONG_INLINE constexpr T luminance_probability(const glm::vec<3, T, Q>& kd, const glm::vec<3, T, Q>& ks)
@@ -385,7 +396,7 @@ struct modified_phong_bsdf {
         out.pdf = (T(1) - p) * cz * detail::bsdf::inv_pi<T> + p * (shininess + T(1)) * detail::bsdf::inv_two_pi<T> * pw;
         if (!(out.pdf > T(0))) return bsdf_sample<T, Q>{out.wi, T(0), vec3(T(0)), out.lobe};
         const vec3 f = kd * detail::bsdf::inv_pi<T> + ks * ((shininess + T(2)) * detail::bsdf::inv_two_pi<T> * pw);
-        out.weight = f / out.pdf * cz; // f / pdf is bounded (f <= C pdf) even where both are subnormal
+        out.weight = detail::bsdf::sample_weight(f, out.pdf, cz); // f / pdf is bounded even where both are subnormal
         return out;
     }
 
@@ -487,7 +498,9 @@ struct blinn_phong_bsdf {
     PHONG_INLINE constexpr T specular_pdf(const glm::vec<2, T>& hp) const
     {
         const T d = (shininess + T(1)) * detail::bsdf::inv_two_pi<T> * hp.x;
-        return (hp.y >= T(0.5) || d < T(2) * hp.y * detail::largest<T>()) ? d / (T(2) * hp.y) : detail::largest<T>();
+        // opaque: -fassociative-math would regroup (2 |H|) largest as |H| (2 largest) = |H| inf
+        const T two_len = detail::ieee::opaque(T(2) * hp.y);
+        return (two_len >= T(1) || d < two_len * detail::largest<T>()) ? d / two_len : detail::largest<T>();
     }
 
     /// f(wo, wi) = kd / pi + ks N(m) (n.h)^m; 0 unless wo.z > 0 and wi.z > 0. Pre: wo, wi unit.
@@ -533,7 +546,7 @@ struct blinn_phong_bsdf {
         out.pdf = (T(1) - p) * cz * detail::bsdf::inv_pi<T> + p * specular_pdf(hp);
         if (!(out.pdf > T(0))) return bsdf_sample<T, Q>{out.wi, T(0), vec3(T(0)), out.lobe};
         const vec3 f = kd * detail::bsdf::inv_pi<T> + ks * (norm * hp.x);
-        out.weight = f / out.pdf * cz; // f / pdf is bounded (f <= C pdf) even where both are subnormal
+        out.weight = detail::bsdf::sample_weight(f, out.pdf, cz); // f / pdf is bounded even where both are subnormal
         return out;
     }
 

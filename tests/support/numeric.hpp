@@ -22,6 +22,15 @@ template <class T> struct tolerance {
     static constexpr T rel(int ulps) { return eps * T(ulps); }
 };
 
+/// x finite, by its bits: std::isfinite is folded to true under -ffinite-math-only (the
+/// -ffast-math builds of .ci/steps/36-fast-math.sh).
+template <class T> bool finite_bits(T x)
+{
+    using U = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    const U exponent = sizeof(T) == 4 ? U(0x7f800000u) : U(0x7ff0000000000000ull);
+    return (std::bit_cast<U>(x) & exponent) != exponent;
+}
+
 /// Maps a float/double to an integer whose order is the order of the values (-0 and +0 both 0),
 /// so the difference of two mapped values is their distance in ulp, also across zero (GLM's
 /// floatDistance breaks there).

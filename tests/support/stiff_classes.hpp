@@ -433,15 +433,6 @@ struct error_stats {
     double max_rel = 0;        ///< max |computed - exact| / |exact| over finite channels (absolute where exact = 0)
 };
 
-/// x finite, by its bits: std::isfinite is folded to true under -ffinite-math-only (the
-/// -ffast-math builds of .ci/steps/36-fast-math.sh), and a NaN error would break the sort below.
-template <class T> bool finite_bits(T x)
-{
-    using U = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-    const U exponent = sizeof(T) == 4 ? U(0x7f800000u) : U(0x7ff0000000000000ull);
-    return (std::bit_cast<U>(x) & exponent) != exponent;
-}
-
 /// Accumulates channel errors; summary() gives the statistics.
 class error_accumulator {
 public:
