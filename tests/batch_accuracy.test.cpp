@@ -85,7 +85,7 @@ template <class T, specular_model S, evaluation M = evaluation::stable, bool int
             continue;
         }
         CHECK(e.non_finite == 0);
-#if defined(__GNUC__) && !defined(__clang__) && defined(__ASSOCIATIVE_MATH__) && !defined(__FMA__)
+#if defined(__GNUC__) && !defined(__clang__) && PHONG_FP_BARRIER && !defined(__FMA__)
         // g++ -ffast-math without FMA instructions: the exact double lanes' p99 in tiny_directional
         // (measured with the SSE2 lanes, PHONG_SIMD_WITHOUT_FMA; shade_batch now shades point by
         // point there) over these 300 scenes was 69 ulp against the published 60; a p99 of 300 scenes is a noisy

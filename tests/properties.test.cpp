@@ -68,27 +68,26 @@ constexpr features rich{.scene_ambient = true, .light_ambient = true, .diffuse =
 constexpr features classic{}; // seed 000's defaults, exact
 
 // Only the light's diffuse and specular terms: no ambient, no emission, no two-sided flip.
-constexpr features lit_only(phong::specular_model s, evaluation e)
-{
+// (Variables, not functions: clang++ 16 flags an internal function called only in constant
+// expressions, -Wunneeded-internal-declaration.)
+template <phong::specular_model S, evaluation E> constexpr features lit_only = [] {
     features f{.scene_ambient = false, .light_ambient = false};
-    f.specular = s;
-    f.mode = e;
+    f.specular = S;
+    f.mode = E;
     return f;
-}
-constexpr features rich_phong_exact()
-{
+}();
+constexpr features rich_phong_exact = [] {
     features f = rich;
     f.specular = phong::specular_model::phong;
     f.mode = evaluation::exact;
     return f;
-}
-constexpr features classic_blinn_stable()
-{
+}();
+constexpr features classic_blinn_stable = [] {
     features f = classic;
     f.specular = phong::specular_model::blinn;
     f.mode = evaluation::stable;
     return f;
-}
+}();
 
 template <features F, class T> vec3<T> shade_of(const vec3<T>& Q, const vec3<T>& n, const phong::material<T>& mat,
                                                 const std::vector<phong::light<T>>& lights, const phong::environment<T>& env)
@@ -123,7 +122,7 @@ TEST_CASE_TEMPLATE("properties: outputs are non-negative and bounded by the coef
                    property(std::integral_constant<features, rich>{}));
     check_property("0 <= shade <= ka La + kd sum Ld_i + ks sum Ls_i (classic)",
                    property(std::integral_constant<features, classic>{}));
-    check_property("... (rich, Phong, exact)", property(std::integral_constant<features, rich_phong_exact()>{}));
+    check_property("... (rich, Phong, exact)", property(std::integral_constant<features, rich_phong_exact>{}));
 }
 
 TEST_CASE_TEMPLATE("properties: superposition, the sum over lights is the sum of single-light shades", T, float, double)
@@ -202,13 +201,13 @@ TEST_CASE_TEMPLATE("properties: a light behind the surface gives no diffuse and 
         };
     };
     check_property("n.l < 0: diffuse = specular = 0 (Phong, exact)",
-                   property(std::integral_constant<features, lit_only(phong::specular_model::phong, evaluation::exact)>{}));
+                   property(std::integral_constant<features, lit_only<phong::specular_model::phong, evaluation::exact>>{}));
     check_property("n.l < 0: diffuse = specular = 0 (Phong, stable)",
-                   property(std::integral_constant<features, lit_only(phong::specular_model::phong, evaluation::stable)>{}));
+                   property(std::integral_constant<features, lit_only<phong::specular_model::phong, evaluation::stable>>{}));
     check_property("n.l < 0: diffuse = specular = 0 (Blinn, exact)",
-                   property(std::integral_constant<features, lit_only(phong::specular_model::blinn, evaluation::exact)>{}));
+                   property(std::integral_constant<features, lit_only<phong::specular_model::blinn, evaluation::exact>>{}));
     check_property("n.l < 0: diffuse = specular = 0 (Blinn, stable)",
-                   property(std::integral_constant<features, lit_only(phong::specular_model::blinn, evaluation::stable)>{}));
+                   property(std::integral_constant<features, lit_only<phong::specular_model::blinn, evaluation::stable>>{}));
 }
 
 TEST_CASE_TEMPLATE("properties: reflect keeps length and is an involution", T, float, double)
@@ -273,7 +272,7 @@ TEST_CASE_TEMPLATE("properties: a directional light is the limit of a far positi
     };
     check_property("directional = lim_{t->inf} positional at Q + t dir (classic)", property(std::integral_constant<features, classic>{}));
     check_property("directional = lim_{t->inf} positional at Q + t dir (Blinn, stable)",
-                   property(std::integral_constant<features, classic_blinn_stable()>{}));
+                   property(std::integral_constant<features, classic_blinn_stable>{}));
 }
 
 TEST_CASE_TEMPLATE("properties: attenuation is monotone non-increasing in distance", T, float, double)

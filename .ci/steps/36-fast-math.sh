@@ -21,12 +21,15 @@
 #     furnace, no NaN or inf at the edges), compiled with -ffast-math and linked without it as in
 #     item 2; reciprocity holds within 4 ulps there instead of bit for bit.
 # clang++ uses the long-double reference (Debian's clang++ 14 has no quadmath.h).
+# The compilers: g++, clang++ and g++ 11 (Ubuntu 22.04's), which says -ffast-math but not
+# -fassociative-math (__FAST_MATH__, no __ASSOCIATIVE_MATH__); PHONG_CI_FAST_MATH=... to choose.
 set -euo pipefail
 mkdir -p build/fast-math
-for cxx in g++ clang++; do
+read -r -a compilers <<<"${PHONG_CI_FAST_MATH:-g++ clang++ g++-11}"
+for cxx in "${compilers[@]}"; do
   flags=(-std=gnu++20 -O3 -march=native -ffast-math -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests)
   libs=()
-  if [ "$cxx" = g++ ]; then flags+=(-DPHONG_HAVE_QUADMATH=1); libs=(-lquadmath); fi
+  if [[ $cxx == g++* ]]; then flags+=(-DPHONG_HAVE_QUADMATH=1); libs=(-lquadmath); fi
   out=build/fast-math/$cxx
   "$cxx" "${flags[@]}" tests/accuracy_table.cpp -o "$out-table" "${libs[@]}" &
   "$cxx" "${flags[@]}" -c tests/batch_accuracy.test.cpp -o "$out-batch.o" &
@@ -56,7 +59,7 @@ for cxx in g++ clang++; do
   #    -DPHONG_SIMD_WITHOUT_FMA on the SSE2 lanes (xsimd's SSE2 kernels and the Dekker products of
   #    the lanes' fma); fast::pow_unit in a loop, as in item 2.
   base=(-std=gnu++20 -O3 -ffast-math -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests)
-  if [ "$cxx" = g++ ]; then base+=(-DPHONG_HAVE_QUADMATH=1); fi
+  if [[ $cxx == g++* ]]; then base+=(-DPHONG_HAVE_QUADMATH=1); fi
   "$cxx" "${base[@]}" -c tests/batch_accuracy.test.cpp -o "$out-base-batch.o" &
   "$cxx" "${base[@]}" -DPHONG_SIMD_WITHOUT_FMA -c tests/batch_accuracy.test.cpp -o "$out-base-lanes-batch.o" &
   wait

@@ -222,15 +222,21 @@ inline void intersect(const scene& sc, const camera& cam, std::vector<hit_record
         }
 }
 
+/// The frame's environment: the scene's ambient light and the eye (world_eye).
+inline phong::environment<float> frame_environment(const scene& sc, const camera& cam)
+{
+    return {.ambient = sc.ambient, .eye = world_eye(cam)};
+}
+
 /// The shading pass: phong::shade<F> at every hit with the lights that reach it, the background
-/// elsewhere.
+/// elsewhere; env: frame_environment(sc, cam).
 template <phong::features F>
-void shade_pass(const scene& sc, const camera& cam, const std::vector<hit_record>& gbuffer, image& out)
+void shade_pass(const scene& sc, const camera& cam, const phong::environment<float>& env, const std::vector<hit_record>& gbuffer,
+                image& out)
 {
     out.width = cam.width;
     out.height = cam.height;
     out.pixels.resize(gbuffer.size());
-    const phong::environment<float> env{.ambient = sc.ambient, .eye = world_eye(cam)};
     const std::size_t count = std::min(sc.lights.size(), max_lights);
     const unsigned all = (1u << count) - 1u; // count <= max_lights = 16
     std::array<phong::light<float>, max_lights> subset{};
@@ -250,6 +256,11 @@ void shade_pass(const scene& sc, const camera& cam, const std::vector<hit_record
         const auto c = phong::shade<F>(h.position, h.normal, sc.objects[std::size_t(h.object)].material, lights, env);
         out.pixels[i] = glm::vec3(c.x, c.y, c.z);
     }
+}
+template <phong::features F>
+void shade_pass(const scene& sc, const camera& cam, const std::vector<hit_record>& gbuffer, image& out)
+{
+    shade_pass<F>(sc, cam, frame_environment(sc, cam), gbuffer, out);
 }
 
 /// Seconds spent in each pass of one frame: wall-clock time, and the CPU time of the rendering

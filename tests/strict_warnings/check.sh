@@ -13,7 +13,8 @@
 # the same warnings as errors without exceptions and RTTI and under GLM's type-changing macros; and
 # tests/strict_warnings/aligned_glm.cpp run with GLM's 16-byte vec3 (also under ASan and UBSan); and
 # handler_library.cpp, a shared library built with -fvisibility=hidden, with handler_app.cpp: the
-# application's precondition handler must see the library's failed check.
+# application's precondition handler must see the library's failed check. With g++ 11 installed:
+# user_builds.cpp and every header parsed alone with it.
 # Usage: tests/strict_warnings/check.sh [test files...]   (default: tests/*.test.cpp)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -63,6 +64,15 @@ builds=("g++|-fno-exceptions -fno-rtti" "g++|-march=x86-64-v4 -fno-exceptions -f
         "g++|-march=x86-64-v3 -DGLM_FORCE_EXPLICIT_CTOR -DGLM_FORCE_XYZW_ONLY"
         "clang++|-march=x86-64-v4 -DGLM_FORCE_DEFAULT_ALIGNED_GENTYPES -DGLM_FORCE_INTRINSICS"
         "clang++|-march=x86-64-v4 ${everything[*]}")
+# and g++ 11 (Ubuntu 22.04's compiler), where installed: its libstdc++ headers include less of each
+# other, so each phong header is also parsed alone there (what it uses, it includes)
+if command -v g++-11 >/dev/null; then
+  builds+=("g++-11|-march=x86-64-v3 -fno-exceptions -fno-rtti")
+  mkdir -p "$out/0/tests"
+  find include/phong -name '*.hpp' ! -name 'diagnostics_*' | sort |
+    xargs -P2 -I{} bash -c 'parse "$1/$(echo "$2" | tr / _).txt" g++-11 -std=c++20 -fsyntax-only -Iinclude -Wall -Wextra -Wpedantic -include "$2" -x c++ /dev/null' \
+      _ "$out/0/tests" {}
+fi
 k=0
 for b in "${builds[@]}"; do
   k=$((k + 1))
@@ -108,4 +118,4 @@ if [[ -s "$out/found" ]]; then
   cat "$out/found"
   exit 1
 fi
-echo "strict warnings: ${#tests[@]} test files x ${#configs[@]} builds, tests/strict_warnings/user_builds.cpp x ${#builds[@]}, aligned_glm.cpp x 3 and handler_app x 2 (run): no warning in phong's headers, every run right"
+echo "strict warnings: ${#tests[@]} test files x ${#configs[@]} builds, tests/strict_warnings/user_builds.cpp x ${#builds[@]}, aligned_glm.cpp x 3, handler_app x 2 (run) and each header alone with g++ 11 (if installed): no warning in phong's headers, every run right"

@@ -12,8 +12,10 @@
 #include <limits>
 #include <type_traits>
 
+// g++ 12 and later say -fassociative-math itself (__ASSOCIATIVE_MATH__); older g++ and clang++
+// only -ffast-math as a whole (__FAST_MATH__).
 #if !defined(PHONG_FP_BARRIER)
-#  if (defined(__GNUC__) && !defined(__clang__)) ? defined(__ASSOCIATIVE_MATH__) : defined(__FAST_MATH__)
+#  if (defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12) ? defined(__ASSOCIATIVE_MATH__) : defined(__FAST_MATH__)
 #    define PHONG_FP_BARRIER 1
 #  else
 #    define PHONG_FP_BARRIER 0

@@ -173,7 +173,7 @@ PHONG_INLINE constexpr void each_light(Sums<T, Q>& sums, const Frame& s, Lights&
 {
     using R = std::remove_cvref_t<Lights>;
     if constexpr (is_std_array<R>::value) {
-        each_array_light<F>(sums, s, lights, m, std::make_index_sequence<std::tuple_size_v<R>>{});
+        each_array_light<F>(sums, s, lights, m, std::make_index_sequence<std::tuple_size<R>::value>{});
     } else if constexpr (is_weighted<R>::value) {
         each_listed_light(lights, lights.weights, "phong::weighted: fewer weights than lights",
                           [&](const auto& L, std::size_t i, bool) PHONG_DETAIL_LAMBDA_INLINE {
