@@ -6,8 +6,9 @@
 # -Wcast-qual, -Wextra-semi, -Wzero-as-null-pointer-constant, -Wundef and each compiler's own
 # (g++: -Wuseless-cast, -Wduplicated-cond, -Wlogical-op; clang++: -Wcomma, -Wshorten-64-to-32,
 # -Wdocumentation; and -Weverything on user_builds.cpp). The builds: g++ x86-64 -O2 and x86-64-v4
-# -O0 (g++'s intrinsics are macros without optimization), clang++ x86-64-v3 and -v4 -O2 (the SIMD back ends), clang++ -v4 with GLM's
-# GLM_FORCE_SIZE_T_LENGTH (vector indexes of type size_t), aarch64 g++ -O2 (NEON).
+# -O0 (g++'s intrinsics are macros without optimization), clang++ x86-64-v3 and -v4 -O2 (the SIMD
+# back ends), clang++ -v4 with GLM's GLM_FORCE_SIZE_T_LENGTH (vector indexes of type size_t),
+# aarch64 g++ -O2 (NEON).
 # Fails on any warning whose location is a phong header (the tests' own lines may warn: not phong's).
 # And tests/strict_warnings/user_builds.cpp, a user's file with every public header, compiled with
 # the same warnings as errors without exceptions and RTTI and under GLM's type-changing macros; and
