@@ -85,7 +85,7 @@ template <class T, specular_model S, evaluation M = evaluation::stable, bool int
             continue;
         }
         CHECK(e.non_finite == 0);
-#if defined(__GNUC__) && !defined(__clang__) && PHONG_FP_BARRIER && !defined(__FMA__)
+#if defined(__GNUC__) && !defined(__clang__) && PHONG_FP_REASSOCIATION && !defined(__FMA__)
         // g++ -ffast-math without FMA instructions: the exact double lanes' p99 in tiny_directional
         // (measured with the SSE2 lanes, PHONG_SIMD_WITHOUT_FMA; shade_batch now shades point by
         // point there) over these 300 scenes was 69 ulp against the published 60; a p99 of 300 scenes is a noisy
@@ -136,7 +136,7 @@ TEST_CASE_TEMPLATE("shade_batch fast, integer shininess (binary powering): every
     check_batch_classes<T, specular_model::blinn, evaluation::fast, true>();
 }
 
-#if !PHONG_FP_BARRIER || defined(PHONG_ALLOW_REASSOCIATED_TWOFOLD) // the batch stable mode refuses -ffast-math builds
+#if !PHONG_FP_REASSOCIATION || defined(PHONG_ALLOW_REASSOCIATED_TWOFOLD) // the batch stable mode refuses -ffast-math builds
 TEST_CASE("shade_batch stable, float: both sides of the double-lane route's shininess limit stay within the m = 1e5 bound")
 {
     // Float lanes run the geometry in double up to m = 2^20 (detail/simd/stable_lanes.hpp) and the

@@ -106,7 +106,7 @@ TEST_CASE("double lanes' exp, log, log1p and pow_unit in a loop: within a few ul
     }
     CHECK(worst[0] <= 1.0);
     CHECK(worst[1] <= 1.0);
-#if !PHONG_FP_BARRIER
+#if !PHONG_FP_REASSOCIATION
     // log1p only in IEEE builds: xsimd's log1p corrects 1 + x by (x - (u - 1)) / u, which
     // -fassociative-math folds (measured 150 eps with g++ -O3 -march=native -ffast-math); its one
     // user, the stable mode's twofold route, refuses such builds (detail/ieee.hpp).

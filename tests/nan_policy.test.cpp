@@ -219,7 +219,7 @@ TEST_CASE_TEMPLATE("NaN policy: finite degenerate input gives finite output", T,
 
 TEST_CASE_TEMPLATE("NaN policy: an OpenGL spot aimed at the point with a huge exponent stays finite, spot <= 1", T, float, double)
 {
-#if PHONG_FP_BARRIER && !defined(PHONG_ALLOW_REASSOCIATED_TWOFOLD)
+#if PHONG_FP_REASSOCIATION && !defined(PHONG_ALLOW_REASSOCIATED_TWOFOLD)
     if constexpr (sizeof(T) == 8) return; // -ffast-math: double's stable mode refuses the build (docs/compilers.md)
     else
 #endif

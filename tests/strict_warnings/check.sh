@@ -15,7 +15,7 @@
 # tests/strict_warnings/aligned_glm.cpp run with GLM's 16-byte vec3 (also under ASan and UBSan); and
 # handler_library.cpp, a shared library built with -fvisibility=hidden, with handler_app.cpp: the
 # application's precondition handler must see the library's failed check. With g++ 11 installed:
-# user_builds.cpp and every header parsed alone with it.
+# user_builds.cpp and every header parsed alone with it; the same with libc++ where installed.
 # Usage: tests/strict_warnings/check.sh [test files...]   (default: tests/*.test.cpp)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -74,6 +74,15 @@ if command -v g++-11 >/dev/null; then
     xargs -P2 -I{} bash -c 'parse "$1/$(echo "$2" | tr / _).txt" g++-11 -std=c++20 -fsyntax-only -Iinclude -Wall -Wextra -Wpedantic -include "$2" -x c++ /dev/null' \
       _ "$out/0/tests" {}
 fi
+# and libc++ (LLVM's standard library: macOS, Android, some engines' clang builds), where installed:
+# user_builds.cpp and every header parsed alone with it
+if echo '#include <vector>' | clang++ -stdlib=libc++ -std=c++20 -fsyntax-only -x c++ - 2>/dev/null; then
+  builds+=("clang++|-stdlib=libc++ -march=x86-64-v3 -fno-exceptions -fno-rtti")
+  mkdir -p "$out/libcxx/tests"
+  find include/phong -name '*.hpp' ! -name 'diagnostics_*' | sort |
+    xargs -P2 -I{} bash -c 'parse "$1/$(echo "$2" | tr / _).txt" clang++ -stdlib=libc++ -std=c++20 -fsyntax-only -Iinclude -Wall -Wextra -Wpedantic -include "$2" -x c++ /dev/null' \
+      _ "$out/libcxx/tests" {}
+fi
 k=0
 for b in "${builds[@]}"; do
   k=$((k + 1))
@@ -119,4 +128,4 @@ if [[ -s "$out/found" ]]; then
   cat "$out/found"
   exit 1
 fi
-echo "strict warnings: ${#tests[@]} test files x ${#configs[@]} builds, tests/strict_warnings/user_builds.cpp x ${#builds[@]}, aligned_glm.cpp x 3, handler_app x 2 (run) and each header alone with g++ 11 (if installed): no warning in phong's headers, every run right"
+echo "strict warnings: ${#tests[@]} test files x ${#configs[@]} builds, tests/strict_warnings/user_builds.cpp x ${#builds[@]}, aligned_glm.cpp x 3, handler_app x 2 (run) and each header alone with g++ 11 and libc++ (if installed): no warning in phong's headers, every run right"

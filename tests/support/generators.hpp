@@ -55,9 +55,24 @@ public:
         return r;
     }
 
-    T uniform(double lo, double hi) { return rounded(std::uniform_real_distribution<double>(lo, hi)(rng_)); }
-    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
-    bool coin(double p = 0.5) { return std::bernoulli_distribution(p)(rng_); }
+    // The draws below are libstdc++'s std::uniform_real_distribution, uniform_int_distribution,
+    // bernoulli_distribution and normal_distribution written out: the standard fixes the engine's
+    // sequence but not the distributions', so libc++ (macOS, Android) drew other scenes, and a test
+    // that needs a highlight among its points found none there.
+    T uniform(double lo, double hi) { return rounded(canonical() * (hi - lo) + lo); }
+    int integer(int lo, int hi)
+    {
+        // Lemire's multiply-and-reject on the 64-bit draw (libstdc++ 11 and later).
+        __extension__ using wide_product = unsigned __int128;
+        const std::uint64_t range = std::uint64_t(std::int64_t(hi) - lo) + 1;
+        wide_product product = wide_product(rng_()) * range;
+        if (std::uint64_t(product) < range) {
+            const std::uint64_t threshold = (0 - range) % range;
+            while (std::uint64_t(product) < threshold) product = wide_product(rng_()) * range;
+        }
+        return int(std::int64_t(lo) + std::int64_t(product >> 64));
+    }
+    bool coin(double p = 0.5) { return canonical() < p; }
 
     glm::vec<3, T> in_box(double lo, double hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
     glm::vec<3, T> color(double lo = 0, double hi = 1) { return in_box(lo, hi); }
@@ -65,10 +80,13 @@ public:
     /// A direction uniform on the sphere, rounded to T (so only nearly unit).
     glm::vec<3, T> direction()
     {
-        std::normal_distribution<double> g;
         double x, y, z, n;
         do {
-            x = g(rng_), y = g(rng_), z = g(rng_);
+            double pair[2];
+            polar_pair(pair); // y, then the saved x (a fresh std::normal_distribution per call)
+            x = pair[0], y = pair[1];
+            polar_pair(pair);
+            z = pair[0];
             n = std::sqrt(x * x + y * y + z * z);
         } while (n < 1e-3);
         return {rounded(x / n), rounded(y / n), rounded(z / n)};
@@ -165,6 +183,26 @@ public:
     }
 
 private:
+    /// [0, 1): the 64-bit draw over 2^64, rounded (std::generate_canonical<double, 53>).
+    double canonical()
+    {
+        const double u = double(rng_()) * 0x1p-64;
+        return u < 1 ? u : std::nextafter(1.0, 0.0);
+    }
+    /// Two standard normal values by Marsaglia's polar method, in the order
+    /// std::normal_distribution returns them.
+    void polar_pair(double (&out)[2])
+    {
+        double x, y, r2;
+        do {
+            x = 2.0 * canonical() - 1.0;
+            y = 2.0 * canonical() - 1.0;
+            r2 = x * x + y * y;
+        } while (r2 > 1.0 || r2 == 0.0);
+        const double mult = std::sqrt(-2 * std::log(r2) / r2);
+        out[0] = y * mult;
+        out[1] = x * mult;
+    }
     std::mt19937_64 rng_;
 };
 

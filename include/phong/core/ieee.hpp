@@ -12,13 +12,41 @@
 #include <limits>
 #include <type_traits>
 
-// g++ 12 and later say -fassociative-math itself (__ASSOCIATIVE_MATH__); older g++ and clang++
-// only -ffast-math as a whole (__FAST_MATH__).
-#if !defined(PHONG_FP_BARRIER)
-#  if (defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12) ? defined(__ASSOCIATIVE_MATH__) : defined(__FAST_MATH__)
-#    define PHONG_FP_BARRIER 1
+// PHONG_FP_REASSOCIATION: 1 where the compiler is known to reassociate floating-point arithmetic;
+// it refuses the twofold route and keeps xsimd's exp and log off the x86 lanes that lack a
+// rounding instruction (their rounding tricks have no barrier). g++ 12 and later say
+// -fassociative-math itself (__ASSOCIATIVE_MATH__). Older g++ says -ffast-math (__FAST_MATH__),
+// and __GCC_IEC_559 = 0 for any flag that breaks IEEE arithmetic: with finite math still on
+// (-ffast-math -fno-finite-math-only), that is read as reassociation. clang++ says only -ffast-math
+// whole and drops __FAST_MATH__ when any of its flags is taken back, though the rest still
+// reassociate: define PHONG_FP_REASSOCIATION=1 in such builds.
+#if !defined(PHONG_FP_REASSOCIATION)
+#  if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12 && defined(__ASSOCIATIVE_MATH__)
+#    define PHONG_FP_REASSOCIATION 1
+#  elif defined(__GNUC__) && !defined(__clang__) && __GNUC__ < 12 && \
+      (defined(__FAST_MATH__) || (__GCC_IEC_559 == 0 && !__FINITE_MATH_ONLY__))
+#    define PHONG_FP_REASSOCIATION 1
+#  elif defined(__clang__) && defined(__FAST_MATH__)
+#    define PHONG_FP_REASSOCIATION 1
 #  else
+#    define PHONG_FP_REASSOCIATION 0
+#  endif
+#endif
+// PHONG_FP_BARRIER: 1 where opaque() below is a barrier: wherever the compiler may regroup, seen or
+// not: g++ 12 and later with __ASSOCIATIVE_MATH__ or __RECIPROCAL_MATH__ (a / b into a * (1 / b)),
+// older g++ with __GCC_IEC_559 = 0, clang++ always (its flags cannot be seen). A barrier is no
+// instruction: an IEEE build gives the same bits with it as without.
+#if !defined(PHONG_FP_BARRIER)
+#  if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+#    if defined(__ASSOCIATIVE_MATH__) || defined(__RECIPROCAL_MATH__)
+#      define PHONG_FP_BARRIER 1
+#    else
+#      define PHONG_FP_BARRIER 0
+#    endif
+#  elif defined(__GNUC__) && !defined(__clang__) && __GCC_IEC_559 > 0
 #    define PHONG_FP_BARRIER 0
+#  else
+#    define PHONG_FP_BARRIER 1
 #  endif
 #endif
 
@@ -55,8 +83,8 @@ template <class V> PHONG_INLINE constexpr V barrier(V x)
     return x;
 }
 
-/// x unchanged, opaque to the optimizer where it may reassociate (g++ __ASSOCIATIVE_MATH__, clang
-/// __FAST_MATH__, or PHONG_FP_BARRIER=1). Scalars and SIMD batches (a register_type).
+/// x unchanged, opaque to the optimizer where it may regroup (PHONG_FP_BARRIER). Scalars and SIMD
+/// batches (a register_type).
 template <class V> PHONG_INLINE constexpr V opaque(V x)
 {
 #if PHONG_FP_BARRIER
@@ -119,7 +147,7 @@ template <class V> PHONG_INLINE constexpr V ordered_sum(const V& a, const V& b, 
 /// twofold route's accumulations need the written order, so it refuses such builds (docs/compilers.md).
 template <class T>
 inline constexpr bool twofold_allowed =
-#if PHONG_FP_BARRIER && !defined(PHONG_ALLOW_REASSOCIATED_TWOFOLD)
+#if PHONG_FP_REASSOCIATION && !defined(PHONG_ALLOW_REASSOCIATED_TWOFOLD)
     false;
 #else
     true;

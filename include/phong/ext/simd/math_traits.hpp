@@ -13,12 +13,12 @@
 
 #include "diagnostics_push.hpp"
 
-#if PHONG_FP_BARRIER && (defined(__x86_64__) || defined(__i386__)) && !defined(__SSE4_1__)
+#if PHONG_FP_REASSOCIATION && (defined(__x86_64__) || defined(__i386__)) && !defined(__SSE4_1__)
 #  define PHONG_DETAIL_LANEWISE_EXP 1 // math_traits<batch>::exp below
 #else
 #  define PHONG_DETAIL_LANEWISE_EXP 0
 #endif
-#if PHONG_FP_BARRIER && (defined(__x86_64__) || defined(__i386__)) && !defined(__AVX512DQ__)
+#if PHONG_FP_REASSOCIATION && (defined(__x86_64__) || defined(__i386__)) && !defined(__AVX512DQ__)
 #  define PHONG_DETAIL_LANEWISE_LOG 1 // math_traits<batch>::log and log1p below
 #else
 #  define PHONG_DETAIL_LANEWISE_LOG 0
@@ -88,8 +88,8 @@ struct math_traits<xsimd::batch<T, A>> {
     /// through. The clamp changes no result (xsimd's exp is exactly 0 / +inf beyond them) and keeps
     /// xsimd 8.1's scalar float-to-int conversion defined for huge |x| and NaN (double below
     /// AVX-512DQ), which the model reaches (exp(m log1p(-x)) with m = 1e30). -ffast-math on x86
-    /// (PHONG_FP_BARRIER): exp, log and log1p run std:: lane by lane, as xsimd's rounding tricks lack
-    /// a barrier clang++ respects (docs/compilers.md).
+    /// (PHONG_FP_REASSOCIATION): exp, log and log1p run std:: lane by lane, as xsimd's rounding
+    /// tricks lack a barrier clang++ respects (docs/compilers.md).
     template <class F> PHONG_LANES_INLINE static V lanewise(const V& x, F f)
     {
         alignas(A::alignment()) T lanes[V::size];
