@@ -62,15 +62,14 @@ public:
     T uniform(double lo, double hi) { return rounded(canonical() * (hi - lo) + lo); }
     int integer(int lo, int hi)
     {
-        // Lemire's multiply-and-reject on the 64-bit draw (libstdc++ 11 and later).
-        __extension__ using wide_product = unsigned __int128;
+        // Lemire's multiply-and-reject on the 64-bit draw (libstdc++ 12).
         const std::uint64_t range = std::uint64_t(std::int64_t(hi) - lo) + 1;
-        wide_product product = wide_product(rng_()) * range;
-        if (std::uint64_t(product) < range) {
+        wide_product p = multiply(rng_(), range);
+        if (p.low < range) {
             const std::uint64_t threshold = (0 - range) % range;
-            while (std::uint64_t(product) < threshold) product = wide_product(rng_()) * range;
+            while (p.low < threshold) p = multiply(rng_(), range);
         }
-        return int(std::int64_t(lo) + std::int64_t(product >> 64));
+        return int(std::int64_t(lo) + std::int64_t(p.high));
     }
     bool coin(double p = 0.5) { return canonical() < p; }
 
@@ -183,6 +182,17 @@ public:
     }
 
 private:
+    /// a b as 128 bits, from 32-bit halves (no __int128 on 32-bit targets and MSVC).
+    struct wide_product {
+        std::uint64_t high, low;
+    };
+    static wide_product multiply(std::uint64_t a, std::uint64_t b)
+    {
+        const std::uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
+        const std::uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+        const std::uint64_t middle = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu);
+        return {p11 + (p01 >> 32) + (p10 >> 32) + (middle >> 32), (middle << 32) | (p00 & 0xffffffffu)};
+    }
     /// [0, 1): the 64-bit draw over 2^64, rounded (std::generate_canonical<double, 53>).
     double canonical()
     {

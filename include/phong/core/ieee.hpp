@@ -12,6 +12,14 @@
 #include <limits>
 #include <type_traits>
 
+// Every rounding step and error-free transformation below needs each float and double operation
+// rounded to its own type (FLT_EVAL_METHOD 0). x87 arithmetic (32-bit x86 without -mfpmath=sse)
+// keeps 64-bit significands in registers, so y + 1.5 2^23 - 1.5 2^23 is no longer y rounded to an
+// integer, and the power kernels err by about 5e-3 in every mode.
+#if defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ > 0
+#  error "phong: float and double arithmetic is evaluated in a wider precision here (__FLT_EVAL_METHOD__ > 0: x87, 32-bit x86 without SSE arithmetic), which phong's rounding steps cannot survive: build with -msse2 -mfpmath=sse"
+#endif
+
 // PHONG_FP_REASSOCIATION: 1 where the compiler is known to reassociate floating-point arithmetic;
 // it refuses the twofold route and keeps xsimd's exp and log off the x86 lanes that lack a
 // rounding instruction (their rounding tricks have no barrier). g++ 12 and later say
