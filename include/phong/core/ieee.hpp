@@ -103,13 +103,14 @@ template <class V> PHONG_INLINE constexpr V opaque(V x)
 }
 
 /// 1 where the scalar power kernels (power.hpp) keep every product unfused, so run time gives
-/// constant evaluation's bits: aarch64, which contracts by default (docs/compilers.md, "aarch64").
-/// Elsewhere 0; define PHONG_UNFUSED_KERNELS=1 to keep the products unfused there too.
+/// constant evaluation's bits: every target but x86, whose baselines (aarch64, RISC-V, POWER)
+/// have a fused multiply-add that the compilers contract into by default (docs/compilers.md,
+/// "aarch64"). x86: 0, where FMA needs -march; define PHONG_UNFUSED_KERNELS=1 there too if wanted.
 #if !defined(PHONG_UNFUSED_KERNELS)
-#  if defined(__aarch64__)
-#    define PHONG_UNFUSED_KERNELS 1
-#  else
+#  if defined(__x86_64__) || defined(__i386__) || defined(_M_X64) || defined(_M_IX86)
 #    define PHONG_UNFUSED_KERNELS 0
+#  else
+#    define PHONG_UNFUSED_KERNELS 1
 #  endif
 #endif
 

@@ -49,7 +49,11 @@ template <class A> inline batch<float, A> sqrt(batch<float, A> const& x, neon64 
 }
 } // namespace xsimd::kernel
 #  endif
-#  define PHONG_HAS_XSIMD 1
+#  if defined(XSIMD_NO_SUPPORTED_ARCHITECTURE) // xsimd 8.1 has no lanes there (RISC-V, POWER, s390x)
+#    define PHONG_HAS_XSIMD 0
+#  else
+#    define PHONG_HAS_XSIMD 1
+#  endif
 #else
 #  define PHONG_HAS_XSIMD 0
 #endif
