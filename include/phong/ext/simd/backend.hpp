@@ -18,27 +18,23 @@
 #if !defined(PHONG_NO_XSIMD) && !defined(__CUDACC__) && __has_include(<xsimd/xsimd.hpp>)
 #  if defined(__aarch64__)
 // xsimd 8.1's NEON float division and sqrt are estimates with Newton steps (a few ulp; sqrt(inf)
-// NaN); phong's bounds count IEEE ones, so neon64 float batches take vdivq_f32 / vsqrtq_f32. These
-// overloads take neon64 where xsimd's take neon, so xsimd's qualified calls choose them: declared
-// before <xsimd/xsimd.hpp>.
+// NaN); phong's bounds count IEEE ones, so neon64 float batches take vdivq_f32 / vsqrtq_f32. Its
+// bitwise_cast and its integer shifts by a count pick the instruction from a table of function
+// pointers or a recursion over every count, which g++ 12 resolves only after inlining: calls in
+// the lanes' power kernels; here they are a reinterpretation and a shift by a register.
+// These overloads take neon64 where xsimd's take neon (or are more specialized), so xsimd's
+// qualified calls choose them: declared before <xsimd/xsimd.hpp>.
 #    if defined(XSIMD_HPP)
-#      error "phong: on aarch64 include phong/batch.hpp (or a phong lane header) before <xsimd/xsimd.hpp>: phong's NEON float division and square root must be declared first"
+#      error "phong: on aarch64 include phong/batch.hpp (or a phong lane header) before <xsimd/xsimd.hpp>: phong's NEON overloads must be declared first"
 #    endif
 #    include <arm_neon.h>
+#    include <bit>
+#    include <cstdint>
 namespace xsimd {
 template <class T, class A> class batch;
 struct neon64;
 namespace kernel {
-template <class A> inline batch<float, A> div(batch<float, A> const& a, batch<float, A> const& b, neon64 const&) noexcept;
-template <class A> inline batch<float, A> sqrt(batch<float, A> const& x, neon64 const&) noexcept;
-} // namespace kernel
-} // namespace xsimd
-#  endif
-#  include "diagnostics_push.hpp"
-#  include <xsimd/xsimd.hpp>
-#  include "diagnostics_pop.hpp"
-#  if defined(__aarch64__)
-namespace xsimd::kernel {
+// Defined here: every use depends on A, so batch<T, A> need not be complete yet.
 template <class A> inline batch<float, A> div(batch<float, A> const& a, batch<float, A> const& b, neon64 const&) noexcept
 {
     return vdivq_f32(a, b);
@@ -47,8 +43,43 @@ template <class A> inline batch<float, A> sqrt(batch<float, A> const& x, neon64 
 {
     return vsqrtq_f32(x);
 }
-} // namespace xsimd::kernel
+#    define PHONG_DETAIL_NEON_CAST(From, To) \
+        template <class A> inline batch<To, A> bitwise_cast(batch<From, A> const& x, batch<To, A> const&, neon64 const&) noexcept \
+        { \
+            return std::bit_cast<typename batch<To, A>::register_type>(typename batch<From, A>::register_type(x)); \
+        }
+PHONG_DETAIL_NEON_CAST(float, std::int32_t)
+PHONG_DETAIL_NEON_CAST(std::int32_t, float)
+PHONG_DETAIL_NEON_CAST(float, std::uint32_t)
+PHONG_DETAIL_NEON_CAST(std::uint32_t, float)
+PHONG_DETAIL_NEON_CAST(double, std::int64_t)
+PHONG_DETAIL_NEON_CAST(std::int64_t, double)
+PHONG_DETAIL_NEON_CAST(double, std::uint64_t)
+PHONG_DETAIL_NEON_CAST(std::uint64_t, double)
+#    undef PHONG_DETAIL_NEON_CAST
+// Signed lanes: the right shift is arithmetic, as xsimd's (vshlq by -n).
+template <class A> inline batch<std::int32_t, A> bitwise_lshift(batch<std::int32_t, A> const& x, int n, neon64 const&) noexcept
+{
+    return vshlq_s32(x, vdupq_n_s32(n));
+}
+template <class A> inline batch<std::int32_t, A> bitwise_rshift(batch<std::int32_t, A> const& x, int n, neon64 const&) noexcept
+{
+    return vshlq_s32(x, vdupq_n_s32(-n));
+}
+template <class A> inline batch<std::int64_t, A> bitwise_lshift(batch<std::int64_t, A> const& x, int n, neon64 const&) noexcept
+{
+    return vshlq_s64(x, vdupq_n_s64(n));
+}
+template <class A> inline batch<std::int64_t, A> bitwise_rshift(batch<std::int64_t, A> const& x, int n, neon64 const&) noexcept
+{
+    return vshlq_s64(x, vdupq_n_s64(-n));
+}
+} // namespace kernel
+} // namespace xsimd
 #  endif
+#  include "diagnostics_push.hpp"
+#  include <xsimd/xsimd.hpp>
+#  include "diagnostics_pop.hpp"
 #  if defined(XSIMD_NO_SUPPORTED_ARCHITECTURE) // xsimd 8.1 has no lanes there (RISC-V, POWER, s390x)
 #    define PHONG_HAS_XSIMD 0
 #  else
