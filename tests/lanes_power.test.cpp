@@ -15,6 +15,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -270,6 +272,59 @@ TEST_CASE("stable_lanes: float lanes widened to double and back exactly; the dou
     }
     MESSAGE("stable_lanes rsqrt_normal (double): worst " << worst << " u");
     CHECK(worst <= 3.0);
+}
+#endif
+
+#if defined(__aarch64__)
+namespace {
+/// x << n and x >> n of every count on NEON lanes of T against the scalar shifts (arithmetic right
+/// shift for signed T, as C++20's), through ext/simd/backend.hpp's neon64 overloads.
+template <class T> int shift_mismatches()
+{
+    using B = xsimd::batch<T, phong::simd_arch>;
+    alignas(16) T in[B::size], out[B::size];
+    int bad = 0;
+    for (int n = 0; n < int(sizeof(T) * 8); ++n) {
+        for (std::size_t i = 0; i < B::size; ++i) in[i] = T(T(0x9b3f7a15c3e1d2f7ull >> (i * 7)) * T(i % 2 ? -1 : 1));
+        const B x = B::load_aligned(in);
+        (x << n).store_aligned(out);
+        for (std::size_t i = 0; i < B::size; ++i) bad += out[i] != T(in[i] << n);
+        (x >> n).store_aligned(out);
+        for (std::size_t i = 0; i < B::size; ++i) bad += out[i] != T(in[i] >> n);
+    }
+    return bad;
+}
+/// bitwise_cast from F lanes to I lanes and back: the bits of each lane, unchanged.
+template <class F, class I> int cast_mismatches()
+{
+    using BF = xsimd::batch<F, phong::simd_arch>;
+    using BI = xsimd::batch<I, phong::simd_arch>;
+    alignas(16) F f[BF::size], back[BF::size];
+    alignas(16) I bits[BF::size];
+    for (std::size_t i = 0; i < BF::size; ++i) f[i] = F(-1.5) * F(i + 1) / F(3);
+    xsimd::bitwise_cast<BI>(BF::load_aligned(f)).store_aligned(bits);
+    xsimd::bitwise_cast<BF>(BI::load_aligned(bits)).store_aligned(back);
+    int bad = 0;
+    for (std::size_t i = 0; i < BF::size; ++i) {
+        I expected;
+        std::memcpy(&expected, &f[i], sizeof expected);
+        bad += bits[i] != expected;
+        bad += std::memcmp(&back[i], &f[i], sizeof(F)) != 0;
+    }
+    return bad;
+}
+} // namespace
+
+TEST_CASE("NEON: the lanes' bit casts and shifts by a count (phong's neon64 overloads of xsimd's)")
+{
+    CHECK(shift_mismatches<std::int32_t>() == 0);
+    CHECK(shift_mismatches<std::uint32_t>() == 0);
+    CHECK(shift_mismatches<std::int64_t>() == 0);
+    CHECK(shift_mismatches<std::uint64_t>() == 0);
+    CHECK(cast_mismatches<float, std::int32_t>() == 0);
+    CHECK(cast_mismatches<float, std::uint32_t>() == 0);
+    CHECK(cast_mismatches<double, std::int64_t>() == 0);
+    CHECK(cast_mismatches<double, std::uint64_t>() == 0);
 }
 #endif
 #endif

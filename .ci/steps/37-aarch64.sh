@@ -58,6 +58,13 @@ for config in g++-O2 g++-O3 clang++-O2 clang++-O3; do
 done
 if [ "${status:-0}" != 0 ]; then grep -B2 -A4 "ERROR" "$out"/*/tests.log | head -n 60; exit 1; fi
 echo "aarch64: the tests passed in all four builds ($((SECONDS - start)) s)"
+# No call into xsimd in the NEON code (docs/compilers.md, "aarch64": g++ 12 kept xsimd 8.1's bit
+# casts and shifts as calls until ext/simd/backend.hpp defined them for neon64).
+for config in g++-O2 g++-O3 clang++-O2 clang++-O3; do
+  calls=$(aarch64-linux-gnu-objdump -d "$out/$config/tests" | grep -c 'bl[[:space:]].*<_ZN5xsimd' || true)
+  [ "$calls" = 0 ] || { echo "aarch64 $config: $calls calls into xsimd"; exit 1; }
+done
+echo "aarch64: no call into xsimd in the four builds"
 # The hand-written NEON kernel of the aarch64 instruction counts (docs/batch.md, "aarch64") computes
 # shade<F>'s model: benchmarks/insn_count.cpp fails if it leaves its tolerance (clang++ -O2, ~10 s).
 clang++ --target=aarch64-linux-gnu -std=gnu++20 -O2 -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Ibenchmarks \

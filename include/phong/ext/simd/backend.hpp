@@ -57,23 +57,21 @@ PHONG_DETAIL_NEON_CAST(std::int64_t, double)
 PHONG_DETAIL_NEON_CAST(double, std::uint64_t)
 PHONG_DETAIL_NEON_CAST(std::uint64_t, double)
 #    undef PHONG_DETAIL_NEON_CAST
-// Signed lanes: the right shift is arithmetic, as xsimd's (vshlq by -n).
-template <class A> inline batch<std::int32_t, A> bitwise_lshift(batch<std::int32_t, A> const& x, int n, neon64 const&) noexcept
-{
-    return vshlq_s32(x, vdupq_n_s32(n));
-}
-template <class A> inline batch<std::int32_t, A> bitwise_rshift(batch<std::int32_t, A> const& x, int n, neon64 const&) noexcept
-{
-    return vshlq_s32(x, vdupq_n_s32(-n));
-}
-template <class A> inline batch<std::int64_t, A> bitwise_lshift(batch<std::int64_t, A> const& x, int n, neon64 const&) noexcept
-{
-    return vshlq_s64(x, vdupq_n_s64(n));
-}
-template <class A> inline batch<std::int64_t, A> bitwise_rshift(batch<std::int64_t, A> const& x, int n, neon64 const&) noexcept
-{
-    return vshlq_s64(x, vdupq_n_s64(-n));
-}
+// vshlq by -n: an arithmetic right shift on signed lanes, a logical one on unsigned lanes (as xsimd's).
+#    define PHONG_DETAIL_NEON_SHIFTS(T, suffix, count) \
+        template <class A> inline batch<T, A> bitwise_lshift(batch<T, A> const& x, int n, neon64 const&) noexcept \
+        { \
+            return vshlq_##suffix(x, vdupq_n_##count(n)); \
+        } \
+        template <class A> inline batch<T, A> bitwise_rshift(batch<T, A> const& x, int n, neon64 const&) noexcept \
+        { \
+            return vshlq_##suffix(x, vdupq_n_##count(-n)); \
+        }
+PHONG_DETAIL_NEON_SHIFTS(std::int32_t, s32, s32)
+PHONG_DETAIL_NEON_SHIFTS(std::uint32_t, u32, s32)
+PHONG_DETAIL_NEON_SHIFTS(std::int64_t, s64, s64)
+PHONG_DETAIL_NEON_SHIFTS(std::uint64_t, u64, s64)
+#    undef PHONG_DETAIL_NEON_SHIFTS
 } // namespace kernel
 } // namespace xsimd
 #  endif
