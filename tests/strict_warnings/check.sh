@@ -7,8 +7,7 @@
 # (g++: -Wuseless-cast, -Wduplicated-cond, -Wlogical-op; clang++: -Wcomma, -Wshorten-64-to-32,
 # -Wdocumentation; and -Weverything on user_builds.cpp). The builds: g++ x86-64 -O2 and x86-64-v4
 # -O0 (g++'s intrinsics are macros without optimization), clang++ x86-64-v3 and -v4 -O2 (the SIMD
-# back ends), clang++ -v4 with GLM's GLM_FORCE_SIZE_T_LENGTH (vector indexes of type size_t),
-# aarch64 g++ -O2 (NEON).
+# back ends), aarch64 g++ -O2 (NEON).
 # Fails on any warning whose location is a phong header (the tests' own lines may warn: not phong's).
 # And tests/strict_warnings/user_builds.cpp, a user's file with every public header, compiled with
 # the same warnings as errors without exceptions and RTTI and under GLM's type-changing macros; and
@@ -26,8 +25,7 @@ common=(-std=c++20 -fsyntax-only -Iinclude -Itests -Ibenchmarks/demo -Wall -Wext
         -Wzero-as-null-pointer-constant -Wundef)
 gcc_only=(-Wuseless-cast -Wduplicated-cond -Wlogical-op)
 clang_only=(-Wcomma -Wshorten-64-to-32 -Wdocumentation)
-configs=("g++|-O2" "g++|-O0 -march=x86-64-v4" "clang++|-O2 -march=x86-64-v3" "clang++|-O2 -march=x86-64-v4"
-         "clang++|-O2 -march=x86-64-v4 -DGLM_FORCE_SIZE_T_LENGTH")
+configs=("g++|-O2" "g++|-O0 -march=x86-64-v4" "clang++|-O2 -march=x86-64-v3" "clang++|-O2 -march=x86-64-v4")
 if command -v aarch64-linux-gnu-g++ >/dev/null; then configs+=("aarch64-linux-gnu-g++|-O2"); fi
 tests=("$@")
 ((${#tests[@]})) || tests=(tests/*.test.cpp)
