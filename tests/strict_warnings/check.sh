@@ -35,6 +35,9 @@ parse() { # parse OUT CXX FLAGS... FILE: the diagnostics to OUT; a failed parse 
   "${@}" >"$o" 2>&1 || echo "include/phong/(none):0:0: error: the parse failed: ${*: -1} with $1 (${o##*/})" >>"$o"
 }
 export -f parse
+simd_files() { # the test files (stdin) that include the batch path or the SIMD lanes
+  while read -r f; do if [[ ! -f $f ]] || grep -q 'phong/batch.hpp\|ext/simd\|ext/batch' "$f"; then echo "$f"; fi; done
+}
 n=0
 for c in "${configs[@]}"; do
   cxx=${c%%|*}
@@ -45,7 +48,10 @@ for c in "${configs[@]}"; do
   mkdir -p "$out/$n/tests"
   # xsimd 8.1's own batch<int64> select does not compile under g++'s unoptimized AVX-512BW macros;
   # fast_math_loops.test.cpp reaches it through xsimd::log on double lanes (no shade_batch route does)
+  # The x86-64-v3 and g++ -v4 parses take the files that reach the SIMD lanes (they instantiate the
+  # scalar routes too); the scalar files' ISA branches are the clang++ -v4 parse's and the baseline's.
   printf '%s\n' "${tests[@]}" | { [[ $c == "g++|-O0 -march=x86-64-v4" ]] && grep -v fast_math_loops || cat; } |
+    { [[ $c == *-march=x86-64-v3* || $c == "g++|-O0 -march=x86-64-v4" ]] && simd_files || cat; } |
     xargs -P2 -I{} bash -c 'parse "$@" {}' _ "$out/$n/{}.txt" "$cxx" "${common[@]}" "${level[@]}" "${extra[@]}"
   n=$((n + 1))
 done
