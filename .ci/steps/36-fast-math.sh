@@ -61,7 +61,9 @@ for cxx in "${compilers[@]}"; do
   echo "$cxx -ffast-math: the stable mode's twofold route refuses the build, naming -fno-associative-math"
   # 4. the x86-64 baseline (SSE2, no FMA): shade_batch point by point (its route there), and with
   #    -DPHONG_SIMD_WITHOUT_FMA on the SSE2 lanes (xsimd's SSE2 kernels and the Dekker products of
-  #    the lanes' fma); fast::pow_unit in a loop, as in item 2.
+  #    the lanes' fma); fast::pow_unit in a loop, as in item 2. g++ 12 and clang++ only: g++ 11 is
+  #    here for the macros it shows (items 1 to 3), and CI keeps under 40 minutes.
+  [[ $cxx == g++-11 ]] && continue
   base=(-std=gnu++20 -O3 -ffast-math -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests)
   if [[ $cxx == g++* ]]; then base+=(-DPHONG_HAVE_QUADMATH=1); fi
   "$cxx" "${base[@]}" -c tests/batch_accuracy.test.cpp -o "$out-base-batch.o" &
