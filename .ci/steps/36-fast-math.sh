@@ -30,7 +30,8 @@
 set -euo pipefail
 mkdir -p build/fast-math
 read -r -a compilers <<<"${PHONG_CI_FAST_MATH:-g++ clang++ g++-11}"
-for cxx in "${compilers[@]}"; do
+one_compiler() { # items 1 to 5 with compiler $1
+  local cxx=$1 out flags libs base args case
   flags=(-std=gnu++20 -O3 -march=native -ffast-math -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests)
   libs=()
   if [[ $cxx == g++* ]]; then flags+=(-DPHONG_HAVE_QUADMATH=1); libs=(-lquadmath); fi
@@ -63,7 +64,7 @@ for cxx in "${compilers[@]}"; do
   #    -DPHONG_SIMD_WITHOUT_FMA on the SSE2 lanes (xsimd's SSE2 kernels and the Dekker products of
   #    the lanes' fma); fast::pow_unit in a loop, as in item 2. g++ 12 and clang++ only: g++ 11 is
   #    here for the macros it shows (items 1 to 3), and CI keeps under 40 minutes.
-  [[ $cxx == g++-11 ]] && continue
+  [[ $cxx == g++-11 ]] && return 0
   base=(-std=gnu++20 -O3 -ffast-math -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests)
   if [[ $cxx == g++* ]]; then base+=(-DPHONG_HAVE_QUADMATH=1); fi
   "$cxx" "${base[@]}" -c tests/batch_accuracy.test.cpp -o "$out-base-batch.o" &
@@ -74,8 +75,9 @@ for cxx in "${compilers[@]}"; do
   "$cxx" "$out-main.o" "$out-base-lanes-batch.o" -o "$out-base-lanes-tests" "${libs[@]}"
   "$out-base-tests" --no-intro | tail -n 2
   "$out-base-lanes-tests" --no-intro | tail -n 2
-done
-if [[ " ${compilers[*]} " == *" clang++ "* ]]; then # 6.
+}
+partial() { # item 6 (after clang++'s items: its tests/main.cpp object)
+  local flags out
   flags=(-std=gnu++20 -O3 -march=native -ffast-math -fno-finite-math-only -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests)
   out=build/fast-math/clang++-partial
   clang++ "${flags[@]}" tests/accuracy_table.cpp -o "$out-table" &
@@ -85,4 +87,19 @@ if [[ " ${compilers[*]} " == *" clang++ "* ]]; then # 6.
   echo "clang++ -ffast-math -fno-finite-math-only: accuracy table, exact and fast: every class within its published bound"
   clang++ build/fast-math/clang++-main.o "$out-batch.o" -o "$out-tests"
   "$out-tests" --no-intro -tc="*exact*,*fast*" | tail -n 2
-fi
+}
+# Two compilers at a time (each has serial parts), each into a log of its own, printed in order.
+jobs=("${compilers[@]}")
+[[ " ${compilers[*]} " == *" clang++ "* ]] && jobs+=(partial)
+status=0
+for ((i = 0; i < ${#jobs[@]}; i += 2)); do
+  pids=()
+  for job in "${jobs[@]:i:2}"; do
+    if [[ $job == partial ]]; then partial >build/fast-math/partial.log 2>&1 &
+    else one_compiler "$job" >"build/fast-math/$job.log" 2>&1 & fi
+    pids+=($!)
+  done
+  for pid in "${pids[@]}"; do wait "$pid" || status=1; done
+done
+for job in "${jobs[@]}"; do cat "build/fast-math/$job.log"; done
+if ((status)); then echo "36-fast-math: a build or check failed (its log above)"; exit 1; fi

@@ -24,51 +24,97 @@ out=build/aarch64
 mkdir -p "$out/include"
 for d in doctest glm xsimd rapidcheck rapidcheck.h; do ln -sfn "/usr/include/$d" "$out/include/$d"; done
 start=$SECONDS
-for cxx in g++ clang++; do
-  files=(main batch_accuracy.test power.test lanes_power.test fast_math.test)
-  if [ "$cxx" = g++ ]; then
-    compiler=(aarch64-linux-gnu-g++)
-  else
-    compiler=(clang++ --target=aarch64-linux-gnu)
-    files+=(batch.test) # clang++ only: g++ 12 takes over 3 CPU minutes per build of it, clang++ one
-  fi
-  for opt in -O2 -O3; do
-    # the BSDFs (docs/bsdf.md): clang++ -O3 only, where they run below
-    if [ "$cxx$opt" = clang++-O3 ]; then files+=(bsdf.test); fi
-    dir=$out/$cxx$opt
-    mkdir -p "$dir"
-    flags=(-std=gnu++20 "$opt" -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests -isystem "$out/include")
-    printf '%s\n' "${files[@]}" |
-      xargs -P2 -I{} "${compiler[@]}" "${flags[@]}" -c tests/{}.cpp -o "$dir/{}.o"
-    objects=("${files[@]/#/$dir/}")
-    "${compiler[@]}" "${objects[@]/%/.o}" -o "$dir/tests"
-    echo "aarch64 $cxx $opt: built ($((SECONDS - start)) s)"
-  done
+# One ninja graph, two jobs at a time: every compile, link and qemu run of the four builds, the NEON
+# hand kernel's check, and riscv64, so that each run starts once its build is linked while the other
+# core compiles. Ninja 1.11 starts, of the steps that are ready, the one declared first: the clang++
+# -O3 build and its long BSDF runs come first, then each build and its run, heaviest files first.
+# The fast kernels' three sweeps against the long-double reference (binary128, in software on
+# aarch64) run in the g++ -O2 build; the others run every other test case. The BSDF tests run from
+# the clang++ -O3 build, in two runs of their own (their check of the lobe's sin a and 1 - cos a
+# against long double takes half of their time), less "pdf integrates to 1", a numerical integral
+# whose tolerance is far above any rounding difference (28 % of their time; it runs on x86-64 in
+# steps 10 and 30).
+# riscv64 (docs/compilers.md, "Other targets"), g++ 12 under qemu-riscv64: xsimd 8.1 has no lanes
+# there (shade_batch shades one point at a time), so every header is parsed alone, and the scalar
+# power kernels give constant evaluation's bits at run time although the target contracts a * b + c
+# by default (tests/power.test.cpp).
+# The hand-written NEON kernel of the aarch64 instruction counts (docs/batch.md, "aarch64") computes
+# shade<F>'s model: benchmarks/insn_count.cpp fails if it leaves its tolerance.
+riscv=0
+command -v riscv64-linux-gnu-g++ >/dev/null && riscv=1
+OUT="$out" SYSROOT="$sysroot" RISCV="$riscv" python3 - >"$out/build.ninja" <<'EOF'
+import glob, os, shlex
+out, sysroot = os.environ["OUT"], os.environ["SYSROOT"]
+q = shlex.quote
+sweeps = ("*fast::pow_unit: within pow_unit_max_rel*,*pow_integer: within*,"
+          "*fast::rsqrt: within rsqrt_max_rel over every float*")
+lobe = "*within 4 ulps of a long double reference*"
+runs = {"clang++-O3": [("clang++-O3-bsdf-lobe", ["-tc=" + lobe]),
+                       ("clang++-O3-bsdf", ["-tc=bsdf:*", "-tce=" + lobe + ",*pdf integrates to 1*"]),
+                       ("clang++-O3", ["-tce=" + sweeps + ",bsdf:*"])],
+        "g++-O2": [("g++-O2", [])],
+        "clang++-O2": [("clang++-O2", ["-tce=" + sweeps])],
+        "g++-O3": [("g++-O3", ["-tce=" + sweeps])]}
+common = f"-std=gnu++20 -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests -isystem {out}/include"
+clang = "clang++ --target=aarch64-linux-gnu"
+print(f"""builddir = {out}
+rule cxx
+  command = $cxx {common} $opt -MD -MF $out.d -c $in -o $out
+  depfile = $out.d
+  deps = gcc
+  description = $cxx $opt $in
+rule link
+  command = $cxx $in -o $out
+  description = link $out
+rule run
+  command = $qemu $bin $args >$log 2>&1 && touch $out
+  description = run $log
+rule parse
+  command = riscv64-linux-gnu-g++ {common} -O2 -fsyntax-only -include $in -x c++ /dev/null && touch $out
+  description = riscv64 parse $in""")
+for config in runs:
+    cxx = clang if config.startswith("clang") else "aarch64-linux-gnu-g++"
+    files = ["batch_accuracy.test", "fast_math.test", "lanes_power.test", "power.test", "main"]
+    if config.startswith("clang"):
+        files.insert(0, "batch.test")  # clang++ only: g++ 12 takes over 3 CPU minutes per build of it
+    if config == "clang++-O3":
+        files.insert(0, "bsdf.test")  # the BSDFs (docs/bsdf.md): built and run here only
+    objects = [f"{out}/{config}/{f}.o" for f in files]
+    for f, o in zip(files, objects):
+        print(f"build {o}: cxx tests/{f}.cpp\n  cxx = {cxx}\n  opt = -{config.split('-')[-1]}")
+    print(f"build {out}/{config}/tests: link {' '.join(objects)}\n  cxx = {cxx}")
+    for name, args in runs[config]:
+        print(f"build {out}/{name}.ok: run {out}/{config}/tests\n  qemu = qemu-aarch64 -L {sysroot}\n"
+              f"  bin = {out}/{config}/tests\n  args = --no-intro {' '.join(q(a) for a in args)}\n  log = {out}/{name}.log")
+print(f"build {out}/insn_count.o: cxx benchmarks/insn_count.cpp\n  cxx = {clang} -Ibenchmarks\n  opt = -O2")
+print(f"build {out}/phong_insn_count: link {out}/insn_count.o\n  cxx = {clang}")
+for model in ("phong", "blinn"):
+    print(f"build {out}/hand-{model}.ok: run {out}/phong_insn_count\n  qemu = qemu-aarch64 -L {sysroot}\n"
+          f"  bin = {out}/phong_insn_count\n  args = hand exact {model} 1024 4 1 check\n  log = {out}/hand-{model}.log")
+if os.environ["RISCV"] == "1":
+    rv = "build/riscv64"
+    for h in sorted(glob.glob("include/phong/**/*.hpp", recursive=True)):
+        if not os.path.basename(h).startswith("diagnostics_"):
+            print(f"build {rv}/parse/{h.replace('/', '_')}.ok: parse {h}")
+    for f in ("power.test", "main"):
+        print(f"build {rv}/{f}.o: cxx tests/{f}.cpp\n  cxx = riscv64-linux-gnu-g++\n  opt = -O2")
+    print(f"build {rv}/tests: link {rv}/power.test.o {rv}/main.o\n  cxx = riscv64-linux-gnu-g++")
+    print(f"build {rv}/tests.ok: run {rv}/tests\n  qemu = qemu-riscv64 -L /usr/riscv64-linux-gnu\n"
+          f"  bin = {rv}/tests\n  args = --no-intro\n  log = {rv}/tests.log")
+EOF
+mkdir -p build/riscv64/parse
+ninja -f "$out/build.ninja" -j2 -k 0 >"$out/ninja.txt" 2>&1 || status=$?
+for log in "$out"/*.log build/riscv64/tests.log; do
+  [[ -f $log ]] || continue
+  echo "${log%.log}:"
+  tail -n 2 "$log"
 done
-# The four test binaries under qemu (one thread each), two runs at a time, the longest first so that
-# both finish together. The fast kernels' three sweeps against the long-double reference (binary128,
-# in software on aarch64) run in the g++ -O2 build; the others run every other test case. The BSDF
-# tests run from the clang++ -O3 build, in two runs of their own (their check of the lobe's sin a
-# and 1 - cos a against long double takes half of their time), less "pdf integrates to 1", a
-# numerical integral whose tolerance is far above any rounding difference (28 % of their time; it
-# runs on x86-64 in steps 10 and 30).
-sweeps='*fast::pow_unit: within pow_unit_max_rel*,*fast::pow_integer: within*,*fast::rsqrt: within rsqrt_max_rel over every float*'
-lobe='*within 4 ulps of a long double reference*'
-runs=("clang++-O3-bsdf-lobe|clang++-O3|-tc=$lobe" "clang++-O3-bsdf|clang++-O3|-tc=bsdf:*|-tce=$lobe,*pdf integrates to 1*" "g++-O2|g++-O2"
-      "clang++-O2|clang++-O2|-tce=$sweeps" "g++-O3|g++-O3|-tce=$sweeps" "clang++-O3|clang++-O3|-tce=$sweeps,bsdf:*")
-run() { # run "NAME|BUILD|doctest options...": the build's tests under qemu, output to NAME.log
-  local f
-  IFS='|' read -r -a f <<<"$1"
-  qemu-aarch64 -L /usr/aarch64-linux-gnu "build/aarch64/${f[1]}/tests" --no-intro "${f[@]:2}" >"build/aarch64/${f[0]}.log" 2>&1
-}
-export -f run
-printf '%s\n' "${runs[@]}" | xargs -P2 -d '\n' -I{} bash -c 'run "$1"' _ {} || status=$?
-for r in "${runs[@]}"; do
-  echo "aarch64 ${r%%|*}:"
-  tail -n 2 "$out/${r%%|*}.log"
-done
-if [ "${status:-0}" != 0 ]; then grep -B2 -A4 "ERROR" "$out"/*.log | head -n 60; exit 1; fi
-echo "aarch64: the tests passed in all four builds ($((SECONDS - start)) s)"
+if [ "${status:-0}" != 0 ]; then
+  grep -A12 "FAILED" "$out/ninja.txt" | head -n 60
+  grep -B2 -A4 "ERROR" "$out"/*.log | head -n 60
+  exit 1
+fi
+echo "aarch64: the tests passed in all four builds, and riscv64's (every header alone, the power kernels) ($((SECONDS - start)) s)"
 # No call into xsimd in the NEON code (docs/compilers.md, "aarch64": g++ 12 kept xsimd 8.1's bit
 # casts and shifts as calls until ext/simd/backend.hpp defined them for neon64).
 for config in g++-O2 g++-O3 clang++-O2 clang++-O3; do
@@ -76,24 +122,3 @@ for config in g++-O2 g++-O3 clang++-O2 clang++-O3; do
   [ "$calls" = 0 ] || { echo "aarch64 $config: $calls calls into xsimd"; exit 1; }
 done
 echo "aarch64: no call into xsimd in the four builds"
-# The hand-written NEON kernel of the aarch64 instruction counts (docs/batch.md, "aarch64") computes
-# shade<F>'s model: benchmarks/insn_count.cpp fails if it leaves its tolerance (clang++ -O2, ~10 s).
-clang++ --target=aarch64-linux-gnu -std=gnu++20 -O2 -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Ibenchmarks \
-        -isystem "$out/include" benchmarks/insn_count.cpp -o "$out/phong_insn_count"
-for model in phong blinn; do qemu-aarch64 -L "$sysroot" "$out/phong_insn_count" hand exact $model 1024 4 1 check; done
-echo "aarch64: all in $((SECONDS - start)) s"
-# riscv64 (docs/compilers.md, "Other targets"), g++ 12 (riscv64-linux-gnu-g++) under qemu-riscv64:
-# xsimd 8.1 has no lanes there (shade_batch shades one point at a time), so every header is parsed
-# alone, and the scalar power kernels give constant evaluation's bits at run time although the
-# target contracts a * b + c by default (tests/power.test.cpp).
-if command -v riscv64-linux-gnu-g++ >/dev/null; then
-  rv=build/riscv64
-  mkdir -p "$rv"
-  rvflags=(-std=gnu++20 -O2 -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests -isystem "$out/include")
-  find include/phong -name '*.hpp' ! -name 'diagnostics_*' | sort |
-    xargs -P2 -I{} riscv64-linux-gnu-g++ "${rvflags[@]}" -fsyntax-only -include {} -x c++ /dev/null
-  printf '%s\n' main power.test | xargs -P2 -I{} riscv64-linux-gnu-g++ "${rvflags[@]}" -c tests/{}.cpp -o "$rv/{}.o"
-  riscv64-linux-gnu-g++ "$rv/main.o" "$rv/power.test.o" -o "$rv/tests"
-  qemu-riscv64 -L /usr/riscv64-linux-gnu "$rv/tests" --no-intro | tail -n 2
-  echo "riscv64: every header alone and the power kernels' tests pass ($((SECONDS - start)) s)"
-fi

@@ -48,10 +48,11 @@ for c in "${configs[@]}"; do
   mkdir -p "$out/$n/tests"
   # xsimd 8.1's own batch<int64> select does not compile under g++'s unoptimized AVX-512BW macros;
   # fast_math_loops.test.cpp reaches it through xsimd::log on double lanes (no shade_batch route does)
-  # The x86-64-v3 and g++ -v4 parses take the files that reach the SIMD lanes (they instantiate the
-  # scalar routes too); the scalar files' ISA branches are the clang++ -v4 parse's and the baseline's.
+  # The x86-64-v3, g++ -v4 and aarch64 parses take the files that reach the SIMD lanes (they
+  # instantiate the scalar routes too, and with them every ISA branch of core/ieee.hpp and
+  # core/twofold.hpp); the scalar files' other branches are the clang++ -v4 parse's and the baseline's.
   printf '%s\n' "${tests[@]}" | { [[ $c == "g++|-O0 -march=x86-64-v4" ]] && grep -v fast_math_loops || cat; } |
-    { [[ $c == *-march=x86-64-v3* || $c == "g++|-O0 -march=x86-64-v4" ]] && simd_files || cat; } |
+    { [[ $c == *-march=x86-64-v3* || $c == "g++|-O0 -march=x86-64-v4" || $c == aarch64* ]] && simd_files || cat; } |
     xargs -P2 -I{} bash -c 'parse "$@" {}' _ "$out/$n/{}.txt" "$cxx" "${common[@]}" "${level[@]}" "${extra[@]}"
   n=$((n + 1))
 done
@@ -132,4 +133,4 @@ if [[ -s "$out/found" ]]; then
   cat "$out/found"
   exit 1
 fi
-echo "strict warnings: ${#tests[@]} test files x ${#configs[@]} builds (the SIMD files only in two), tests/strict_warnings/user_builds.cpp x ${#builds[@]}, aligned_glm.cpp x 3, handler_app x 2 (run) and each header alone with g++ 11 and libc++ (if installed): no warning in phong's headers, every run right"
+echo "strict warnings: ${#tests[@]} test files x ${#configs[@]} builds (the SIMD files only in three), tests/strict_warnings/user_builds.cpp x ${#builds[@]}, aligned_glm.cpp x 3, handler_app x 2 (run) and each header alone with g++ 11 and libc++ (if installed): no warning in phong's headers, every run right"
