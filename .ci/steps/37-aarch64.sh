@@ -30,10 +30,10 @@ start=$SECONDS
 # -O3 build and its long BSDF runs come first, then each build and its run, heaviest files first.
 # The fast kernels' three sweeps against the long-double reference (binary128, in software on
 # aarch64) run in the g++ -O2 build; the others run every other test case. The BSDF tests run from
-# the clang++ -O3 build, in two runs of their own (their check of the lobe's sin a and 1 - cos a
-# against long double takes half of their time), less "pdf integrates to 1", a numerical integral
-# whose tolerance is far above any rounding difference (28 % of their time; it runs on x86-64 in
-# steps 10 and 30).
+# the clang++ -O3 build, in two runs of their own (one: the lobe's sin a and 1 - cos a against long
+# double, binary128 in software here), less "pdf integrates to 1", a numerical integral whose
+# tolerance is far above any rounding difference (28 % of their time; it runs on x86-64 in steps 10
+# and 30).
 # riscv64 (docs/compilers.md, "Other targets"), g++ 12 under qemu-riscv64: xsimd 8.1 has no lanes
 # there (shade_batch shades one point at a time), so every header is parsed alone, and the scalar
 # power kernels give constant evaluation's bits at run time although the target contracts a * b + c
