@@ -27,6 +27,7 @@ ctest --preset asan -LE unit >build/asan/ctest.log 2>&1 & # the other tests (GL,
 other=$!
 bin=build/asan/tests/phong_tests
 n=$("$bin" --count | sed -n 's/.*passing the current filters: \([0-9]*\).*/\1/p')
+[[ $n =~ ^[1-9][0-9]*$ ]] || { echo "30-sanitizers: phong_tests --count gave no number"; exit 1; }
 shards=12
 run_shard() { # run_shard K: test cases K n / shards + 1 to (K + 1) n / shards, output to a log
   local first=$(($1 * n / shards + 1)) last=$((($1 + 1) * n / shards))
