@@ -40,12 +40,9 @@ start=$SECONDS
 # by default (tests/power.test.cpp).
 # The hand-written NEON kernel of the aarch64 instruction counts (docs/batch.md, "aarch64") computes
 # shade<F>'s model: benchmarks/insn_count.cpp fails if it leaves its tolerance.
-riscv=0
-command -v riscv64-linux-gnu-g++ >/dev/null && riscv=1
-OUT="$out" SYSROOT="$sysroot" RISCV="$riscv" python3 - >"$out/build.ninja" <<'EOF'
-import glob, os, shlex
-out, sysroot = os.environ["OUT"], os.environ["SYSROOT"]
-q = shlex.quote
+python3 - "$out" "$sysroot" >"$out/build.ninja" <<'EOF'
+import glob, os, shlex, shutil, sys
+out, sysroot = sys.argv[1:3]
 sweeps = ("*fast::pow_unit: within pow_unit_max_rel*,*pow_integer: within*,"
           "*fast::rsqrt: within rsqrt_max_rel over every float*")
 lobe = "*within 4 ulps of a long double reference*"
@@ -57,6 +54,7 @@ runs = {"clang++-O3": [("clang++-O3-bsdf-lobe", ["-tc=" + lobe]),
         "g++-O3": [("g++-O3", ["-tce=" + sweeps])]}
 common = f"-std=gnu++20 -DNDEBUG -Wall -Wextra -Wpedantic -Werror -Iinclude -Itests -isystem {out}/include"
 clang = "clang++ --target=aarch64-linux-gnu"
+aarch64 = f"qemu-aarch64 -L {sysroot}"
 print(f"""builddir = {out}
 rule cxx
   command = $cxx {common} $opt -MD -MF $out.d -c $in -o $out
@@ -72,37 +70,37 @@ rule run
 rule parse
   command = riscv64-linux-gnu-g++ {common} -O2 -fsyntax-only -include $in -x c++ /dev/null && touch $out
   description = riscv64 parse $in""")
+def program(binary, cxx, sources, opt):  # each (source, name) compiled to name.o beside binary, linked
+    objects = []
+    for source, name in sources:
+        objects.append(f"{os.path.dirname(binary)}/{name}.o")
+        print(f"build {objects[-1]}: cxx {source}\n  cxx = {cxx}\n  opt = {opt}")
+    print(f"build {binary}: link {' '.join(objects)}\n  cxx = {cxx}")
+def run(stamp, qemu, binary, args, log):  # binary under qemu, its output to log
+    print(f"build {stamp}: run {binary}\n  qemu = {qemu}\n  bin = {binary}\n  args = {args}\n  log = {log}")
 for config in runs:
-    cxx = clang if config.startswith("clang") else "aarch64-linux-gnu-g++"
     files = ["batch_accuracy.test", "fast_math.test", "lanes_power.test", "power.test", "main"]
     if config.startswith("clang"):
         files.insert(0, "batch.test")  # clang++ only: g++ 12 takes over 3 CPU minutes per build of it
     if config == "clang++-O3":
         files.insert(0, "bsdf.test")  # the BSDFs (docs/bsdf.md): built and run here only
-    objects = [f"{out}/{config}/{f}.o" for f in files]
-    for f, o in zip(files, objects):
-        print(f"build {o}: cxx tests/{f}.cpp\n  cxx = {cxx}\n  opt = -{config.split('-')[-1]}")
-    print(f"build {out}/{config}/tests: link {' '.join(objects)}\n  cxx = {cxx}")
+    program(f"{out}/{config}/tests", clang if config.startswith("clang") else "aarch64-linux-gnu-g++",
+            [(f"tests/{f}.cpp", f) for f in files], "-" + config.split("-")[-1])
     for name, args in runs[config]:
-        print(f"build {out}/{name}.ok: run {out}/{config}/tests\n  qemu = qemu-aarch64 -L {sysroot}\n"
-              f"  bin = {out}/{config}/tests\n  args = --no-intro {' '.join(q(a) for a in args)}\n  log = {out}/{name}.log")
-print(f"build {out}/insn_count.o: cxx benchmarks/insn_count.cpp\n  cxx = {clang} -Ibenchmarks\n  opt = -O2")
-print(f"build {out}/phong_insn_count: link {out}/insn_count.o\n  cxx = {clang}")
+        run(f"{out}/{name}.ok", aarch64, f"{out}/{config}/tests",
+            " ".join(["--no-intro"] + [shlex.quote(a) for a in args]), f"{out}/{name}.log")
+program(f"{out}/phong_insn_count", f"{clang} -Ibenchmarks", [("benchmarks/insn_count.cpp", "insn_count")], "-O2")
 for model in ("phong", "blinn"):
-    print(f"build {out}/hand-{model}.ok: run {out}/phong_insn_count\n  qemu = qemu-aarch64 -L {sysroot}\n"
-          f"  bin = {out}/phong_insn_count\n  args = hand exact {model} 1024 4 1 check\n  log = {out}/hand-{model}.log")
-if os.environ["RISCV"] == "1":
+    run(f"{out}/hand-{model}.ok", aarch64, f"{out}/phong_insn_count", f"hand exact {model} 1024 4 1 check",
+        f"{out}/hand-{model}.log")
+if shutil.which("riscv64-linux-gnu-g++"):
     rv = "build/riscv64"
     for h in sorted(glob.glob("include/phong/**/*.hpp", recursive=True)):
         if not os.path.basename(h).startswith("diagnostics_"):
             print(f"build {rv}/parse/{h.replace('/', '_')}.ok: parse {h}")
-    for f in ("power.test", "main"):
-        print(f"build {rv}/{f}.o: cxx tests/{f}.cpp\n  cxx = riscv64-linux-gnu-g++\n  opt = -O2")
-    print(f"build {rv}/tests: link {rv}/power.test.o {rv}/main.o\n  cxx = riscv64-linux-gnu-g++")
-    print(f"build {rv}/tests.ok: run {rv}/tests\n  qemu = qemu-riscv64 -L /usr/riscv64-linux-gnu\n"
-          f"  bin = {rv}/tests\n  args = --no-intro\n  log = {rv}/tests.log")
+    program(f"{rv}/tests", "riscv64-linux-gnu-g++", [(f"tests/{f}.cpp", f) for f in ("power.test", "main")], "-O2")
+    run(f"{rv}/tests.ok", "qemu-riscv64 -L /usr/riscv64-linux-gnu", f"{rv}/tests", "--no-intro", f"{rv}/tests.log")
 EOF
-mkdir -p build/riscv64/parse
 ninja -f "$out/build.ninja" -j2 -k 0 >"$out/ninja.txt" 2>&1 || status=$?
 for log in "$out"/*.log build/riscv64/tests.log; do
   [[ -f $log ]] || continue
