@@ -228,6 +228,37 @@ template <class T, features F> void check_power_of_two_shininess(std::uint64_t s
     }
 }
 
+/// The stable mode's light loop without masks (float lanes: two lights at a time, the second's
+/// geometry before the first's power) against the same call with every light mask set (one light
+/// at a time), bit for bit (the bytes), for 1 to 5 lights (pairs and a last odd one). The lights
+/// have no ambient term (a call without masks adds their sum once per call). Some points must show
+/// a highlight, so the power is compared at all.
+template <class T, features F> void check_stable_light_pairs(std::uint64_t seed)
+{
+    constexpr bool given = F.view == view_model::given;
+    for (std::size_t lights = 1; lights <= 5; ++lights) {
+        scene_gen<T> gen(seed + lights);
+        const std::size_t count = 3 * batch_width<T> + 5;
+        batch_case<T> c(gen, F, count, lights);
+        for (std::uint64_t& bits : c.masks) bits = ~std::uint64_t(0);
+        for (light<T>& L : c.base.lights) L.ambient = glm::vec<3, T>(0);
+        material<T> dull = c.base.mat;
+        dull.ks = glm::vec<3, T>(0);
+        std::vector<color<F, T>> paired(count), one_by_one(count), diffuse_only(count);
+        shade_batch<F>(c.soa(given, false), c.base.mat, c.base.lights, std::span<color<F, T>>(paired), c.base.env);
+        shade_batch<F>(c.soa(given, true), c.base.mat, c.base.lights, std::span<color<F, T>>(one_by_one), c.base.env);
+        shade_batch<F>(c.soa(given, false), dull, c.base.lights, std::span<color<F, T>>(diffuse_only), c.base.env);
+        std::size_t same = 0, highlighted = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            same += std::memcmp(&paired[i], &one_by_one[i], sizeof(paired[i])) == 0;
+            highlighted += std::memcmp(&paired[i], &diffuse_only[i], sizeof(paired[i])) != 0;
+        }
+        CAPTURE(lights);
+        CHECK(same == count);
+        CHECK(highlighted > 0);
+    }
+}
+
 /// Bad and extreme geometry through the fast mode's integer powers (n = 32: the loop with the
 /// squarings known; n = 33: pow_integer's loop): a zero normal, NaN and infinite coordinates, huge
 /// and tiny positions, a point at a light. Non-finite geometry gives NaN in every channel, the rest
@@ -321,6 +352,14 @@ TEST_CASE_TEMPLATE("shade_batch fast: a power-of-two shininess without masks giv
     check_power_of_two_shininess<T, presets::with_mode(presets::raytracer_phong, evaluation::fast)>(9102);
     check_power_of_two_shininess<T, presets::with_mode(presets::glsl_ads, evaluation::fast)>(9104); // the benchmark's model
     check_power_of_two_shininess<T, presets::with_mode(presets::blinn_phong_per_light_ambient, evaluation::fast)>(9103);
+}
+
+TEST_CASE_TEMPLATE("shade_batch stable: the light loop without masks gives the bits of the masked call", T, float, double)
+{
+    check_stable_light_pairs<T, presets::with_mode(presets::glsl_ads, evaluation::stable)>(9201); // the benchmark's model
+    check_stable_light_pairs<T, presets::with_mode(presets::blinn_phong_per_light_ambient, evaluation::stable)>(9211);
+    check_stable_light_pairs<T, presets::with_mode(presets::classic_phong, evaluation::stable)>(9221); // attenuation, any light
+    check_stable_light_pairs<T, given_view_stable_blinn_all_terms>(9231); // Blinn, spot, facing flags, given views
 }
 
 TEST_CASE_TEMPLATE("shade_batch fast, integer shininess: bad and extreme geometry", T, float, double)

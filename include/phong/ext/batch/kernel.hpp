@@ -73,9 +73,13 @@ PHONG_LANES_INLINE void shade_stable_steps(const step_stream<V, T>& io, std::siz
         Sums sums{};
         if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
         const auto shade_step = [&]<features G>() {
-            each_visible_light<V, T>(sums, lights.size(), step_bits, count, [&](Sums& step_sums, std::size_t j) {
-                stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
-            });
+            if (step_bits) {
+                each_visible_light<V, T>(sums, lights.size(), step_bits, count, [&](Sums& step_sums, std::size_t j) {
+                    stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
+                });
+            } else {
+                stable_lanes::add_lights<G>(sums, s, lights, wide_lights, mat.shininess);
+            }
             io.template put<G, Q>(first + k, finish<G>(sums, s, mat, env));
         };
         if constexpr (Folded && ambient_hoistable<F>) {

@@ -13,7 +13,9 @@
 #include "../../routes/light_terms.hpp"
 #include "../../core/twofold.hpp"
 
+#include <cstddef>
 #include <limits>
+#include <span>
 #include <type_traits>
 
 #if PHONG_HAS_XSIMD && defined(__SSE2__)
@@ -281,15 +283,23 @@ template <class V, class D> inline V power(const part_terms<D>& lower, const par
     return detail::lanes::pow_cosine(xsimd::max(join<V>(lower.x, upper.x), V(0.0f)), join<V>(lower.c, upper.c), m);
 }
 
-/// One light's terms added to the float sums of a step: the geometry of both parts in double, the
-/// weights, x and c rounded to float once, power and sums in float. L: the light's float lanes
-/// (with the material when folded); wide: the same light in double (position, attenuation, spot).
-template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>
-inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const light<V, Q>& L,
-                                  const light<double, Q>& wide, const V& m)
+/// A light's geometry at a step's points: both parts (lower, upper lanes) in double.
+template <class V> struct step_terms {
+    part_terms<double_t<V>> lower, upper;
+};
+template <features F, class V, glm::qualifier Q>
+inline step_terms<V> terms_of(const surface_frame<V, Q>& s, const light<double, Q>& wide)
 {
-    using D = double_t<V>;
-    const part_terms<D> lower = part_light<F>(s.part[0], wide), upper = part_light<F>(s.part[1], wide);
+    return {part_light<F>(s.part[0], wide), part_light<F>(s.part[1], wide)};
+}
+
+/// A light's terms (terms_of) added to the float sums of a step: the weights, x and c rounded to
+/// float once, power and sums in float. L: the light's float lanes (with the material when folded).
+template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>
+inline void add_terms(Sums<V, Q>& sums, const step_terms<V>& t, const light<V, Q>& L, const V& m)
+{
+    const auto& lower = t.lower;
+    const auto& upper = t.upper;
     if constexpr (F.light_ambient) add_ambient<F>(sums, L, F.attenuate_ambient ? join<V>(lower.f, upper.f) : V(1.0f));
     if constexpr (F.diffuse) sum_of<term_kind::diffuse>(sums) += L.diffuse * join<V>(lower.diffuse, upper.diffuse);
     if constexpr (F.specular != specular_model::none) {
@@ -303,6 +313,31 @@ inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const ligh
             sum_of<term_kind::specular>(sums) += L.specular * (weight * power(lower, upper, m));
         }
     }
+}
+
+/// One light's terms added to the float sums of a step (terms_of, then add_terms). wide: the same
+/// light in double (position, attenuation, spot).
+template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>
+inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const light<V, Q>& L,
+                                  const light<double, Q>& wide, const V& m)
+{
+    add_terms<F>(sums, terms_of<F>(s, wide), L, m);
+}
+
+/// Every light added to the sums of a step that sees them all, in order. Two at a time: the second
+/// light's geometry (double) does not wait for the first's power (float), and written before it,
+/// the core overlaps the two chains. The same terms added in the same order as add_light's.
+template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>
+inline void add_lights(Sums<V, Q>& sums, const surface_frame<V, Q>& s, std::span<const light<V, Q>> lights,
+                       std::span<const light<double, Q>> wide, const V& m)
+{
+    std::size_t j = 0;
+    for (; j + 1 < lights.size(); j += 2) {
+        const step_terms<V> first = terms_of<F>(s, wide[j]), second = terms_of<F>(s, wide[j + 1]);
+        add_terms<F>(sums, first, lights[j], m);
+        add_terms<F>(sums, second, lights[j + 1], m);
+    }
+    if (j < lights.size()) add_light<F>(sums, s, lights[j], wide[j], m);
 }
 #endif
 
