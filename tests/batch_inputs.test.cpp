@@ -228,12 +228,12 @@ template <class T, features F> void check_power_of_two_shininess(std::uint64_t s
     }
 }
 
-/// The stable mode's light loop without masks (float lanes: two lights at a time, the second's
-/// geometry before the first's power) against the same call with every light mask set (one light
-/// at a time), bit for bit (the bytes), for 1 to 5 lights (pairs and a last odd one). The lights
-/// have no ambient term (a call without masks adds their sum once per call). Some points must show
-/// a highlight, so the power is compared at all.
-template <class T, features F> void check_stable_light_pairs(std::uint64_t seed)
+/// The light loop without masks (SIMD lanes: two lights at a time, the second's geometry before the
+/// first's power) against the same call with every light mask set (one light at a time), bit for
+/// bit (the bytes), for 1 to 5 lights (pairs and a last odd one). The lights have no ambient term
+/// (a call without masks adds their sum once per call). Some points must show a highlight, so the
+/// power is compared at all.
+template <class T, features F> void check_light_pairs(std::uint64_t seed)
 {
     constexpr bool given = F.view == view_model::given;
     for (std::size_t lights = 1; lights <= 5; ++lights) {
@@ -354,12 +354,18 @@ TEST_CASE_TEMPLATE("shade_batch fast: a power-of-two shininess without masks giv
     check_power_of_two_shininess<T, presets::with_mode(presets::blinn_phong_per_light_ambient, evaluation::fast)>(9103);
 }
 
-TEST_CASE_TEMPLATE("shade_batch stable: the light loop without masks gives the bits of the masked call", T, float, double)
+TEST_CASE_TEMPLATE("shade_batch: the light loop without masks gives the bits of the masked call", T, float, double)
 {
-    check_stable_light_pairs<T, presets::with_mode(presets::glsl_ads, evaluation::stable)>(9201); // the benchmark's model
-    check_stable_light_pairs<T, presets::with_mode(presets::blinn_phong_per_light_ambient, evaluation::stable)>(9211);
-    check_stable_light_pairs<T, presets::with_mode(presets::classic_phong, evaluation::stable)>(9221); // attenuation, any light
-    check_stable_light_pairs<T, given_view_stable_blinn_all_terms>(9231); // Blinn, spot, facing flags, given views
+    // Feature sets the other tests instantiate already (shade_batch's compile time).
+    check_light_pairs<T, presets::glsl_ads>(9201); // the benchmark's model
+    check_light_pairs<T, presets::blinn_phong_per_light_ambient>(9202);
+    check_light_pairs<T, input_feature_sets[2]>(9203); // Blinn, given views
+    check_light_pairs<T, presets::with_mode(presets::raytracer_phong, evaluation::stable)>(9211);
+    check_light_pairs<T, presets::with_mode(presets::classic_phong, evaluation::stable)>(9212); // attenuation, any light
+    check_light_pairs<T, input_feature_sets[3]>(9213); // Blinn, attenuation, light ambient not attenuated
+    check_light_pairs<T, given_view_stable_blinn_all_terms>(9214); // Blinn, spot, facing flags
+    check_light_pairs<T, presets::with_mode(presets::glsl_ads, evaluation::fast)>(9221);
+    check_light_pairs<T, presets::with_mode(presets::blinn_phong_per_light_ambient, evaluation::fast)>(9222);
 }
 
 TEST_CASE_TEMPLATE("shade_batch fast, integer shininess: bad and extreme geometry", T, float, double)

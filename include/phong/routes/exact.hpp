@@ -448,47 +448,68 @@ PHONG_INLINE constexpr void add_halfway_specular_fast(Sums<T, Q>& sums, const Li
     sum_of<term_kind::specular>(sums) += in_type<T>(specular_of(L)) * (f * power);
 }
 
-/// One light's terms added to the sums. Light: a light_source of scalar T, or float lights in
-/// double (the stable mode's wider route); visibility: unweighted or a weight in [0, 1]; m: T, or on
-/// SIMD lanes lane_shininess, integer_exponent or step_specular. Dot products use d itself, scaled
-/// by 1/|d| only for lit pairs: the branch signs do not wait for a square root.
-template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent, class W>
-PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, const Exponent& m, W visibility)
+/// A pair's geometry (light_terms_of), for add_light_terms: d = L.xyz - w Q, 1/|d| where read, the
+/// unit light vector l (spot, Blinn), the light factor f, n.d, n.l, and whether the pair is lit.
+template <class T, glm::qualifier Q>
+struct light_terms {
+    glm::vec<3, T, Q> d;
+    glm::vec<3, T, Q> l;
+    T inv, f, nd, nl;
+    mask_t<T> on;
+};
+
+/// The first half of add_light: the pair's geometry, up to n.l.
+template <features F, class T, glm::qualifier Q, class Light, class W>
+PHONG_INLINE constexpr light_terms<T, Q> light_terms_of(const surface_frame<T, Q>& s, const Light& L, W visibility)
 {
     using vec3 = glm::vec<3, T, Q>;
+    light_terms<T, Q> t{vec3(T(0)), vec3(T(0)), T(0), T(0), T(0), T(0), mask_t<T>(false)};
     const T w = light_w<F, T>(L);
     decltype(auto) p = position_of(L);
-    vec3 d;
+    vec3& d = t.d;
     if constexpr (F.lights == light_kind::positional && !std::is_floating_point_v<T>)
         d = vec3(T(p.x), T(p.y), T(p.z)) + s.lanes.minus_position; // L.xyz - Q, the same bits (see lanes_frame)
     else d = detail::homogeneous_difference<F.lights>(vec3(T(p.x), T(p.y), T(p.z)), w, s.position);
     const T dd = detail::dot(d, d);
-    const T nd = detail::dot(s.normal, d);
+    t.nd = detail::dot(s.normal, d);
 
-    vec3 l(T(0)); // the unit light vector; read by the spot (every pair) and by Blinn
-    T inv = T(0); // 1/|d|
+    // l: the unit light vector, read by the spot (every pair) and by Blinn; inv = 1/|d|
     if constexpr (F.spot != spot_model::none) {
-        inv = exact_inverse_length(dd);
-        l = d * inv;
-        for (glm::length_t k = 0; k < 3; ++k) l[k] = detail::select(inv > T(0), l[k], T(0)); // an overflowed d: inf * 0
+        t.inv = exact_inverse_length(dd);
+        t.l = d * t.inv;
+        for (glm::length_t k = 0; k < 3; ++k) t.l[k] = detail::select(t.inv > T(0), t.l[k], T(0)); // an overflowed d: inf * 0
     }
     T distance = T(0); // only attenuation reads it
     if constexpr (F.attenuation != attenuation_model::none && F.lights != light_kind::directional) distance = detail::sqrt(dd);
-    const T f = light_factor<F>(L, distance, w, l, visibility);
-    add_ambient<F>(sums, L, f);
+    t.f = light_factor<F>(L, distance, w, t.l, visibility);
 
-    const mask_t<T> on = lit<F>(s, dd, nd);
-    // Scalars skip an unlit pair. SIMD lanes select every term by `on` (off lanes may compute inf
-    // or NaN, never added): a branch per light would mispredict.
+    t.on = lit<F>(s, dd, t.nd);
+    // Scalars stop at an unlit pair (nl not computed). SIMD lanes select every term by `on` (off
+    // lanes may compute inf or NaN, never added): a branch per light would mispredict.
+    if constexpr (std::is_same_v<mask_t<T>, bool>) {
+        if (!t.on) return t;
+    }
+    if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
+        t.nl = t.nd / detail::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
+    } else {
+        if constexpr (F.spot == spot_model::none) t.inv = lit_inverse_length<F.mode>(dd); // lanes where dd is not normal are not lit: selected away
+        t.nl = t.nd * t.inv;
+    }
+    return t;
+}
+
+/// The second half of add_light: the pair's terms (light_terms_of) added to the sums.
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent>
+PHONG_INLINE constexpr void add_light_terms(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, const Exponent& m,
+                                            light_terms<T, Q> t)
+{
+    using vec3 = glm::vec<3, T, Q>;
+    const vec3& d = t.d;
+    const T f = t.f, nl = t.nl, inv = t.inv;
+    const mask_t<T> on = t.on;
+    add_ambient<F>(sums, L, f);
     if constexpr (std::is_same_v<mask_t<T>, bool>) {
         if (!on) return;
-    }
-    T nl;
-    if constexpr (F.specular == specular_model::none && F.spot == spot_model::none) {
-        nl = nd / detail::sqrt(dd); // one rounding (SIMD lanes that are off may divide by 0: not selected)
-    } else {
-        if constexpr (F.spot == spot_model::none) inv = lit_inverse_length<F.mode>(dd); // lanes where dd is not normal are not lit: selected away
-        nl = nd * inv;
     }
     // Scalars with light_sums add diffuse last (the same bits), so a colour read by both terms is not
     // held across the power; SIMD lanes and folded_sums: diffuse first (docs/batch.md).
@@ -503,7 +524,7 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
         specular_on = on;
     else specular_on = math_traits<T>::both(on, s.sees_viewer);
     if constexpr (F.specular == specular_model::phong) {
-        add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(nd, s.nv, d, s.view), inv, m, specular_on);
+        add_specular<F.mode>(sums, L, f, detail::reflection_cosine_scaled(t.nd, s.nv, d, s.view), inv, m, specular_on);
     } else if constexpr (F.specular == specular_model::blinn && F.spot == spot_model::none &&
                          is_integer_exponent<Exponent, T>) {
         add_halfway_specular_fast(sums, L, f, detail::select(on, nl, T(0)), inv, d, s, m, on);
@@ -513,10 +534,21 @@ PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q
     } else if constexpr (F.specular == specular_model::blinn) {
         // Rounded products: an fma contracted into l + v would keep l = -v from cancelling exactly.
         if constexpr (F.spot == spot_model::none)
-            l = vec3(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
-        add_specular<F.mode>(sums, L, f, nl + s.nv, route_inverse_halfway_length<F.mode>(l, s.view), m, specular_on);
+            t.l = vec3(detail::rounded_product(d.x, inv), detail::rounded_product(d.y, inv), detail::rounded_product(d.z, inv));
+        add_specular<F.mode>(sums, L, f, nl + s.nv, route_inverse_halfway_length<F.mode>(t.l, s.view), m, specular_on);
     }
     if constexpr (F.diffuse && diffuse_last) add_diffuse<F>(sums, L, f, nl, on);
+}
+
+/// One light's terms added to the sums (light_terms_of, then add_light_terms). Light: a
+/// light_source of scalar T, or float lights in double (the stable mode's wider route); visibility:
+/// unweighted or a weight in [0, 1]; m: T, or on SIMD lanes lane_shininess, integer_exponent or
+/// step_specular. Dot products use d itself, scaled by 1/|d| only for lit pairs: the branch signs
+/// do not wait for a square root.
+template <features F, class T, glm::qualifier Q, template <class, glm::qualifier> class Sums, class Light, class Exponent, class W>
+PHONG_INLINE constexpr void add_light(Sums<T, Q>& sums, const surface_frame<T, Q>& s, const Light& L, const Exponent& m, W visibility)
+{
+    add_light_terms<F>(sums, s, L, m, light_terms_of<F>(s, L, visibility));
 }
 
 } // namespace phong::detail::exact

@@ -178,6 +178,22 @@ PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s,
                 }
             }
         }
+        if constexpr (F.mode != evaluation::stable && avx512_lanes<V, T>) {
+            // Every light seen: two at a time, the second light's geometry before the first's
+            // power, so the core overlaps the two chains (the same terms in the same order). Only
+            // with AVX-512's 32 registers: with AVX2's 16 the values of two lights spill (docs/batch.md).
+            if (!bits) {
+                std::size_t j = 0;
+                for (; j + 1 < lights.size(); j += 2) {
+                    const auto first = exact::light_terms_of<F>(s, lights[j], unweighted{});
+                    const auto second = exact::light_terms_of<F>(s, lights[j + 1], unweighted{});
+                    exact::add_light_terms<F>(sums, s, lights[j], step_m, first);
+                    exact::add_light_terms<F>(sums, s, lights[j + 1], step_m, second);
+                }
+                if (j < lights.size()) detail::add_light<F>(sums, s, lights[j], step_m);
+                return;
+            }
+        }
         each_visible_light<V, T>(sums, lights.size(), bits, count,
                                  [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], step_m); });
     }
