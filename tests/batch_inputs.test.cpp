@@ -193,70 +193,68 @@ template <class T, features F> void check_long_call_equals_points_alone(std::uin
     }
 }
 
-/// The fast mode's light loop with a power-of-two shininess n = 2^K known at compile time
-/// (add_masked_lights without masks: K squarings in a row) against the same call with every light
-/// mask set (each_visible_light: fast::detail::pow_integer's chain entered by a jump), bit for bit (NaN
-/// included: the bytes), for n = 1 to 64 and odd n (which both calls shade alike); and the
-/// specular term present at some points, so that the power is compared at all. The lights have
-/// no ambient term: a call without masks adds the sum of those once per call, a masked one per
-/// light (different roundings, about 2e-7 relative in float).
-template <class T, features F> void check_power_of_two_shininess(std::uint64_t seed)
+/// shade_batch of c's points without masks against the same call with every light mask set, bit for
+/// bit (NaN included: the bytes). Returns at how many points the call without a specular term
+/// differs (the callers check that the power was compared at all). c's masks are all set and its
+/// lights have no ambient term: a call without masks adds the sum of those once per call, a masked
+/// one per light (different roundings, about 2e-7 relative in float).
+template <class T, features F> std::size_t check_unmasked_equals_masked(const batch_case<T>& c, const material<T>& mat)
 {
     constexpr bool given = F.view == view_model::given;
+    const std::size_t count = c.p.size();
+    material<T> dull = mat; // no specular term: the difference below is the specular term
+    dull.ks = glm::vec<3, T>(0);
+    std::vector<color<F, T>> unmasked(count), masked_call(count), diffuse_only(count);
+    shade_batch<F>(c.soa(given, false), mat, c.base.lights, std::span<color<F, T>>(unmasked), c.base.env);
+    shade_batch<F>(c.soa(given, true), mat, c.base.lights, std::span<color<F, T>>(masked_call), c.base.env);
+    shade_batch<F>(c.soa(given, false), dull, c.base.lights, std::span<color<F, T>>(diffuse_only), c.base.env);
+    std::size_t same = 0, highlighted = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        same += std::memcmp(&unmasked[i], &masked_call[i], sizeof(unmasked[i])) == 0;
+        highlighted += std::memcmp(&unmasked[i], &diffuse_only[i], sizeof(unmasked[i])) != 0;
+    }
+    CHECK(same == count);
+    return highlighted;
+}
+
+/// `lights` lights at 3 W + 5 points, every mask set and no light ambient (check_unmasked_equals_masked).
+template <class T, features F> batch_case<T> all_visible_case(std::uint64_t seed, std::size_t lights)
+{
     scene_gen<T> gen(seed);
-    const std::size_t count = 3 * batch_width<T> + 5;
-    batch_case<T> c(gen, F, count, 4);
+    batch_case<T> c(gen, F, 3 * batch_width<T> + 5, int(lights));
     for (std::uint64_t& bits : c.masks) bits = ~std::uint64_t(0);
     for (light<T>& L : c.base.lights) L.ambient = glm::vec<3, T>(0);
+    return c;
+}
+
+/// The fast mode's light loop with a power-of-two shininess n = 2^K known at compile time
+/// (add_masked_lights without masks: K squarings in a row) against the same call with every light
+/// mask set (each_visible_light: fast::detail::pow_integer's chain entered by a jump), for n = 1 to
+/// 64 and odd n (which both calls shade alike).
+template <class T, features F> void check_power_of_two_shininess(std::uint64_t seed)
+{
+    const batch_case<T> c = all_visible_case<T, F>(seed, 4);
     for (const T n : {T(1), T(2), T(4), T(8), T(16), T(32), T(64), T(3), T(33)}) {
         material<T> mat = c.base.mat;
         mat.shininess = n;
-        material<T> dull = mat; // no specular term: the difference below is the specular term
-        dull.ks = glm::vec<3, T>(0);
-        std::vector<color<F, T>> fixed(count), chained(count), diffuse_only(count);
-        shade_batch<F>(c.soa(given, false), mat, c.base.lights, std::span<color<F, T>>(fixed), c.base.env);
-        shade_batch<F>(c.soa(given, true), mat, c.base.lights, std::span<color<F, T>>(chained), c.base.env);
-        shade_batch<F>(c.soa(given, false), dull, c.base.lights, std::span<color<F, T>>(diffuse_only), c.base.env);
-        std::size_t same = 0, highlighted = 0;
-        for (std::size_t i = 0; i < count; ++i) {
-            same += std::memcmp(&fixed[i], &chained[i], sizeof(fixed[i])) == 0;
-            highlighted += std::memcmp(&fixed[i], &diffuse_only[i], sizeof(fixed[i])) != 0;
-        }
         CAPTURE(n);
-        CHECK(same == count);
-        CHECK(highlighted > 0);
+        CHECK(check_unmasked_equals_masked<T, F>(c, mat) > 0);
     }
 }
 
-/// The light loop without masks (SIMD lanes: two lights at a time, the second's geometry before the
-/// first's power) against the same call with every light mask set (one light at a time), bit for
-/// bit (the bytes), for 1 to 5 lights (pairs and a last odd one). The lights have no ambient term
-/// (a call without masks adds their sum once per call). Some points must show a highlight, so the
-/// power is compared at all.
+/// The light loop without masks (two lights at a time: the stable mode's float lanes, the exact and
+/// fast modes' AVX-512 lanes; the second light's geometry before the first's power) against the
+/// same call with every light mask set (one light at a time), for 1 to 5 lights (pairs and a last
+/// odd one). A highlight somewhere among the five calls (one light may light no highlight).
 template <class T, features F> void check_light_pairs(std::uint64_t seed)
 {
-    constexpr bool given = F.view == view_model::given;
+    std::size_t highlighted = 0;
     for (std::size_t lights = 1; lights <= 5; ++lights) {
-        scene_gen<T> gen(seed + lights);
-        const std::size_t count = 3 * batch_width<T> + 5;
-        batch_case<T> c(gen, F, count, lights);
-        for (std::uint64_t& bits : c.masks) bits = ~std::uint64_t(0);
-        for (light<T>& L : c.base.lights) L.ambient = glm::vec<3, T>(0);
-        material<T> dull = c.base.mat;
-        dull.ks = glm::vec<3, T>(0);
-        std::vector<color<F, T>> paired(count), one_by_one(count), diffuse_only(count);
-        shade_batch<F>(c.soa(given, false), c.base.mat, c.base.lights, std::span<color<F, T>>(paired), c.base.env);
-        shade_batch<F>(c.soa(given, true), c.base.mat, c.base.lights, std::span<color<F, T>>(one_by_one), c.base.env);
-        shade_batch<F>(c.soa(given, false), dull, c.base.lights, std::span<color<F, T>>(diffuse_only), c.base.env);
-        std::size_t same = 0, highlighted = 0;
-        for (std::size_t i = 0; i < count; ++i) {
-            same += std::memcmp(&paired[i], &one_by_one[i], sizeof(paired[i])) == 0;
-            highlighted += std::memcmp(&paired[i], &diffuse_only[i], sizeof(paired[i])) != 0;
-        }
+        const batch_case<T> c = all_visible_case<T, F>(seed + lights, lights);
         CAPTURE(lights);
-        CHECK(same == count);
-        CHECK(highlighted > 0);
+        highlighted += check_unmasked_equals_masked<T, F>(c, c.base.mat);
     }
+    CHECK(highlighted > 0);
 }
 
 /// Bad and extreme geometry through the fast mode's integer powers (n = 32: the loop with the
