@@ -180,8 +180,8 @@ PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s,
         }
         if constexpr (F.mode != evaluation::stable && avx512_lanes<V, T>) {
             // Every light seen: two at a time, the second light's geometry before the first's
-            // power, so the core overlaps the two chains (the same terms in the same order). Only
-            // with AVX-512's 32 registers: with AVX2's 16 the values of two lights spill (docs/batch.md).
+            // power, so the core overlaps the two chains (the same terms in the same order). AVX-512
+            // only: two lights' values need its 32 vector registers (docs/batch.md).
             if (!bits) {
                 std::size_t j = 0;
                 for (; j + 1 < lights.size(); j += 2) {
