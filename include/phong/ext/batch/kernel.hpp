@@ -73,13 +73,9 @@ PHONG_LANES_INLINE void shade_stable_steps(const step_stream<V, T>& io, std::siz
         Sums sums{};
         if constexpr (Folded) sums.total = env.ambient + s.poison; // finish(folded_sums): the poison is in the start
         const auto shade_step = [&]<features G>() {
-            if (step_bits) {
-                each_visible_light<V, T>(sums, lights.size(), step_bits, count, [&](Sums& step_sums, std::size_t j) {
-                    stable_lanes::add_light<G>(step_sums, s, lights[j], wide_lights[j], mat.shininess);
-                });
-            } else {
-                stable_lanes::add_lights<G>(sums, s, lights, wide_lights, mat.shininess);
-            }
+            each_visible_light_in_pairs<V, T>(
+                sums, lights.size(), step_bits, count, [&](std::size_t j) { return stable_lanes::terms_of<G>(s, wide_lights[j]); },
+                [&](Sums& step_sums, std::size_t j, const auto& t) { stable_lanes::add_terms<G>(step_sums, t, lights[j], mat.shininess); });
             io.template put<G, Q>(first + k, finish<G>(sums, s, mat, env));
         };
         if constexpr (Folded && ambient_hoistable<F>) {

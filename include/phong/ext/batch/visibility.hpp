@@ -144,6 +144,29 @@ PHONG_LANES_INLINE void each_visible_light(Sums& sums, std::size_t light_count, 
     }
 }
 
+/// each_visible_light for a light step in two halves: terms_of(j), light j's geometry, and
+/// add_terms(sums, j, terms), its terms added to the sums. A step that sees every light takes them
+/// two at a time, the second light's geometry before the first's sums, so that the core overlaps
+/// the two lights' dependent chains; the same terms are added in the same order.
+template <class V, class T, class Sums, class TermsOf, class AddTerms>
+PHONG_LANES_INLINE void each_visible_light_in_pairs(Sums& sums, std::size_t light_count, const std::uint64_t* bits, std::size_t count,
+                                                    TermsOf&& terms_of, AddTerms&& add_terms)
+{
+    if (bits) {
+        each_visible_light<V, T>(sums, light_count, bits, count,
+                                 [&](Sums& step_sums, std::size_t j) { add_terms(step_sums, j, terms_of(j)); });
+        return;
+    }
+    std::size_t j = 0;
+    for (; j + 1 < light_count; j += 2) {
+        const auto first = terms_of(j);
+        const auto second = terms_of(j + 1);
+        add_terms(sums, j, first);
+        add_terms(sums, j + 1, second);
+    }
+    if (j < light_count) add_terms(sums, j, terms_of(j));
+}
+
 template <features F, class V, class T, glm::qualifier Q, class Sums, class Exponent>
 PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s, std::span<const light<V, Q>> lights,
                        const Exponent& m, const std::uint64_t* bits, std::size_t count)
@@ -179,20 +202,11 @@ PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s,
             }
         }
         if constexpr (F.mode != evaluation::stable && avx512_lanes<V, T>) {
-            // Every light seen: two at a time, the second light's geometry before the first's
-            // power, so the core overlaps the two chains (the same terms in the same order). AVX-512
-            // only: two lights' values need its 32 vector registers (docs/batch.md).
-            if (!bits) {
-                std::size_t j = 0;
-                for (; j + 1 < lights.size(); j += 2) {
-                    const auto first = exact::light_terms_of<F>(s, lights[j], unweighted{});
-                    const auto second = exact::light_terms_of<F>(s, lights[j + 1], unweighted{});
-                    exact::add_light_terms<F>(sums, s, lights[j], step_m, first);
-                    exact::add_light_terms<F>(sums, s, lights[j + 1], step_m, second);
-                }
-                if (j < lights.size()) detail::add_light<F>(sums, s, lights[j], step_m);
-                return;
-            }
+            // In pairs on AVX-512 only: two lights' values need its 32 vector registers (docs/batch.md).
+            each_visible_light_in_pairs<V, T>(
+                sums, lights.size(), bits, count, [&](std::size_t j) { return exact::light_terms_of<F>(s, lights[j], unweighted{}); },
+                [&](Sums& step_sums, std::size_t j, const auto& t) { exact::add_light_terms<F>(step_sums, s, lights[j], step_m, t); });
+            return;
         }
         each_visible_light<V, T>(sums, lights.size(), bits, count,
                                  [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], step_m); });

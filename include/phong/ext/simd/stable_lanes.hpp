@@ -15,7 +15,6 @@
 
 #include <cstddef>
 #include <limits>
-#include <span>
 #include <type_traits>
 
 #if PHONG_HAS_XSIMD && defined(__SSE2__)
@@ -315,30 +314,6 @@ inline void add_terms(Sums<V, Q>& sums, const step_terms<V>& t, const light<V, Q
     }
 }
 
-/// One light's terms added to the float sums of a step (terms_of, then add_terms). wide: the same
-/// light in double (position, attenuation, spot).
-template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>
-inline void add_light(Sums<V, Q>& sums, const surface_frame<V, Q>& s, const light<V, Q>& L,
-                                  const light<double, Q>& wide, const V& m)
-{
-    add_terms<F>(sums, terms_of<F>(s, wide), L, m);
-}
-
-/// Every light added to the sums of a step that sees them all, in order. Two at a time: the second
-/// light's geometry (double) does not wait for the first's power (float), and written before it,
-/// the core overlaps the two chains. The same terms added in the same order as add_light's.
-template <features F, class V, glm::qualifier Q, template <class, glm::qualifier> class Sums>
-inline void add_lights(Sums<V, Q>& sums, const surface_frame<V, Q>& s, std::span<const light<V, Q>> lights,
-                       std::span<const light<double, Q>> wide, const V& m)
-{
-    std::size_t j = 0;
-    for (; j + 1 < lights.size(); j += 2) {
-        const step_terms<V> first = terms_of<F>(s, wide[j]), second = terms_of<F>(s, wide[j + 1]);
-        add_terms<F>(sums, first, lights[j], m);
-        add_terms<F>(sums, second, lights[j + 1], m);
-    }
-    if (j < lights.size()) add_light<F>(sums, s, lights[j], wide[j], m);
-}
 #endif
 
 } // namespace phong::detail::stable_lanes
