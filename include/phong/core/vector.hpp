@@ -60,9 +60,16 @@ PHONG_INLINE constexpr T dot(const glm::vec<L, T, Q>& a, const glm::vec<L, T, Q>
             if (const T overflow = detail::constant_dot_overflow(a, b); overflow != T(0)) return overflow;
     // Named components, not v[k]: GLM's operator[] is a switch that misleads g++'s block layout.
     T sum = a.x * b.x;
-    if constexpr (L > 1) sum += a.y * b.y;
-    if constexpr (L > 2) sum += a.z * b.z;
-    if constexpr (L > 3) sum += a.w * b.w;
+    if constexpr (std::is_floating_point_v<T>) {
+        if constexpr (L > 1) sum += a.y * b.y;
+        if constexpr (L > 2) sum += a.z * b.z;
+        if constexpr (L > 3) sum += a.w * b.w;
+    } else { // lanes: each further product fused into the sum where the target has fma, in this order
+             // whatever loop inlines it (a compiler's own contraction picks the product by operand order)
+        if constexpr (L > 1) sum = math_traits<T>::madd(a.y, b.y, sum);
+        if constexpr (L > 2) sum = math_traits<T>::madd(a.z, b.z, sum);
+        if constexpr (L > 3) sum = math_traits<T>::madd(a.w, b.w, sum);
+    }
     return sum;
 }
 

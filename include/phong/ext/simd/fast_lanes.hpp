@@ -23,16 +23,8 @@ struct lanes<xsimd::batch<T, A>> {
     using bits_t = xsimd::batch<std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>, A>;
     static bits_t bits(const V& x) { return xsimd::bitwise_cast<bits_t>(x); }
     static V from_bits(const bits_t& u) { return xsimd::bitwise_cast<V>(u); }
-    /// a * b + c: the fused instruction where the target has one (xsimd 8.1's fma is unfused on
-    /// AVX-512), else a multiply and an add (these kernels need no single rounding).
-    static V madd(const V& a, const V& b, const V& c)
-    {
-#  if defined(__FMA__) || defined(__AVX512F__) || defined(__aarch64__)
-        return phong::detail::math_traits<V>::fma(a, b, c);
-#  else
-        return a * b + c;
-#  endif
-    }
+    /// a * b + c: the fused instruction where the target has one, else a multiply and an add.
+    static V madd(const V& a, const V& b, const V& c) { return phong::detail::math_traits<V>::madd(a, b, c); }
     /// 1/sqrt(x), relative error fast::rsqrt_max_rel<T>. Float: math_traits' estimate + one Newton
     /// step (AVX, AVX-512). Double with AVX-512: rsqrt14 + two rsqrt_newton_product steps. Elsewhere
     /// 1/sqrt. x = 0: inf, x = inf: 0.

@@ -173,6 +173,16 @@ struct math_traits<xsimd::batch<T, A>> {
     }
     /// a * b + c rounded once (detail::simd::fma: the fused instruction, or Dekker's exact product).
     PHONG_LANES_INLINE static V fma(const V& a, const V& b, const V& c) { return detail::simd::fma(a, b, c); }
+    /// a * b + c: the fused instruction where the target has one, else a multiply and an add (for
+    /// sums of products, whose rounding is then the same in every loop that inlines them).
+    PHONG_LANES_INLINE static V madd(const V& a, const V& b, const V& c)
+    {
+#  if defined(__FMA__) || defined(__AVX512F__) || defined(__aarch64__)
+        return detail::simd::fma(a, b, c);
+#  else
+        return a * b + c;
+#  endif
+    }
     /// a * b + c by Dekker's split (detail::simd::split_fma), whatever the target.
     PHONG_LANES_INLINE static V split_fma(const V& a, const V& b, const V& c) { return detail::simd::split_fma(a, b, c); }
     static V select(const mask& m, const V& a, const V& b) { return xsimd::select(m, a, b); }
