@@ -27,6 +27,7 @@ template <> struct phong::detail::math_traits<SV> {
     static V log1p(const V& x) { return stdx::log1p(x); }
     static V pow(const V& x, const V& y) { return stdx::pow(x, y); }
     static V fma(const V& a, const V& b, const V& c) { return stdx::fma(a, b, c); }
+    static V madd(const V& a, const V& b, const V& c) { return a * b + c; } // the dot's sums: contracted by the compiler
     static V select(const mask& m, const V& a, const V& b) { V r = b; stdx::where(m, r) = a; return r; }
     static bool any(const mask& m) { return stdx::any_of(m); }
     static bool all(const mask& m) { return stdx::all_of(m); }
