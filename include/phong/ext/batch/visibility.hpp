@@ -182,26 +182,12 @@ PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s,
                 return exact::step_specular_of(m, s.sees_viewer);
             else return m;
         }();
-        // Every light with the exponent e. In pairs on AVX-512 only: two lights' values need its 32
-        // vector registers (docs/batch.md).
-        constexpr bool pairs = F.mode != evaluation::stable && avx512_lanes<V, T>;
-        const auto add_all = [&](const auto& e, const std::uint64_t* step_bits) {
-            if constexpr (pairs)
-                each_visible_light_in_pairs<V, T>(
-                    sums, lights.size(), step_bits, count, [&](std::size_t j) { return exact::light_terms_of<F>(s, lights[j], unweighted{}); },
-                    [&](Sums& step_sums, std::size_t j, const auto& t) { exact::add_light_terms<F>(step_sums, s, lights[j], e, t); });
-            else
-                each_visible_light<V, T>(sums, lights.size(), step_bits, count,
-                                         [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], e); });
-        };
         if constexpr (std::is_same_v<Exponent, exact::integer_exponent<V>> && F.specular == specular_model::phong) {
             // The fast mode's integer shininess n = 2^K (K <= 6), no masks: the light loop with K
             // known, K squarings with no jump per pair; the same bits. Phong only (docs/batch.md).
             if (!bits) {
                 const auto each_light = [&](const auto& fixed) {
-                    if constexpr (pairs) add_all(fixed, nullptr);
-                    else
-                        for (std::size_t j = 0; j < lights.size(); ++j) detail::add_light<F>(sums, s, lights[j], fixed);
+                    for (std::size_t j = 0; j < lights.size(); ++j) detail::add_light<F>(sums, s, lights[j], fixed);
                 };
                 switch (m.plan.chain) {
                 case 1: return each_light(m.template with_squarings<0>());
@@ -215,7 +201,15 @@ PHONG_LANES_INLINE void add_masked_lights(Sums& sums, const frame_t<F, V, Q>& s,
                 }
             }
         }
-        add_all(step_m, bits);
+        if constexpr (F.mode != evaluation::stable && avx512_lanes<V, T>) {
+            // In pairs on AVX-512 only: two lights' values need its 32 vector registers (docs/batch.md).
+            each_visible_light_in_pairs<V, T>(
+                sums, lights.size(), bits, count, [&](std::size_t j) { return exact::light_terms_of<F>(s, lights[j], unweighted{}); },
+                [&](Sums& step_sums, std::size_t j, const auto& t) { exact::add_light_terms<F>(step_sums, s, lights[j], step_m, t); });
+            return;
+        }
+        each_visible_light<V, T>(sums, lights.size(), bits, count,
+                                 [&](Sums& step_sums, std::size_t j) { detail::add_light<F>(step_sums, s, lights[j], step_m); });
     }
 }
 
